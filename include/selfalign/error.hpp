@@ -1,0 +1,42 @@
+#pragma once
+/// \file error.hpp
+/// The one exception type of selfalign's API edge: a parameter outside its allowed range.
+///
+/// Expected outcomes (a non-physical "case 0" profile, a run that sticks) are values the caller
+/// branches on; misuse (a negative width, c_mu <= 1, NaN) throws InvalidParameter.
+
+#include <stdexcept>
+#include <string>
+
+namespace selfalign {
+
+/// A parameter outside its allowed range. what() is one line:
+/// "invalid <name> = <value>: <allowed>", e.g. "invalid width = -1: must be > 0".
+class InvalidParameter : public std::invalid_argument {
+ public:
+  InvalidParameter(std::string name, std::string value, std::string allowed);
+  InvalidParameter(std::string name, double value, std::string allowed);
+
+  const std::string& name() const noexcept { return name_; }
+  const std::string& value() const noexcept { return value_; }
+  const std::string& allowed() const noexcept { return allowed_; }
+
+ private:
+  std::string name_, value_, allowed_;
+};
+
+/// Formats a double the way error messages and JSON summaries print it (shortest round-trip).
+std::string format_number(double value);
+
+/// Throws InvalidParameter unless value is finite and > 0.
+double require_positive(const std::string& name, double value);
+/// Throws InvalidParameter unless value is finite and >= 0.
+double require_non_negative(const std::string& name, double value);
+/// Throws InvalidParameter unless value is finite.
+double require_finite(const std::string& name, double value);
+/// Throws InvalidParameter unless value is finite and > bound ("must be > bound").
+double require_greater(const std::string& name, double value, double bound);
+/// Throws InvalidParameter unless value is finite and lo < value <= hi.
+double require_in_half_open(const std::string& name, double value, double lo, double hi);
+
+}  // namespace selfalign

@@ -1,0 +1,38 @@
+#pragma once
+/// \file fourier.hpp
+/// A Fourier-series table profile of any order N (Sect. 4.4.2):
+///   y(t) = c_0 + sum_{k=1..N} ( A_k cos(k w t) + B_k sin(k w t) ),   w = 2 pi / Δt,
+/// with c_0 chosen so that min y = 0. Periodic in y and y' by construction.
+
+#include <string>
+#include <vector>
+
+#include "selfalign/profiles/table_profile.hpp"
+
+namespace selfalign {
+
+class FourierProfile final : public TableProfile {
+ public:
+  /// \param period  Δt [-], > 0
+  /// \param cos_coeffs A_1..A_N [-], \param sin_coeffs B_1..B_N [-] (shorter one padded with 0),
+  ///        finite, not all zero. Throws InvalidParameter otherwise.
+  FourierProfile(double period, std::vector<double> cos_coeffs, std::vector<double> sin_coeffs);
+
+  double period() const override { return period_; }
+  TableState state(double t) const override;
+  double peak_acceleration() const override { return peak_; }
+  double stroke() const override { return stroke_; }
+  std::string kind() const override { return "fourier"; }
+
+  int order() const noexcept { return static_cast<int>(cos_.size()); }
+  const std::vector<double>& cos_coeffs() const noexcept { return cos_; }
+  const std::vector<double>& sin_coeffs() const noexcept { return sin_; }
+  double offset() const noexcept { return offset_; }  ///< c_0 [-]
+
+ private:
+  double period_;
+  std::vector<double> cos_, sin_;
+  double offset_ = 0, peak_ = 0, stroke_ = 0;
+};
+
+}  // namespace selfalign

@@ -1,0 +1,45 @@
+#pragma once
+/// \file table_profile.hpp
+/// The prescribed periodic table motion y(t) (Sect. 4.4): the interface every profile family
+/// implements.
+///
+/// All quantities are dimensionless (Sect. 3.2). A profile is periodic with period Δt; its
+/// velocity has zero mean (the table returns to its start position), and by convention
+/// min y = 0 (Sect. 4.4.3, constraint 1), so the stroke is Δy = max y.
+
+#include <string>
+
+namespace selfalign {
+
+class PiecewiseConstantProfile;
+
+/// Table position, velocity and acceleration at one time [-].
+struct TableState {
+  double y;    ///< table position y [-]
+  double yd;   ///< table velocity y' [-]
+  double ydd;  ///< table acceleration y'' [-] (right limit at a switch)
+};
+
+/// A periodic table motion profile (open set: implement it for new profile families).
+class TableProfile {
+ public:
+  virtual ~TableProfile() = default;
+
+  /// Period Δt [-], > 0.
+  virtual double period() const = 0;
+  /// y, y', y'' at time t [-], any real t (periodic extension). y'' is right-continuous.
+  virtual TableState state(double t) const = 0;
+  /// y'(t) alone; the time-stepping solver's hot path (override when cheaper than state()).
+  virtual double velocity(double t) const { return state(t).yd; }
+  /// sup over the period of |y''| [-]: the peak acceleration used by eq. (40).
+  virtual double peak_acceleration() const = 0;
+  /// Stroke Δy = max y - min y over a period [-].
+  virtual double stroke() const = 0;
+  /// Short family name ("three-phase", "fourier", ...), for summaries.
+  virtual std::string kind() const = 0;
+  /// The profile as a piecewise-constant acceleration, when it is one (then the exact
+  /// event-driven solver applies); nullptr otherwise.
+  virtual const PiecewiseConstantProfile* piecewise_constant() const { return nullptr; }
+};
+
+}  // namespace selfalign

@@ -1,0 +1,58 @@
+#pragma once
+/// \file exact.hpp
+/// Exact event-driven solution of eq. (6) with a position-dependent friction bound (eq. 38)
+/// for a table whose acceleration is piecewise constant.
+///
+/// Between events the motion is one closed-form Arc (arc.hpp). Every event is located in
+/// closed form and polished by Newton steps on the same closed form:
+///   - table acceleration switches (segment ends): exact by construction;
+///   - x' = 0: parabolic -x'/x'' (eq. 21); harmonic via atan2 (eq. 47, valid on all quadrants);
+///     hyperbolic via atanh;
+///   - entering or leaving a friction piece (x_mu, x_mu + w): a root of the arc's quadratic,
+///     cosine or exponential-quadratic;
+///   - at x' = 0 the set-valued law decides: stick if |y''| <= m(x), else slip in the direction
+///     of -y'' (eqs. 2, 6).
+/// Between events x is monotone, so exactly one friction boundary can be next.
+
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/simulate/arc.hpp"
+
+namespace selfalign {
+
+/// Receives every arc of an exact solution as it is computed.
+class ArcSink {
+ public:
+  virtual ~ArcSink() = default;
+  virtual void on_arc(const Arc& arc) = 0;
+};
+
+/// The fixed system the exact solver integrates: a profile and a friction map, both borrowed
+/// (they must outlive the setup).
+struct ExactSetup {
+  const PiecewiseConstantProfile& profile;
+  const PiecewiseAffineFriction& friction;
+};
+
+/// Mutable state of the exact solver: the object state plus where it is in the profile.
+struct ExactState {
+  ObjectState object;          ///< t, x, x' [-]
+  std::size_t segment = 0;     ///< current acceleration segment
+  long long period_index = 0;  ///< floor(t / Δt): segment times are period_index*Δt + begin
+};
+
+/// Places an object state in the profile (finds its period and segment).
+ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object);
+
+/// Advances state to time t_end (>= state.object.t), calling sink (if any) for every arc.
+/// Returns the number of arcs computed. Allocates nothing.
+std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
+                          ArcSink* sink = nullptr);
+
+/// Is the object, at rest relative to the table at position x under table acceleration A,
+/// held by friction? The set-valued law (2): stick iff |A| <= m(x).
+inline bool sticks(double table_accel, double bound) noexcept {
+  return table_accel <= bound && -table_accel <= bound;
+}
+
+}  // namespace selfalign

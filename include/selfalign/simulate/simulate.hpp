@@ -1,0 +1,46 @@
+#pragma once
+/// \file simulate.hpp
+/// One front door to both solvers: simulate a run and sample its trajectory on a uniform grid.
+
+#include <cstddef>
+#include <string>
+
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/object_state.hpp"
+
+namespace selfalign {
+
+enum class Method {
+  exact,         ///< event-driven closed form (exact.hpp): piecewise-constant y'', piecewise-affine m(x)
+  time_stepping  ///< Moreau time-stepping (time_stepping.hpp): any profile and friction map
+};
+
+/// Parses "exact" or "time-stepping"; throws InvalidParameter("method", ...) otherwise.
+Method parse_method(const std::string& text);
+std::string to_string(Method method);
+
+struct SimulationOptions {
+  Method method = Method::exact;
+  double duration = 20;     ///< simulated time after t0 [-], > 0
+  double step = 1e-4;       ///< time-stepping step h [-], > 0 (unused by the exact solver)
+  double theta = 0.5;       ///< time-stepping theta, in [0, 1]
+  double output_step = 0;   ///< spacing of recorded samples [-]; 0: h (time-stepping) or Δt/200
+  bool record = true;       ///< false: only the summary (no trajectory)
+};
+
+struct SimulationResult {
+  Trajectory trajectory;           ///< samples at t0 + j*output_step, and at the end time
+  ObjectState final_state;         ///< state at t0 + duration [-]
+  std::size_t work = 0;            ///< arcs (exact) or steps (time-stepping) computed
+  double mean_velocity_last_period = 0;  ///< (x(t_end) - x(t_end - Δt))/Δt [-]; NaN if shorter
+  double stick_fraction = 0;       ///< fraction of recorded samples in stick [-]
+};
+
+/// Simulates from `initial` over options.duration. Throws InvalidParameter on bad options, or
+/// when method = exact is asked of a profile that is not piecewise constant or a friction map
+/// that is not piecewise affine.
+SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
+                          const ObjectState& initial, const SimulationOptions& options);
+
+}  // namespace selfalign

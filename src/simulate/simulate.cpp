@@ -1,0 +1,139 @@
+#include "selfalign/simulate/simulate.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
+
+namespace selfalign {
+
+Method parse_method(const std::string& text) {
+  if (text == "exact") return Method::exact;
+  if (text == "time-stepping") return Method::time_stepping;
+  throw InvalidParameter("method", text, "must be one of: exact, time-stepping");
+}
+
+std::string to_string(Method method) {
+  return method == Method::exact ? "exact" : "time-stepping";
+}
+
+namespace {
+
+// Advances one solver to given times; both solvers behind one small adapter.
+class Runner {
+ public:
+  virtual ~Runner() = default;
+  virtual ObjectState advance_to(double t) = 0;
+  virtual std::size_t work() const = 0;
+};
+
+class ExactRunner final : public Runner {
+ public:
+  ExactRunner(const PiecewiseConstantProfile& p, const PiecewiseAffineFriction& f,
+              const ObjectState& s0)
+      : setup_{p, f}, state_(make_exact_state(setup_, s0)) {}
+  ObjectState advance_to(double t) override {
+    work_ += advance_exact(setup_, state_, t);
+    return state_.object;
+  }
+  std::size_t work() const override { return work_; }
+
+ private:
+  ExactSetup setup_;
+  ExactState state_;
+  std::size_t work_ = 0;
+};
+
+class SteppingRunner final : public Runner {
+ public:
+  SteppingRunner(const TableProfile& p, const FrictionMap& f, const TimeSteppingOptions& o,
+                 const ObjectState& s0)
+      : profile_(p), friction_(f), options_(o), state_(make_time_stepping_state(p, s0)) {}
+  ObjectState advance_to(double t) override {
+    const long long target = std::llround((t - state_.t0) / options_.step);
+    if (target > state_.step_index)
+      advance_time_stepping(profile_, friction_, options_, state_, target - state_.step_index);
+    return state_.object;
+  }
+  std::size_t work() const override { return static_cast<std::size_t>(state_.step_index); }
+
+ private:
+  const TableProfile& profile_;
+  const FrictionMap& friction_;
+  TimeSteppingOptions options_;
+  TimeSteppingState state_;
+};
+
+}  // namespace
+
+SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
+                          const ObjectState& initial, const SimulationOptions& o) {
+  require_positive("duration", o.duration);
+  require_non_negative("output_step", o.output_step);
+  const TimeSteppingOptions ts{o.step, o.theta};
+  std::unique_ptr<Runner> runner;
+  double grid = o.output_step;
+  if (o.method == Method::exact) {
+    const PiecewiseConstantProfile* p = profile.piecewise_constant();
+    const PiecewiseAffineFriction* f = friction.piecewise_affine();
+    if (!p)
+      throw InvalidParameter("method", "exact",
+                             "needs a piecewise-constant acceleration profile (" + profile.kind() +
+                                 " is not); use time-stepping");
+    if (!f)
+      throw InvalidParameter("method", "exact",
+                             "needs a piecewise-affine friction map; use time-stepping");
+    runner = std::make_unique<ExactRunner>(*p, *f, initial);
+    if (grid == 0) grid = profile.period() / 200;
+  } else {
+    validate(ts);
+    runner = std::make_unique<SteppingRunner>(profile, friction, ts, initial);
+    if (grid == 0) grid = o.step;
+    grid = std::max(1.0, std::round(grid / o.step)) * o.step;  // a whole number of steps
+  }
+
+  SimulationResult r;
+  const double t0 = initial.t, t_end = initial.t + o.duration, P = profile.period();
+  const long long samples = o.record ? static_cast<long long>(std::floor(o.duration / grid)) : 0;
+  auto push = [&](const ObjectState& s) {
+    const TableState y = profile.state(s.t);
+    r.trajectory.push(s.t, s.x, s.xd, y.y, y.yd, y.ydd, s.xd == 0);
+  };
+  if (o.record) {
+    r.trajectory.reserve(static_cast<std::size_t>(samples) + 2);
+    push(initial);
+  }
+  const double t_last_period = t_end - P;
+  double x_last_period = std::numeric_limits<double>::quiet_NaN();
+  bool have_last_period = t_last_period < t0 ? false : (t_last_period == t0);
+  if (have_last_period) x_last_period = initial.x;
+  ObjectState s = initial;
+  for (long long j = 1; j <= samples; ++j) {
+    const double t = t0 + static_cast<double>(j) * grid;
+    if (t >= t_end) break;
+    if (!have_last_period && t_last_period > t0 && t >= t_last_period) {
+      x_last_period = runner->advance_to(t_last_period).x;
+      have_last_period = true;
+    }
+    s = runner->advance_to(t);
+    push(s);
+  }
+  if (!have_last_period && t_last_period > t0) x_last_period = runner->advance_to(t_last_period).x;
+  s = runner->advance_to(t_end);
+  if (o.record) push(s);
+  r.final_state = s;
+  r.work = runner->work();
+  r.mean_velocity_last_period = (s.x - x_last_period) / P;
+  if (o.record && r.trajectory.size() > 0) {
+    std::size_t stuck = 0;
+    for (unsigned char c : r.trajectory.stick) stuck += c;
+    r.stick_fraction = static_cast<double>(stuck) / static_cast<double>(r.trajectory.size());
+  }
+  return r;
+}
+
+}  // namespace selfalign
