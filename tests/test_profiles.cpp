@@ -1,0 +1,95 @@
+// Tests for the other profile families: piecewise-constant sequences, Fourier series, samples.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/sampled.hpp"
+
+using namespace selfalign;
+
+TEST(PiecewiseConstantProfile, SymmetricBangBangByHand) {
+  // y'' = +1 on [0, 1), -1 on [1, 3), +1 on [3, 4): y' starts at 0 and is a triangle wave with
+  // mean 0; y(t) = t^2/2 on [0, 1] ... a hand-drawn parabola chain with min y = 0 at t = 0 and
+  // max at t = 2: y(2) = 0.5 + 0.5 = 1. Stroke 1, peak acceleration 1.
+  const double d[3] = {1, 2, 1}, a[3] = {1, -1, 1};
+  const auto p = PiecewiseConstantProfile::from_accelerations(d, a);
+  EXPECT_DOUBLE_EQ(p.period(), 4.0);
+  EXPECT_NEAR(p.stroke(), 1.0, 1e-15);
+  EXPECT_NEAR(p.state(0).y, 0.0, 1e-15);
+  EXPECT_NEAR(p.state(0).yd, 0.0, 1e-15);
+  EXPECT_NEAR(p.state(2).y, 1.0, 1e-15);
+  EXPECT_NEAR(p.state(1).yd, 1.0, 1e-15);
+  EXPECT_NEAR(p.state(6).y, 1.0, 1e-14);  // periodic extension
+  EXPECT_NEAR(p.state(-2).y, 1.0, 1e-14);
+  EXPECT_EQ(p.peak_acceleration(), 1.0);
+}
+
+TEST(PiecewiseConstantProfile, RejectsVelocityThatDoesNotReturn) {
+  const double d[2] = {1, 1}, a[2] = {1, -0.9};
+  EXPECT_THROW(PiecewiseConstantProfile::from_accelerations(d, a), InvalidParameter);
+  const double neg[2] = {-1, 1}, ok[2] = {1, -1};
+  EXPECT_THROW(PiecewiseConstantProfile::from_accelerations(neg, ok), InvalidParameter);
+}
+
+TEST(FourierProfile, SingleHarmonicByHand) {
+  // y = c0 + A cos(w t): min y = 0 gives c0 = A, stroke 2A, peak |y''| = A w^2.
+  const double A = 0.01, P = 0.5, w = 2 * std::numbers::pi / P;
+  const FourierProfile f(P, {A}, {});
+  EXPECT_NEAR(f.offset(), A, 1e-15);
+  EXPECT_NEAR(f.stroke(), 2 * A, 1e-15);
+  EXPECT_NEAR(f.peak_acceleration(), A * w * w, 1e-12);
+  const TableState s = f.state(0.1);
+  EXPECT_NEAR(s.y, A + A * std::cos(w * 0.1), 1e-15);
+  EXPECT_NEAR(s.yd, -A * w * std::sin(w * 0.1), 1e-14);
+  EXPECT_NEAR(s.ydd, -A * w * w * std::cos(w * 0.1), 1e-12);
+}
+
+TEST(FourierProfile, TwoHarmonicsExtremaAreBoundedNotSampled) {
+  // y = sin(wt) + 0.5 sin(2wt): y' = w (cos x + cos 2x) = 0 at cos x = 1/2 (x = pi/3):
+  // max y = sin(pi/3) + 0.5 sin(2pi/3) = 3 sqrt(3)/4, min = -3 sqrt(3)/4.
+  const FourierProfile f(1.0, {}, {1.0, 0.5});
+  EXPECT_NEAR(f.stroke(), 1.5 * std::sqrt(3.0), 1e-13);
+  EXPECT_THROW(FourierProfile(1.0, {0.0}, {0.0}), InvalidParameter);
+}
+
+TEST(SampledProfile, ReadsCsvAndInterpolates) {
+  const std::string path = testing::TempDir() + "/samples.csv";
+  {
+    std::ofstream out(path);
+    out << "t,ydd\n# comment\n0,1\n1,-1\n3,1\n4,1\n";
+  }
+  const AccelerationSamples s = read_acceleration_samples(path);
+  ASSERT_EQ(s.t.size(), 4u);
+  const auto c = make_sampled_profile(s, Interpolation::constant);
+  ASSERT_NE(c->piecewise_constant(), nullptr);  // the exact solver applies
+  EXPECT_NEAR(c->stroke(), 1.0, 1e-15);         // same as SymmetricBangBangByHand
+  // Linear: y'' = 1 - t on [0, 2], t - 3 on [2, 4] -> integral 0. Check y' increments by hand:
+  const AccelerationSamples lin{{0, 2, 4}, {1, -1, 1}};
+  const auto l = make_sampled_profile(lin, Interpolation::linear);
+  EXPECT_EQ(l->piecewise_constant(), nullptr);
+  EXPECT_NEAR(l->state(0.5).ydd, 0.5, 1e-15);
+  EXPECT_NEAR(l->state(1.0).yd - l->state(0.0).yd, 0.5, 1e-15);  // integral of 1 - t on [0, 1]
+  EXPECT_NEAR(l->state(4.0).yd, l->state(0.0).yd, 1e-14);
+  std::remove(path.c_str());
+}
+
+TEST(SampledProfile, RejectsMalformedInput) {
+  const std::string path = testing::TempDir() + "/bad.csv";
+  {
+    std::ofstream out(path);
+    out << "t,ydd\n0,1\n1,abc\n";
+  }
+  EXPECT_THROW(read_acceleration_samples(path), InvalidParameter);
+  EXPECT_THROW(read_acceleration_samples(path + ".missing"), InvalidParameter);
+  EXPECT_THROW(make_sampled_profile({{0.5, 1}, {1, -1}}, Interpolation::constant), InvalidParameter);
+  EXPECT_THROW(make_sampled_profile({{0, 1, 1}, {1, -1, 0}}, Interpolation::constant),
+               InvalidParameter);
+  EXPECT_THROW(parse_interpolation("cubic"), InvalidParameter);
+  std::remove(path.c_str());
+}
