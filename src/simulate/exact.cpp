@@ -134,78 +134,86 @@ std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_e
 
   // A single constant piece (uniform friction) needs no piece look-ups and has no boundary.
   const bool uniform = pieces.size() == 1 && pieces[0].slope == 0;
+  const double m_uniform = pieces[0].bound_at_begin;
 
-  while (t < t_end) {
+  while (t < t_end) {  // one acceleration segment per pass
     const double period_start = static_cast<double>(n) * P;
     const double seg_end = si + 1 < nseg ? period_start + segs[si + 1].begin : period_start + P;
     const double A = segs[si].accel;
-    const double t_stop = std::min(seg_end, t_end);
+    const bool to_switch = seg_end <= t_end;
+    const double t_stop = to_switch ? seg_end : t_end;
+    const ArcEnd stop_end = to_switch ? ArcEnd::acceleration_switch : ArcEnd::horizon;
 
-    ArcKind kind = ArcKind::stick;
-    int sigma = 0;
-    std::size_t pi = 0;
-    double m0 = 0, k = 0, alpha = 0, omega = 0, center = 0;
-    double tau = t_stop - t, x1 = x, v1 = 0;
-    ArcEnd end = t_stop == seg_end ? ArcEnd::acceleration_switch : ArcEnd::horizon;
+    while (t < t_stop) {  // one arc per pass
+      ArcKind kind = ArcKind::stick;
+      int sigma = 0;
+      std::size_t pi = 0;
+      double m0 = m_uniform, k = 0, alpha = 0, omega = 0, center = 0;
+      double x1 = x, v1 = 0, t1 = t_stop;
+      ArcEnd end = stop_end;
 
-    if (v == 0) {
-      pi = uniform ? 0 : setup.friction.piece_index(x);
-      m0 = pieces[pi].bound(x);
-      if (!sticks(A, m0)) sigma = A > 0 ? -1 : 1;  // slip against the table's push
-    } else {
-      sigma = v > 0 ? 1 : -1;
-    }
-
-    if (sigma != 0) {
-      pi = uniform ? 0 : piece_for_direction(setup.friction, x, sigma);
-      const AffinePiece& pc = pieces[pi];
-      m0 = pc.bound(x);
-      k = pc.slope;
-      const double kappa = -sigma * k;  // x'' = kappa (x - x_e) on this piece
-      const double X = sigma > 0 ? pc.end : pc.begin;
-      const double vs = sigma * v;  // >= 0
-      double tau_v = kInf, tau_b = kInf;
-      if (kappa == 0) {  // parabolic: x'' = -sigma m - A (eqs. 15, 18)
-        kind = ArcKind::parabolic;
-        alpha = -sigma * m0 - A;
-        tau_v = parabolic_stop(vs, sigma * alpha);
-        if (!uniform && std::isfinite(X)) tau_b = parabolic_reach(vs, sigma * alpha, sigma * (X - x));
-      } else [[unlikely]] {
-        curved_arc(kappa, sigma, m0, A, x, v, vs, X, kind, omega, center, tau_v, tau_b);
-      }
-      if (tau_b < tau) {
-        tau = tau_b;
-        end = ArcEnd::friction_boundary;
-      }
-      if (tau_v <= tau) {
-        tau = tau_v;
-        end = ArcEnd::velocity_zero;
-      }
-      if (kind == ArcKind::parabolic) {
-        x1 = x + tau * (v + 0.5 * alpha * tau);
-        v1 = v + alpha * tau;
+      if (v == 0) {
+        if (!uniform) {
+          pi = setup.friction.piece_index(x);
+          m0 = pieces[pi].bound(x);
+        }
+        if (!sticks(A, m0)) sigma = A > 0 ? -1 : 1;  // slip against the table's push
       } else {
-        const detail::PosVel s = detail::arc_state(kind, x, v, alpha, omega, center, tau);
-        x1 = s.x;
-        v1 = s.xd;
+        sigma = v > 0 ? 1 : -1;
       }
-      if (end == ArcEnd::velocity_zero) v1 = 0;
-      if (end == ArcEnd::friction_boundary) x1 = X;
-      // A velocity that crossed zero by rounding at a switch is a stop.
-      if (v1 != 0 && (v1 > 0) != (sigma > 0)) v1 = 0;
-    }
 
-    const double t1 = end == ArcEnd::acceleration_switch ? seg_end
-                      : end == ArcEnd::horizon           ? t_end
-                                                         : t + tau;
-    if (sink) [[unlikely]]
-      emit(*sink, {t, t1, x, v, x1, v1, A, m0, k, alpha, omega, center, kind,
-                   static_cast<std::int8_t>(sigma), end, si, pi});
-    ++count;
-    t = t1;
-    x = x1;
-    v = v1;
-    if (end == ArcEnd::acceleration_switch && ++si == nseg) {
+      if (sigma != 0) {
+        double X = sigma * kInf, tau_v = kInf, tau_b = kInf;
+        if (!uniform) {
+          pi = piece_for_direction(setup.friction, x, sigma);
+          const AffinePiece& pc = pieces[pi];
+          m0 = pc.bound(x);
+          k = pc.slope;
+          X = sigma > 0 ? pc.end : pc.begin;
+        }
+        const double vs = sigma * v;  // >= 0
+        if (k == 0) {  // parabolic: x'' = -sigma m - A (eqs. 15, 18)
+          kind = ArcKind::parabolic;
+          alpha = -sigma * m0 - A;
+          tau_v = parabolic_stop(vs, sigma * alpha);
+          if (!uniform && std::isfinite(X))
+            tau_b = parabolic_reach(vs, sigma * alpha, sigma * (X - x));
+        } else [[unlikely]] {
+          curved_arc(-sigma * k, sigma, m0, A, x, v, vs, X, kind, omega, center, tau_v, tau_b);
+        }
+        double tau = t_stop - t;
+        if (tau_b < tau) {
+          tau = tau_b;
+          end = ArcEnd::friction_boundary;
+        }
+        if (tau_v <= tau) {
+          tau = tau_v;
+          end = ArcEnd::velocity_zero;
+        }
+        if (kind == ArcKind::parabolic) {
+          x1 = x + tau * (v + 0.5 * alpha * tau);
+          v1 = v + alpha * tau;
+        } else {
+          const detail::PosVel st = detail::arc_state(kind, x, v, alpha, omega, center, tau);
+          x1 = st.x;
+          v1 = st.xd;
+        }
+        if (end == ArcEnd::velocity_zero) v1 = 0;
+        if (end == ArcEnd::friction_boundary) x1 = X;
+        // A velocity that crossed zero by rounding at a switch is a stop.
+        if ((v1 > 0 && sigma < 0) || (v1 < 0 && sigma > 0)) v1 = 0;
+        if (end != stop_end) t1 = t + tau;
+      }
+
+      if (sink) [[unlikely]]
+        emit(*sink, {t, t1, x, v, x1, v1, A, m0, k, alpha, omega, center, kind,
+                     static_cast<std::int8_t>(sigma), end, si, pi});
+      ++count;
+      t = t1;
+      x = x1;
+      v = v1;
+    }
+    if (to_switch && ++si == nseg) {
       si = 0;
       ++n;
     }
