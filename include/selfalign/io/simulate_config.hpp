@@ -1,0 +1,144 @@
+#pragma once
+/// \file simulate_config.hpp
+/// The flat configuration of one `selfalign simulate` run: its keys, their defaults, and
+/// loading them from JSON / TOML files and from command-line text. Physics-free.
+///
+/// Every key is also a CLI flag (key c_mu <-> flag --c-mu). A key left unset takes its default;
+/// defaults are the paper's Sect. 7.2 setting in dimensionless units (Δt = 1, Δy = 0.084,
+/// (y2'', y3'') = (2.3, 1.3), w = 0.05, c_mu = 2.5). In an SI run (units = "si") a key left
+/// unset takes its dimensionless default converted to SI with the run's scales
+/// (length_scale, mu, g): e.g. stroke = 0.084 L, period = 1 T with T = sqrt(L/(mu g)).
+/// docs/config.md lists every key with its type, default and unit in both systems.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "selfalign/units.hpp"
+
+namespace selfalign {
+
+/// One run's settings. Values are in the run's unit system (`units`); unset = default.
+struct SimulateConfig {
+  // ---- run ----
+  std::optional<std::string> units;   ///< "dimensionless" | "si"
+  std::optional<std::string> method;  ///< "exact" | "time-stepping"
+  // ---- table profile ----
+  std::optional<std::string> profile;  ///< "three-phase" | "quadratic-sequence" | "fourier" | "samples"
+  std::optional<double> period;  ///< Δt [-] | [s] (three-phase, fourier)
+  std::optional<double> stroke;  ///< Δy [-] | [m] (three-phase)
+  std::optional<double> a2;      ///< y2'' [-] | [m/s^2] (three-phase)
+  std::optional<double> a3;      ///< y3'' [-] | [m/s^2] (three-phase)
+  std::optional<std::vector<double>> durations;      ///< [-] | [s] (quadratic-sequence)
+  std::optional<std::vector<double>> accelerations;  ///< [-] | [m/s^2] (quadratic-sequence)
+  std::optional<std::vector<double>> fourier_cos;    ///< A_1..A_N [-] | [m] (fourier)
+  std::optional<std::vector<double>> fourier_sin;    ///< B_1..B_N [-] | [m] (fourier)
+  std::optional<std::string> samples;        ///< CSV of (t, y'') (samples)
+  std::optional<std::string> interpolation;  ///< "constant" | "linear" (samples)
+  // ---- friction map ----
+  std::optional<std::string> friction;  ///< "two-region" | "uniform"
+  std::optional<double> x_mu;   ///< start of the high-friction region [-] | [m]
+  std::optional<double> width;  ///< object width w [-] | [m]
+  std::optional<double> c_mu;   ///< mu_2 / mu_1 [-]
+  // ---- scales (Sect. 3.2) ----
+  std::optional<double> mu;            ///< mu_1 [-]
+  std::optional<double> g;             ///< gravity [m/s^2]
+  std::optional<double> length_scale;  ///< L [m]
+  std::optional<double> mass;          ///< m [kg], reported only (cancels from eq. 6)
+  // ---- initial state ----
+  std::optional<double> t0;  ///< initial time [-] | [s]
+  std::optional<double> x0;  ///< initial position [-] | [m]
+  std::optional<double> v0;  ///< initial relative velocity x' [-] | [m/s]
+  // ---- solver ----
+  std::optional<double> periods;      ///< number of table periods simulated [-], > 0
+  std::optional<double> step;         ///< time-stepping h [-] | [s]
+  std::optional<double> theta;        ///< time-stepping theta [-], in [0, 1]
+  std::optional<double> output_step;  ///< sample spacing [-] | [s]; 0: solver default
+  // ---- output ----
+  std::optional<std::string> out;      ///< trajectory CSV path; unset: no CSV
+  std::optional<std::string> summary;  ///< summary JSON path, "-" = stdout
+
+  friend bool operator==(const SimulateConfig&, const SimulateConfig&) = default;
+};
+
+/// How a key's value converts between SI and dimensionless units (Sect. 3.2).
+enum class Dimension {
+  none,         ///< same value in both systems ([-], or always SI like g [m/s^2])
+  length,       ///< [m] = L [-]
+  time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
+  velocity,     ///< [m/s] = L/T [-]
+  acceleration  ///< [m/s^2] = mu g [-]
+};
+
+using TextField = std::optional<std::string> SimulateConfig::*;
+using NumberField = std::optional<double> SimulateConfig::*;
+using NumberListField = std::optional<std::vector<double>> SimulateConfig::*;
+
+/// Description of one key: drives file loading, CLI flags, help texts and unit conversion.
+struct ConfigKey {
+  std::string_view name;   ///< key in files, e.g. "c_mu" (flag: --c-mu)
+  std::variant<TextField, NumberField, NumberListField> field;
+  Dimension dimension;     ///< SI conversion of the value
+  std::string_view unit;     ///< unit in dimensionless runs, e.g. "[-]"
+  std::string_view unit_si;  ///< unit in SI runs, e.g. "[m]"
+  std::string_view group;    ///< "run", "profile", "friction", "scales", "initial", "solver", "output"
+  std::string_view help;     ///< meaning, and which profile / friction map uses it
+};
+
+/// Every key, in documentation order.
+std::span<const ConfigKey> simulate_config_keys();
+/// The key named `name`, or nullptr.
+const ConfigKey* find_simulate_config_key(std::string_view name);
+/// Comma-separated list of all key names (for error messages).
+std::string simulate_config_key_list();
+/// The key's CLI flag: "--" + name with '_' replaced by '-'.
+std::string config_flag(const ConfigKey& key);
+/// One-line help: meaning, unit in both systems, default (and its SI conversion).
+std::string config_help(const ConfigKey& key);
+/// Type name for messages: "string", "number" or "array of numbers".
+std::string_view config_type_name(const ConfigKey& key);
+
+/// The dimensionless defaults (Sect. 7.2). out, summary and samples stay unset; arrays empty.
+SimulateConfig simulate_config_defaults();
+
+/// Reads a .json (nlohmann) or .toml (toml++) file, chosen by extension. Throws
+/// InvalidParameter: ("config key", key, "unknown key in <file>; allowed: ...") for an unknown
+/// key, (key, value, "must be a <type> ...") for a wrong type, ("config file", path, <parser
+/// message>) for an unreadable or malformed file. Values are not range-checked here.
+SimulateConfig load_simulate_config(const std::string& path);
+
+/// Sets one key from command-line text (numbers as C-locale text, "nan" allowed and rejected
+/// later; arrays comma-separated: "0.3,0.2,0.5"). Throws InvalidParameter for an unknown key
+/// or text that is not of the key's type.
+void set_simulate_config_value(SimulateConfig& config, std::string_view key,
+                               const std::string& text);
+
+/// `base` with every key set in `overrides` replaced (file values, then flags).
+SimulateConfig merge(const SimulateConfig& base, const SimulateConfig& overrides);
+
+/// Converts every dimensional key (Dimension != none; numbers and arrays) from dimensionless
+/// to SI with `scales`. Other keys are copied. The samples file is not touched.
+SimulateConfig to_si(const SimulateConfig& config, const Scales& scales);
+/// The inverse of to_si: SI values to the dimensionless variables of eq. (4).
+SimulateConfig to_dimensionless(const SimulateConfig& config, const Scales& scales);
+
+/// Every key set: unset keys take their defaults in the run's unit system (SI defaults are the
+/// dimensionless ones converted with the run's scales). Validates units, mu, g, length_scale.
+/// out, summary and samples stay unset when not given.
+SimulateConfig resolve_simulate_config(const SimulateConfig& config);
+
+/// Where a run writes its results.
+struct OutputPaths {
+  std::optional<std::string> trajectory;  ///< CSV path, or none
+  std::string summary;                    ///< JSON path, or "-" for stdout
+
+  bool summary_to_stdout() const noexcept { return summary == "-"; }
+};
+/// out as given; summary as given, else "<out without extension>.summary.json" when out is
+/// given, else "-". Throws InvalidParameter when both name the same file.
+OutputPaths resolve_output_paths(const SimulateConfig& config);
+
+}  // namespace selfalign

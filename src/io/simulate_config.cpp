@@ -1,0 +1,177 @@
+// SimulateConfig: defaults, values from text, merging, SI resolution, output paths.
+// The key table itself is in config_keys.cpp.
+
+#include "selfalign/io/simulate_config.hpp"
+
+#include <charconv>
+#include <filesystem>
+
+#include "selfalign/error.hpp"
+#include "selfalign/io/unit_system.hpp"
+#include "selfalign/units.hpp"
+
+namespace selfalign {
+namespace {
+
+const std::string kStdout = "-";  // summary destination meaning standard output
+using D = Dimension;
+
+double convert(Dimension d, double v, const Scales& s, bool to_si) {
+  switch (d) {
+    case D::length: return to_si ? s.length_to_si(v) : s.length_from_si(v);
+    case D::time: return to_si ? s.time_to_si(v) : s.time_from_si(v);
+    case D::velocity: return to_si ? s.velocity_to_si(v) : s.velocity_from_si(v);
+    case D::acceleration: return to_si ? s.acceleration_to_si(v) : s.acceleration_from_si(v);
+    case D::none: break;
+  }
+  return v;
+}
+
+SimulateConfig convert_config(const SimulateConfig& config, const Scales& scales, bool to_si) {
+  SimulateConfig r = config;
+  for (const ConfigKey& key : simulate_config_keys()) {
+    if (key.dimension == D::none) continue;
+    if (auto* f = std::get_if<NumberField>(&key.field); f && (r.**f))
+      *(r.**f) = convert(key.dimension, *(r.**f), scales, to_si);
+    if (auto* f = std::get_if<NumberListField>(&key.field); f && (r.**f))
+      for (double& v : *(r.**f)) v = convert(key.dimension, v, scales, to_si);
+  }
+  return r;
+}
+
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string_view::npos) return "";
+  return std::string(s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1));
+}
+
+// C-locale number, whole text (surrounding blanks allowed); "nan" and "inf" parse.
+bool parse_number(std::string_view text, double& out) {
+  std::string t = trim(text);
+  if (!t.empty() && t[0] == '+') t.erase(0, 1);
+  if (t.empty()) return false;
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+  return ec == std::errc{} && end == t.data() + t.size();
+}
+
+}  // namespace
+
+SimulateConfig simulate_config_defaults() {
+  SimulateConfig d;
+  d.units = "dimensionless";
+  d.method = "exact";
+  d.profile = "three-phase";
+  d.period = 1.0;     // Δt, Sect. 7.2
+  d.stroke = 0.084;   // Δy, Sect. 7.2
+  d.a2 = 2.3;         // (y2'', y3'') = (2.3, 1.3), Sect. 7.2 / Fig. 16
+  d.a3 = 1.3;
+  d.durations = std::vector<double>{};
+  d.accelerations = std::vector<double>{};
+  d.fourier_cos = std::vector<double>{};
+  d.fourier_sin = std::vector<double>{};
+  d.interpolation = "constant";
+  d.friction = "two-region";
+  d.x_mu = 0.5;
+  d.width = 0.05;     // w, Sect. 7.2
+  d.c_mu = 2.5;       // mu_2 = 2.5 mu_1, Sect. 7.2
+  d.mu = 0.3;
+  d.g = 9.81;
+  d.length_scale = 1e-3;
+  d.mass = 1.0;
+  d.t0 = 0.0;
+  d.x0 = 0.0;
+  d.v0 = 0.0;
+  d.periods = 20.0;
+  d.step = 1e-4;
+  d.theta = 0.5;
+  d.output_step = 0.0;
+  return d;
+}
+
+void set_simulate_config_value(SimulateConfig& config, std::string_view name,
+                               const std::string& text) {
+  const ConfigKey* key = find_simulate_config_key(name);
+  if (!key)
+    throw InvalidParameter("config key", std::string(name),
+                           "unknown key; allowed: " + simulate_config_key_list());
+  if (auto* text_field = std::get_if<TextField>(&key->field)) {
+    config.**text_field = text;
+  } else if (auto* number_field = std::get_if<NumberField>(&key->field)) {
+    double v = 0;
+    if (!parse_number(text, v)) throw InvalidParameter(std::string(name), text, "must be a number");
+    config.**number_field = v;
+  } else {
+    const NumberListField field = std::get<NumberListField>(key->field);
+    std::string list = trim(text);
+    if (list.size() >= 2 && list.front() == '[' && list.back() == ']')
+      list = list.substr(1, list.size() - 2);
+    std::vector<double> values;
+    if (!trim(list).empty()) {
+      std::size_t begin = 0;
+      while (true) {
+        const std::size_t comma = list.find(',', begin);
+        double v = 0;
+        if (!parse_number(std::string_view(list).substr(begin, comma - begin), v))
+          throw InvalidParameter(std::string(name), text,
+                                 "must be a comma-separated list of numbers");
+        values.push_back(v);
+        if (comma == std::string::npos) break;
+        begin = comma + 1;
+      }
+    }
+    config.*field = std::move(values);
+  }
+}
+
+SimulateConfig merge(const SimulateConfig& base, const SimulateConfig& overrides) {
+  SimulateConfig r = base;
+  for (const ConfigKey& key : simulate_config_keys())
+    std::visit(
+        [&](auto field) {
+          if (overrides.*field) r.*field = overrides.*field;
+        },
+        key.field);
+  return r;
+}
+
+SimulateConfig to_si(const SimulateConfig& config, const Scales& scales) {
+  return convert_config(config, scales, true);
+}
+
+SimulateConfig to_dimensionless(const SimulateConfig& config, const Scales& scales) {
+  return convert_config(config, scales, false);
+}
+
+SimulateConfig resolve_simulate_config(const SimulateConfig& config) {
+  const SimulateConfig defaults = simulate_config_defaults();
+  const SimulateConfig given = merge(defaults, config);  // dimensionless defaults under config
+  if (parse_unit_system(*given.units) == UnitSystem::dimensionless) return given;
+  // SI: unset keys take their dimensionless default converted with the run's scales.
+  const Scales scales(*given.length_scale, *given.mu, *given.g);
+  return merge(to_si(defaults, scales), config);
+}
+
+OutputPaths resolve_output_paths(const SimulateConfig& config) {
+  OutputPaths paths;
+  if (config.out) {
+    if (config.out->empty()) throw InvalidParameter("out", "\"\"", "must be a file path");
+    paths.trajectory = *config.out;
+  }
+  if (config.summary) {
+    if (config.summary->empty())
+      throw InvalidParameter("summary", "\"\"", "must be a file path or - (stdout)");
+    paths.summary = *config.summary;
+  } else if (config.out) {
+    paths.summary = std::filesystem::path(*config.out).replace_extension(".summary.json").string();
+  } else {
+    paths.summary = kStdout;
+  }
+  namespace fs = std::filesystem;
+  if (paths.trajectory && !paths.summary_to_stdout() &&
+      fs::absolute(paths.summary).lexically_normal() ==
+          fs::absolute(*paths.trajectory).lexically_normal())
+    throw InvalidParameter("summary", paths.summary, "must differ from out");
+  return paths;
+}
+
+}  // namespace selfalign

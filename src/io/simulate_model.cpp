@@ -1,0 +1,107 @@
+#include "selfalign/io/simulate_model.hpp"
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/sampled.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
+
+namespace selfalign {
+namespace {
+
+// The samples CSV, converted to [-] in SI runs ((s, m/s^2) -> (t/T, y''/(mu g))).
+AccelerationSamples load_samples(const SimulateConfig& c, const SimulateModel& m) {
+  if (!c.samples)
+    throw InvalidParameter("samples", "none", "must name a CSV file of 't,ydd' rows when "
+                                              "profile = samples");
+  AccelerationSamples s = read_acceleration_samples(*c.samples);
+  if (m.units == UnitSystem::si) {
+    for (double& t : s.t) t = m.scales.time_from_si(t);
+    for (double& a : s.ydd) a = m.scales.acceleration_from_si(a);
+  }
+  return s;
+}
+
+// The table profile named by `profile`, from dimensionless values.
+std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, const SimulateModel& m) {
+  const std::string& kind = *c.profile;
+  if (kind == "three-phase")
+    return std::make_unique<ThreePhaseProfile>(ThreePhaseParameters{*c.period, *c.stroke, *c.a2, *c.a3});
+  if (kind == "quadratic-sequence") {
+    if (c.durations->empty())
+      throw InvalidParameter("durations", "none",
+                             "must list the segment durations when profile = quadratic-sequence");
+    return std::make_unique<PiecewiseConstantProfile>(
+        PiecewiseConstantProfile::from_accelerations(*c.durations, *c.accelerations));
+  }
+  if (kind == "fourier")
+    return std::make_unique<FourierProfile>(*c.period, *c.fourier_cos, *c.fourier_sin);
+  if (kind == "samples")
+    return make_sampled_profile(load_samples(c, m), parse_interpolation(*c.interpolation));
+  throw InvalidParameter("profile", kind,
+                         "must be one of: three-phase, quadratic-sequence, fourier, samples");
+}
+
+// The friction map m(x) named by `friction` (eqs. 7-9), from dimensionless values.
+std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c) {
+  if (*c.friction == "two-region")
+    return std::make_unique<TwoRegionFriction>(*c.x_mu, *c.width, *c.c_mu);
+  if (*c.friction == "uniform") return std::make_unique<UniformFriction>(1.0);
+  throw InvalidParameter("friction", *c.friction, "must be one of: two-region, uniform");
+}
+
+void build_physics(const SimulateConfig& c, SimulateModel& m) {
+  m.periods = require_positive("periods", *c.periods);
+  m.options.method = parse_method(*c.method);
+  validate(TimeSteppingOptions{*c.step, *c.theta});  // checked for both methods: misuse is misuse
+  m.options.step = *c.step;
+  m.options.theta = *c.theta;
+  m.options.output_step = require_non_negative("output_step", *c.output_step);
+  m.friction = make_friction(c);
+  m.profile = make_profile(c, m);
+  m.initial = {require_finite("t0", *c.t0), require_finite("x0", *c.x0),
+               require_finite("v0", *c.v0)};
+  m.options.duration = m.periods * m.profile->period();
+}
+
+// The library checks dimensionless values. For an SI run, restate a failed check of one
+// dimensional key with the SI value the user gave; otherwise name the scales that converted it.
+InvalidParameter in_si_terms(const InvalidParameter& e, const SimulateConfig& si,
+                             const Scales& scales) {
+  const ConfigKey* key = find_simulate_config_key(e.name());
+  if (key && key->dimension == Dimension::none) return e;  // same value in both systems
+  if (key) {
+    if (const auto* f = std::get_if<NumberField>(&key->field); f && (si.**f))
+      return InvalidParameter(e.name(), format_number(*(si.**f)) + " " + std::string(key->unit_si),
+                              e.allowed() + " (dimensionless value " + e.value() + ")");
+  }
+  return InvalidParameter(e.name(), e.value(),
+                          e.allowed() + " (checked in dimensionless units: L = " +
+                              format_number(scales.length()) + " m, T = " +
+                              format_number(scales.time()) + " s, mu g = " +
+                              format_number(scales.acceleration()) + " m/s^2)");
+}
+
+}  // namespace
+
+SimulateModel build_simulate_model(const SimulateConfig& config) {
+  const SimulateConfig resolved = resolve_simulate_config(config);
+  const UnitSystem units = parse_unit_system(*resolved.units);
+  SimulateModel m{units,
+                  Scales(*resolved.length_scale, *resolved.mu, *resolved.g),
+                  require_positive("mass", *resolved.mass),
+                  0.0, nullptr, nullptr, {}, {}};
+  if (units == UnitSystem::dimensionless) {
+    build_physics(resolved, m);
+    return m;
+  }
+  try {
+    build_physics(to_dimensionless(resolved, m.scales), m);
+  } catch (const InvalidParameter& e) {
+    throw in_si_terms(e, resolved, m.scales);
+  }
+  return m;
+}
+
+}  // namespace selfalign

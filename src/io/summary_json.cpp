@@ -1,0 +1,97 @@
+#include "selfalign/io/summary_json.hpp"
+
+#include <cmath>
+
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+namespace selfalign {
+namespace {
+
+using nlohmann::json;
+
+json number_or_null(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
+
+json profile_json(const TableProfile& p, const OutputUnits& u) {
+  json j = {{"kind", p.kind()},
+            {"period", u.time(p.period())},                       // Δt [-] | [s]
+            {"stroke", u.length(p.stroke())},                     // Δy [-] | [m]
+            {"peak_acceleration", u.acceleration(p.peak_acceleration())}};  // [-] | [m/s^2]
+  if (const auto* tp = dynamic_cast<const ThreePhaseProfile*>(&p)) {
+    const ThreePhaseParameters& a = tp->parameters();
+    const ThreePhaseSolution& s = tp->solution();  // Appendix, eqs. (61)-(67)
+    j["a2"] = u.acceleration(a.a2);
+    j["a3"] = u.acceleration(a.a3);
+    j["t1"] = u.time(s.t1);
+    j["t2"] = u.time(s.t2);
+    j["t3"] = u.time(s.t3);
+    j["y_ini"] = u.length(s.y_ini);
+    j["y_dot_ini"] = u.velocity(s.yd_ini);
+  } else if (const auto* fp = dynamic_cast<const FourierProfile*>(&p)) {
+    json cos = json::array(), sin = json::array();
+    for (double c : fp->cos_coeffs()) cos.push_back(u.length(c));
+    for (double s : fp->sin_coeffs()) sin.push_back(u.length(s));
+    j["fourier_cos"] = cos;
+    j["fourier_sin"] = sin;
+  } else if (const PiecewiseConstantProfile* pc = p.piecewise_constant()) {
+    json durations = json::array(), accelerations = json::array();
+    const auto segments = pc->segments();
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const double end = i + 1 < segments.size() ? segments[i + 1].begin : pc->period();
+      durations.push_back(u.time(end - segments[i].begin));
+      accelerations.push_back(u.acceleration(segments[i].accel));
+    }
+    j["durations"] = durations;
+    j["accelerations"] = accelerations;
+  }
+  return j;
+}
+
+json friction_json(const FrictionMap& f, const OutputUnits& u) {
+  if (const auto* two = dynamic_cast<const TwoRegionFriction*>(&f))
+    return {{"kind", "two-region"},
+            {"x_mu", u.length(two->x_mu())},    // [-] | [m]
+            {"width", u.length(two->width())},  // [-] | [m]
+            {"c_mu", two->c_mu()}};             // [-]
+  return {{"kind", "uniform"}, {"x_mu", nullptr}, {"width", nullptr}, {"c_mu", nullptr}};
+}
+
+json state_json(const ObjectState& s, const OutputUnits& u) {
+  return {{"t", u.time(s.t)}, {"x", u.length(s.x)}, {"x_dot", u.velocity(s.xd)}};
+}
+
+json scales_json(const SimulateModel& m) {
+  if (m.units != UnitSystem::si) return nullptr;
+  const Scales& s = m.scales;
+  return {{"length_m", s.length()},
+          {"time_s", s.time()},
+          {"velocity_m_per_s", s.velocity()},
+          {"acceleration_m_per_s2", s.acceleration()},
+          {"mu", s.mu()},
+          {"g", s.gravity()},
+          {"mass_kg", m.mass}};
+}
+
+}  // namespace
+
+json simulate_summary_json(const SimulateModel& model, const SimulationResult& result,
+                           const std::optional<std::string>& trajectory_file) {
+  const OutputUnits u = model.output_units();
+  json j;
+  j["units"] = to_string(model.units);
+  j["method"] = to_string(model.options.method);
+  j["profile"] = profile_json(*model.profile, u);
+  j["friction"] = friction_json(*model.friction, u);
+  j["initial"] = state_json(model.initial, u);
+  j["final"] = state_json(result.final_state, u);
+  j["periods"] = model.periods;
+  j[model.options.method == Method::exact ? "arcs" : "steps"] = result.work;
+  j["mean_velocity_last_period"] = number_or_null(u.velocity(result.mean_velocity_last_period));
+  j["stick_fraction"] = result.stick_fraction;  // [-]
+  j["scales"] = scales_json(model);
+  j["trajectory_file"] = trajectory_file ? json(*trajectory_file) : json(nullptr);
+  return j;
+}
+
+}  // namespace selfalign
