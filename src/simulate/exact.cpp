@@ -121,8 +121,12 @@ ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object) 
   return s;
 }
 
-std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
-                          ArcSink* sink) {
+namespace {
+
+// The solver proper. kUniform: a single constant friction piece (uniform friction), which needs
+// no piece look-ups and has no boundary; the compiler drops those branches from that copy.
+template <bool kUniform>
+std::size_t advance(const ExactSetup& setup, ExactState& state, double t_end, ArcSink* sink) {
   const auto segs = setup.profile.segments();
   const auto pieces = setup.friction.pieces();
   const std::size_t nseg = segs.size();
@@ -132,8 +136,7 @@ std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_e
   long long n = state.period_index;
   std::size_t count = 0;
 
-  // A single constant piece (uniform friction) needs no piece look-ups and has no boundary.
-  const bool uniform = pieces.size() == 1 && pieces[0].slope == 0;
+  constexpr bool uniform = kUniform;
   const double m_uniform = pieces[0].bound_at_begin;
 
   while (t < t_end) {  // one acceleration segment per pass
@@ -153,7 +156,7 @@ std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_e
       ArcEnd end = stop_end;
 
       if (v == 0) {
-        if (!uniform) {
+        if constexpr (!uniform) {
           pi = setup.friction.piece_index(x);
           m0 = pieces[pi].bound(x);
         }
@@ -164,7 +167,7 @@ std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_e
 
       if (sigma != 0) {
         double X = sigma * kInf, tau_v = kInf, tau_b = kInf;
-        if (!uniform) {
+        if constexpr (!uniform) {
           pi = piece_for_direction(setup.friction, x, sigma);
           const AffinePiece& pc = pieces[pi];
           m0 = pc.bound(x);
@@ -222,6 +225,15 @@ std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_e
   state.segment = si;
   state.period_index = n;
   return count;
+}
+
+}  // namespace
+
+std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
+                          ArcSink* sink) {
+  const auto pieces = setup.friction.pieces();
+  return pieces.size() == 1 && pieces[0].slope == 0 ? advance<true>(setup, state, t_end, sink)
+                                                    : advance<false>(setup, state, t_end, sink);
 }
 
 }  // namespace selfalign
