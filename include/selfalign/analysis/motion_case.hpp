@@ -1,0 +1,51 @@
+#pragma once
+/// \file motion_case.hpp
+/// The motion cases of Table 1 (Sect. 5.1), found two independent ways:
+///  - a priori from (Δt, Δy, y2'', y3'') alone: the decision rules of the paper's flow chart
+///    (Fig. 8, missing from the text), derived in docs/motion-cases.md;
+///  - a posteriori from the arcs of one simulated steady-state period (MotionCensus).
+
+#include <cstdint>
+#include <string>
+
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/exact.hpp"
+
+namespace selfalign {
+
+/// Table 1, plus the non-physical case 0 (Sect. 5.1).
+enum class StickSlipCase : int {
+  non_physical = 0,         ///< case 0: no three-phase profile with this stroke exists
+  stick_slip_forward = 1,   ///< case 1: stick-slip with x' >= 0 (desirable)
+  stick_slip_backward = 2,  ///< case 2: stick-slip with x' <= 0 (undesirable)
+  general_stick_slip = 3,   ///< case 3: stick-slip in both directions
+  slip_slip = 4,            ///< case 4: never sticks
+  pure_stick = 5            ///< case 5: no relative motion
+};
+
+/// "stick-slip x' >= 0", ... (Table 1's descriptions).
+std::string describe(StickSlipCase c);
+
+/// A priori case of the three-phase profile (Fig. 8). With a = y2'', b = y3'' and the
+/// interval lengths T1 = t1, T2 = t2 - t1, T3 = t3 - t2 of solve_three_phase:
+///   not physical                  -> 0
+///   a <= 1, b <= 1                -> 5 (|y''| <= 1 throughout: the object never slips)
+///   a >  1, b <= 1                -> 1
+///   a <= 1, b >  1                -> 2
+///   a >  1, b >  1: with the object at rest at t1, it stops in [t2, t3] after
+///     tau_s = (a - 1) T2 / (1 + b) and slides back to x'(t3) = -(b - 1)(T3 - tau_s);
+///     |x'(t3)| < T1 (it stops again before t1)  -> 3, otherwise -> 4.
+/// Throws InvalidParameter on misuse (non-positive or NaN parameters).
+StickSlipCase predict_case(const ThreePhaseParameters& p);
+
+/// What kinds of motion the arcs of a time window contain (feed it a steady-state period).
+struct MotionCensus final : ArcSink {
+  int stick = 0;     ///< stick arcs of positive length
+  int forward = 0;   ///< forward-slip arcs (x' > 0)
+  int backward = 0;  ///< backward-slip arcs (x' < 0)
+  void on_arc(const Arc& a) override;
+  /// Table 1 case of the window: 5 only stick, 4 no stick, 1 no backward, 2 no forward, else 3.
+  StickSlipCase motion_case() const;
+};
+
+}  // namespace selfalign

@@ -1,0 +1,51 @@
+#pragma once
+/// \file steady_state.hpp
+/// Steady state of the object on the uniform low-friction table (Sect. 4.3, 5.1, 6.2): the
+/// periodic velocity response, its average velocity v̄ (eq. 10) and the objective f (eq. 11).
+///
+/// Sect. 6.2 proves the velocity response is unique, so it is found from any start: the
+/// period map P(v) = x'(t0 + Δt) given x'(t0) = v is iterated, and once two iterates exist the
+/// fixed point is found by secant steps on P(v) - v (P is piecewise affine: constant after a
+/// stick, affine with slope λ2 = c4 in slip-slip, eq. 32), so slowly contracting slip-slip
+/// responses (λ2 near 1) converge in a few steps too. Exact solver where the table acceleration
+/// is piecewise constant, time-stepping otherwise.
+
+#include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/simulate.hpp"
+
+namespace selfalign {
+
+/// The normalising constant c of eq. (11).
+inline constexpr double kObjectiveScale = 10'000.0;
+
+/// Objective f = 1/(c v̄^2) of eq. (11); +inf when v̄ = 0.
+double objective_f(double v_bar, double c = kObjectiveScale);
+
+struct SteadyStateOptions {
+  int max_periods = 2000;        ///< periods simulated at most before giving up
+  double velocity_tol = 1e-13;   ///< |P(v) - v| accepted as steady [-] (exact solver)
+  /// Time-stepping (profiles the exact solver cannot take): h = Δt / steps_per_period.
+  int steps_per_period = 4000;
+  double theta = 0.5;            ///< time-stepping theta
+  double stepping_tol = 0;       ///< time-stepping: |P(v) - v| accepted [-]; 0: 10 h
+};
+
+struct SteadyState {
+  bool converged = false;      ///< false: max_periods reached (fields hold the last iterate)
+  Method method = Method::exact;
+  double x_dot_0s = 0;         ///< steady-state x' at the profile's t0 (phase 0) [-]
+  double phase = 0;            ///< phase of the steady-state initial condition in [0, Δt) [-]
+  double v_bar = 0;            ///< average velocity over a steady period, eq. (10) [-]
+  double f = 0;                ///< objective of eq. (11) [-]; +inf when v̄ = 0
+  double displacement = 0;     ///< x(t0 + Δt) - x(t0) over a steady period [-]
+  int periods = 0;             ///< periods simulated to find it
+  /// A posteriori Table 1 case of the steady period: from the exact arcs, or from the
+  /// time-stepping samples (stick where x' = 0 for two or more consecutive steps, slip by sign).
+  StickSlipCase motion_case = StickSlipCase::pure_stick;
+};
+
+/// Steady state on the uniform table (friction bound 1). Throws InvalidParameter on bad options.
+SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& options = {});
+
+}  // namespace selfalign

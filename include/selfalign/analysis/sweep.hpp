@@ -1,0 +1,107 @@
+#pragma once
+/// \file sweep.hpp
+/// Parameter studies (Sect. 4.4.1, 5.2): f and the motion case over a (y2'', y3'') grid
+/// (Figs. 10, 11, 17A-B), and f against Δt at fixed Δy or against Δy at fixed Δt (Figs. 4, 5)
+/// for any profile family.
+///
+/// Cells are independent: they are computed in parallel (oneTBB) and each result is written to
+/// its own slot, so the output is identical for any thread count.
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+
+namespace selfalign {
+
+/// n values from lo to hi inclusive, evenly spaced (n >= 1; n = 1 gives lo).
+std::vector<double> linear_grid(double lo, double hi, int n);
+/// n values from lo to hi inclusive, evenly spaced in log (lo, hi > 0).
+std::vector<double> log_grid(double lo, double hi, int n);
+
+/// Called as cells complete: (done, total). Called from worker threads, one call at a time.
+using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
+
+struct SweepOptions {
+  int threads = 0;              ///< worker threads; 0: all cores
+  ProgressCallback progress;    ///< optional
+  SteadyStateOptions steady;    ///< per-cell steady-state search
+};
+
+/// One cell of a (y2'', y3'') study of the three-phase profile.
+struct AccelerationCell {
+  double a2 = 0, a3 = 0;                                   ///< y2'', y3'' [-]
+  StickSlipCase predicted = StickSlipCase::non_physical;  ///< a priori (Fig. 8 rules)
+  StickSlipCase observed = StickSlipCase::non_physical;   ///< a posteriori (steady period)
+  double v_bar = 0;    ///< eq. (10) [-]; NaN for case 0
+  double f = 0;        ///< eq. (11) [-]; +inf for v̄ = 0, NaN for case 0
+  double x_dot_0s = 0; ///< steady-state x' at t0 [-]; NaN for case 0
+  bool converged = false;
+};
+
+/// f and case over the grid a2 × a3 at fixed (Δt, Δy); row-major: cell (i, j) is at
+/// index i * a3.size() + j with a2[i], a3[j]. Throws InvalidParameter on bad inputs.
+std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
+                                                  const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const SweepOptions& options = {});
+
+/// A family of table profiles indexed by period Δt and stroke Δy (Figs. 4, 5).
+class ProfileFamily {
+ public:
+  virtual ~ProfileFamily() = default;
+  /// The member with this period and stroke, or nullptr when it does not exist (case 0).
+  virtual std::unique_ptr<TableProfile> make(double period, double stroke) const = 0;
+  virtual std::string name() const = 0;
+};
+
+/// Three-phase profiles with fixed accelerations (y2'', y3'').
+class ThreePhaseFamily final : public ProfileFamily {
+ public:
+  ThreePhaseFamily(double a2, double a3);
+  std::unique_ptr<TableProfile> make(double period, double stroke) const override;
+  std::string name() const override { return "three-phase"; }
+
+ private:
+  double a2_, a3_;
+};
+
+/// One shape of piecewise-constant acceleration (a Fig. 3 style sequence of quadratics),
+/// stretched in time to the period and scaled in amplitude to the stroke: durations scale with
+/// Δt, accelerations with Δy / Δt^2.
+class ScaledShapeFamily final : public ProfileFamily {
+ public:
+  explicit ScaledShapeFamily(PiecewiseConstantProfile shape);
+  /// The default shape: three-phase-like fractions (0.35, 0.35, 0.30) of the period with
+  /// accelerations (0, -6/7, +1), i.e. velocity-periodic (0.35·6/7 = 0.30·1).
+  static ScaledShapeFamily paper_like();
+  std::unique_ptr<TableProfile> make(double period, double stroke) const override;
+  std::string name() const override { return "scaled-shape"; }
+
+ private:
+  PiecewiseConstantProfile shape_;
+};
+
+/// One point of an f(Δt) or f(Δy) study.
+struct FamilyPoint {
+  double period = 0, stroke = 0;                         ///< Δt, Δy [-]
+  bool physical = false;                                 ///< false: the family has no member
+  StickSlipCase observed = StickSlipCase::non_physical;  ///< a posteriori case
+  double v_bar = 0, f = 0;                               ///< eqs. (10), (11) [-]
+};
+
+/// f against Δt at fixed Δy (Fig. 4).
+std::vector<FamilyPoint> sweep_period(const ProfileFamily& family, double stroke,
+                                      const std::vector<double>& periods,
+                                      const SweepOptions& options = {});
+/// f against Δy at fixed Δt (Fig. 5).
+std::vector<FamilyPoint> sweep_stroke(const ProfileFamily& family, double period,
+                                      const std::vector<double>& strokes,
+                                      const SweepOptions& options = {});
+
+}  // namespace selfalign

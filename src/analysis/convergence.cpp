@@ -1,0 +1,90 @@
+#include "selfalign/analysis/convergence.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "selfalign/error.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/simulate/exact.hpp"
+
+namespace selfalign {
+namespace {
+
+struct ArcList final : ArcSink {
+  std::vector<Arc> arcs;
+  void on_arc(const Arc& a) override {
+    if (a.t1 > a.t0) arcs.push_back(a);
+  }
+  // The arc containing t (arcs are contiguous and sorted); t in [t0, t_end].
+  const Arc& at(double t) const {
+    auto it = std::upper_bound(arcs.begin(), arcs.end(), t,
+                               [](double value, const Arc& a) { return value < a.t1; });
+    return it == arcs.end() ? arcs.back() : *it;
+  }
+};
+
+// The selected friction force's class on an arc: +1 / -1 while slipping, 0 while sticking.
+int friction_class(const Arc& a) { return a.kind == ArcKind::stick ? 0 : a.direction; }
+
+}  // namespace
+
+VelocityConvergence velocity_convergence(const TableProfile& profile, const ConvergenceOptions& o) {
+  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  if (!pwc)
+    throw InvalidParameter("profile", profile.kind(),
+                           "convergence needs a piecewise-constant table acceleration");
+  require_finite("v1", o.v1);
+  require_finite("v2", o.v2);
+  require_finite("t0", o.t0);
+  require_positive("duration", o.duration);
+  if (o.samples_per_period < 1)
+    throw InvalidParameter("samples_per_period", o.samples_per_period, "must be >= 1");
+
+  const UniformFriction friction(1.0);
+  const ExactSetup setup{*pwc, *friction.piecewise_affine()};
+  const double t_end = o.t0 + o.duration;
+  ArcList a1, a2;
+  ExactState s1 = make_exact_state(setup, {o.t0, 0, o.v1});
+  ExactState s2 = make_exact_state(setup, {o.t0, 0, o.v2});
+  advance_exact(setup, s1, t_end, &a1);
+  advance_exact(setup, s2, t_end, &a2);
+
+  // Breakpoints: every arc boundary of either trajectory.
+  std::vector<double> breaks{o.t0, t_end};
+  for (const ArcList* list : {&a1, &a2})
+    for (const Arc& a : list->arcs) breaks.push_back(a.t1);
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  while (!breaks.empty() && breaks.back() > t_end) breaks.pop_back();
+
+  VelocityConvergence r;
+  for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
+    const double mid = 0.5 * (breaks[i] + breaks[i + 1]);
+    const Arc &arc1 = a1.at(mid), &arc2 = a2.at(mid);
+    const bool same = friction_class(arc1) == friction_class(arc2);
+    if (!r.intervals.empty() && r.intervals.back().same == same)
+      r.intervals.back().t_end = breaks[i + 1];
+    else
+      r.intervals.push_back({breaks[i], breaks[i + 1], same});
+    const bool both_stuck = arc1.kind == ArcKind::stick && arc2.kind == ArcKind::stick;
+    if (both_stuck && !r.t_coincide) r.t_coincide = breaks[i];
+  }
+
+  // Samples: a uniform grid merged with the breakpoints.
+  std::vector<double> times = breaks;
+  const double dt = profile.period() / o.samples_per_period;
+  for (double t = o.t0 + dt; t < t_end; t += dt) times.push_back(t);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  for (double t : times) {
+    const double v1 = a1.at(t).at(t).xd, v2 = a2.at(t).at(t).xd;
+    r.t.push_back(t);
+    r.v1.push_back(v1);
+    r.v2.push_back(v2);
+    r.lyapunov.push_back(0.5 * (v1 - v2) * (v1 - v2));  // eq. (35)
+  }
+  return r;
+}
+
+}  // namespace selfalign

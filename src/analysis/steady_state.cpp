@@ -1,0 +1,108 @@
+#include "selfalign/analysis/steady_state.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
+
+namespace selfalign {
+
+double objective_f(double v_bar, double c) {
+  return v_bar == 0 ? std::numeric_limits<double>::infinity() : 1.0 / (c * v_bar * v_bar);
+}
+
+namespace {
+
+// Time-stepping census: stick / forward / backward seen over one period of samples. A stick
+// counts once x' = 0 holds for two consecutive steps: a slip reversal can land one step on
+// x' = 0 (|v*| <= h m while the velocity crosses zero), which is not a stick of the response.
+struct SampleCensus final : StepSink {
+  MotionCensus census;
+  int zero_run = 0;
+  void on_step(const TimeSteppingState& s) override {
+    const double v = s.object.xd;
+    zero_run = v == 0 ? zero_run + 1 : 0;
+    if (v != 0 || zero_run == 2) {
+      Arc a;
+      a.t0 = 0;
+      a.t1 = 1;
+      a.kind = v == 0 ? ArcKind::stick : ArcKind::parabolic;
+      a.direction = static_cast<std::int8_t>(v > 0 ? 1 : v < 0 ? -1 : 0);
+      census.on_arc(a);
+    }
+  }
+};
+
+}  // namespace
+
+SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& o) {
+  if (o.max_periods < 2) throw InvalidParameter("max_periods", o.max_periods, "must be >= 2");
+  require_positive("velocity_tol", o.velocity_tol);
+  const UniformFriction friction(1.0);
+  const double P = profile.period();
+  SteadyState r;
+
+  // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0.
+  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  double tol = o.velocity_tol;
+  const long long steps = o.steps_per_period;
+  const TimeSteppingOptions stepping{P / static_cast<double>(steps), o.theta};
+  if (!pwc) {
+    if (steps < 1)
+      throw InvalidParameter("steps_per_period", static_cast<double>(steps), "must be >= 1");
+    validate(stepping);
+    r.method = Method::time_stepping;
+    tol = o.stepping_tol > 0 ? o.stepping_tol : 10 * stepping.step;
+  }
+  auto period_map = [&](double v, MotionCensus* census) -> ObjectState {
+    if (pwc) {
+      const ExactSetup setup{*pwc, *friction.piecewise_affine()};
+      ExactState s = make_exact_state(setup, {0, 0, v});
+      advance_exact(setup, s, P, census);
+      return s.object;
+    }
+    SampleCensus samples;
+    TimeSteppingState s = make_time_stepping_state(profile, {0, 0, v});
+    advance_time_stepping(profile, friction, stepping, s, steps, census ? &samples : nullptr);
+    if (census) *census = samples.census;
+    return s.object;
+  };
+
+  // Secant iteration on g(v) = P(v) - v, started from rest: plain iterates first (they reach
+  // the stick-determined fixed point exactly), then secant steps (affine slip-slip maps).
+  double v_prev = 0, g_prev = period_map(0, nullptr).xd - 0;
+  double v = v_prev + g_prev;
+  r.periods = 1;
+  bool done = std::abs(g_prev) <= tol;
+  if (done) v = 0;
+  while (!done && r.periods < o.max_periods) {
+    const double g = period_map(v, nullptr).xd - v;
+    ++r.periods;
+    if (std::abs(g) <= tol * (1 + std::abs(v))) {
+      done = true;
+      break;
+    }
+    double next = v + g;  // plain iterate
+    const double slope = (g - g_prev) / (v - v_prev);
+    if (r.periods > 3 && std::isfinite(slope) && slope < 0) next = v - g / slope;  // secant
+    v_prev = v;
+    g_prev = g;
+    v = next;
+  }
+  r.converged = done;
+  r.x_dot_0s = v;
+  MotionCensus census;
+  const ObjectState end = period_map(v, &census);
+  r.displacement = end.x;
+  r.motion_case = census.motion_case();
+  ++r.periods;
+  r.v_bar = r.displacement / P;  // eq. (10)
+  r.f = objective_f(r.v_bar);    // eq. (11)
+  return r;
+}
+
+}  // namespace selfalign

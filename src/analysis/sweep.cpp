@@ -1,0 +1,173 @@
+#include "selfalign/analysis/sweep.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+namespace selfalign {
+
+std::vector<double> linear_grid(double lo, double hi, int n) {
+  require_finite("grid lower end", lo);
+  require_finite("grid upper end", hi);
+  if (n < 1) throw InvalidParameter("grid size", n, "must be >= 1");
+  std::vector<double> g(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) g[static_cast<std::size_t>(i)] = n == 1 ? lo : lo + (hi - lo) * i / (n - 1);
+  return g;
+}
+
+std::vector<double> log_grid(double lo, double hi, int n) {
+  require_positive("grid lower end", lo);
+  require_positive("grid upper end", hi);
+  std::vector<double> g = linear_grid(std::log(lo), std::log(hi), n);
+  for (double& v : g) v = std::exp(v);
+  if (n > 1) {  // exact end points
+    g.front() = lo;
+    g.back() = hi;
+  }
+  return g;
+}
+
+namespace {
+
+// Runs body(i) for i in [0, n) on options.threads workers, reporting progress.
+template <class Body>
+void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body) {
+  if (o.threads < 0) throw InvalidParameter("threads", o.threads, "must be >= 0 (0: all cores)");
+  std::atomic<std::size_t> done{0};
+  std::mutex progress_mutex;
+  const std::size_t grain = std::max<std::size_t>(1, n / 512);
+  auto run = [&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
+                        const std::size_t now = done += r.size();
+                        if (o.progress) {
+                          std::lock_guard lock(progress_mutex);
+                          o.progress(now, n);
+                        }
+                      });
+  };
+  if (o.threads == 0) {
+    run();
+  } else {
+    tbb::task_arena arena(o.threads);
+    arena.execute(run);
+  }
+}
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+}  // namespace
+
+std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
+                                                  const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const SweepOptions& o) {
+  require_positive("period", period);
+  require_positive("stroke", stroke);
+  for (double v : a2) require_positive("a2", v);
+  for (double v : a3) require_positive("a3", v);
+  std::vector<AccelerationCell> cells(a2.size() * a3.size());
+  parallel_cells(cells.size(), o, [&](std::size_t k) {
+    AccelerationCell& c = cells[k];
+    c.a2 = a2[k / a3.size()];
+    c.a3 = a3[k % a3.size()];
+    const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
+    c.predicted = predict_case(p);
+    if (c.predicted == StickSlipCase::non_physical) {
+      c.observed = StickSlipCase::non_physical;
+      c.v_bar = c.f = c.x_dot_0s = kNaN;
+      return;
+    }
+    const SteadyState s = steady_state(ThreePhaseProfile(p), o.steady);
+    c.observed = s.motion_case;
+    c.v_bar = s.v_bar;
+    c.f = s.f;
+    c.x_dot_0s = s.x_dot_0s;
+    c.converged = s.converged;
+  });
+  return cells;
+}
+
+ThreePhaseFamily::ThreePhaseFamily(double a2, double a3)
+    : a2_(require_positive("a2", a2)), a3_(require_positive("a3", a3)) {}
+
+std::unique_ptr<TableProfile> ThreePhaseFamily::make(double period, double stroke) const {
+  const ThreePhaseParameters p{period, stroke, a2_, a3_};
+  if (!solve_three_phase(p).physical) return nullptr;
+  return std::make_unique<ThreePhaseProfile>(p);
+}
+
+ScaledShapeFamily::ScaledShapeFamily(PiecewiseConstantProfile shape) : shape_(std::move(shape)) {}
+
+ScaledShapeFamily ScaledShapeFamily::paper_like() {
+  const double durations[3] = {0.35, 0.35, 0.30}, accels[3] = {0.0, -6.0 / 7.0, 1.0};
+  return ScaledShapeFamily(
+      PiecewiseConstantProfile::from_accelerations(durations, accels, "scaled-shape"));
+}
+
+std::unique_ptr<TableProfile> ScaledShapeFamily::make(double period, double stroke) const {
+  require_positive("period", period);
+  require_positive("stroke", stroke);
+  const double time_scale = period / shape_.period();
+  const double accel_scale = stroke / shape_.stroke() / (time_scale * time_scale);
+  const auto segs = shape_.segments();
+  std::vector<double> durations, accels;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const double end = i + 1 < segs.size() ? segs[i + 1].begin : shape_.period();
+    durations.push_back((end - segs[i].begin) * time_scale);
+    accels.push_back(segs[i].accel * accel_scale);
+  }
+  return std::make_unique<PiecewiseConstantProfile>(
+      PiecewiseConstantProfile::from_accelerations(durations, accels, "scaled-shape"));
+}
+
+namespace {
+std::vector<FamilyPoint> sweep_family(const ProfileFamily& family,
+                                      const std::vector<std::pair<double, double>>& points,
+                                      const SweepOptions& o) {
+  std::vector<FamilyPoint> out(points.size());
+  parallel_cells(points.size(), o, [&](std::size_t k) {
+    FamilyPoint& pt = out[k];
+    pt.period = points[k].first;
+    pt.stroke = points[k].second;
+    const std::unique_ptr<TableProfile> profile = family.make(pt.period, pt.stroke);
+    if (!profile) {
+      pt.v_bar = pt.f = kNaN;
+      return;
+    }
+    pt.physical = true;
+    const SteadyState s = steady_state(*profile, o.steady);
+    pt.observed = s.motion_case;
+    pt.v_bar = s.v_bar;
+    pt.f = s.f;
+  });
+  return out;
+}
+}  // namespace
+
+std::vector<FamilyPoint> sweep_period(const ProfileFamily& family, double stroke,
+                                      const std::vector<double>& periods, const SweepOptions& o) {
+  require_positive("stroke", stroke);
+  std::vector<std::pair<double, double>> points;
+  for (double p : periods) points.emplace_back(require_positive("period", p), stroke);
+  return sweep_family(family, points, o);
+}
+
+std::vector<FamilyPoint> sweep_stroke(const ProfileFamily& family, double period,
+                                      const std::vector<double>& strokes, const SweepOptions& o) {
+  require_positive("period", period);
+  std::vector<std::pair<double, double>> points;
+  for (double s : strokes) points.emplace_back(period, require_positive("stroke", s));
+  return sweep_family(family, points, o);
+}
+
+}  // namespace selfalign

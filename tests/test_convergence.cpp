@@ -1,0 +1,61 @@
+// Tests for analysis/convergence.hpp: the Lyapunov argument of Sect. 6.2 (eqs. 35-37).
+#include <gtest/gtest.h>
+
+#include "selfalign/analysis/convergence.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+using namespace selfalign;
+
+namespace {
+// V is formed from velocities of O(1): equal-sign intervals keep v1 - v2 constant up to
+// rounding of a few operations per arc.
+constexpr double kFlatTol = 1e-12;
+
+// Checks V' = 0 on '=' intervals and V' <= 0 on '≠' intervals (eq. 36) at the samples.
+void expect_lyapunov_shape(const VelocityConvergence& c) {
+  std::size_t k = 0;
+  for (const SignInterval& iv : c.intervals) {
+    while (k + 1 < c.t.size() && c.t[k] < iv.t_begin) ++k;
+    for (std::size_t j = k; j + 1 < c.t.size() && c.t[j + 1] <= iv.t_end; ++j) {
+      if (iv.same)
+        EXPECT_NEAR(c.lyapunov[j + 1], c.lyapunov[j], kFlatTol) << "'=' at t = " << c.t[j];
+      else
+        EXPECT_LE(c.lyapunov[j + 1], c.lyapunov[j] + kFlatTol) << "'≠' at t = " << c.t[j];
+    }
+  }
+}
+}  // namespace
+
+TEST(Convergence, CaseOneCoincidesInFiniteTime) {
+  const ThreePhaseProfile profile({1.0, 0.084, 3.0, 0.9});
+  ConvergenceOptions o;
+  o.v1 = 0.6;
+  o.v2 = -0.4;
+  o.duration = 6;
+  const VelocityConvergence c = velocity_convergence(profile, o);
+  ASSERT_TRUE(c.t_coincide.has_value());
+  EXPECT_GT(*c.t_coincide, 0.0);
+  EXPECT_LT(*c.t_coincide, o.duration);
+  EXPECT_DOUBLE_EQ(c.lyapunov.front(), 0.5);  // (0.6 - (-0.4))^2 / 2
+  for (std::size_t i = 0; i < c.t.size(); ++i)
+    if (c.t[i] >= *c.t_coincide) EXPECT_EQ(c.lyapunov[i], 0.0) << "t = " << c.t[i];
+  expect_lyapunov_shape(c);
+  // V decreases somewhere, only on '≠' intervals, and both kinds of interval occur.
+  bool saw_same = false, saw_different = false;
+  for (const SignInterval& iv : c.intervals) (iv.same ? saw_same : saw_different) = true;
+  EXPECT_TRUE(saw_same);
+  EXPECT_TRUE(saw_different);
+}
+
+TEST(Convergence, SlipSlipConvergesOnlyAsymptotically) {
+  const ThreePhaseProfile profile({1.0, 0.084, 1.05, 2.0});
+  ConvergenceOptions o;
+  o.v1 = 0.3;
+  o.v2 = -0.3;
+  o.duration = 5;
+  const VelocityConvergence c = velocity_convergence(profile, o);
+  EXPECT_FALSE(c.t_coincide.has_value());
+  EXPECT_GT(c.lyapunov.back(), 0.0);
+  EXPECT_LT(c.lyapunov.back(), 1e-3 * c.lyapunov.front());
+  expect_lyapunov_shape(c);
+}
