@@ -64,3 +64,15 @@ TEST(Sweep, ThreePhaseFamilyReportsCaseZeroAsNonPhysical) {
   EXPECT_TRUE(std::isnan(pts[0].f));
   EXPECT_TRUE(pts[1].physical);   // 4 <= 9/(8 0.084) = 13.4
 }
+
+TEST(Sweep, ScaledFourierFamilyScalesTheStrokeAndUsesTimeStepping) {
+  const ScaledFourierFamily family({0.0, 0.2}, {1.0, 0.0, 0.1});
+  const auto p = family.make(0.072, 0.021);
+  EXPECT_NEAR(p->stroke(), 0.021, 1e-14);
+  EXPECT_EQ(p->piecewise_constant(), nullptr);
+  SweepOptions o;
+  o.steady.steps_per_period = 2000;
+  const auto pts = sweep_period(family, 0.021, {0.072}, o);
+  EXPECT_TRUE(pts[0].physical);
+  EXPECT_TRUE(std::isfinite(pts[0].v_bar));
+}

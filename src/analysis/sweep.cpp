@@ -130,6 +130,21 @@ std::unique_ptr<TableProfile> ScaledShapeFamily::make(double period, double stro
       PiecewiseConstantProfile::from_accelerations(durations, accels, "scaled-shape"));
 }
 
+ScaledFourierFamily::ScaledFourierFamily(std::vector<double> cos_coeffs,
+                                         std::vector<double> sin_coeffs)
+    : cos_(std::move(cos_coeffs)),
+      sin_(std::move(sin_coeffs)),
+      unit_stroke_(FourierProfile(1.0, cos_, sin_).stroke()) {}
+
+std::unique_ptr<TableProfile> ScaledFourierFamily::make(double period, double stroke) const {
+  require_positive("stroke", stroke);
+  const double k = stroke / unit_stroke_;  // the stroke is linear in the coefficients
+  std::vector<double> c = cos_, s = sin_;
+  for (double& v : c) v *= k;
+  for (double& v : s) v *= k;
+  return std::make_unique<FourierProfile>(period, std::move(c), std::move(s));
+}
+
 namespace {
 std::vector<FamilyPoint> sweep_family(const ProfileFamily& family,
                                       const std::vector<std::pair<double, double>>& points,

@@ -15,6 +15,7 @@
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_constant.hpp"
 
 namespace selfalign {
@@ -85,6 +86,21 @@ class ScaledShapeFamily final : public ProfileFamily {
 
  private:
   PiecewiseConstantProfile shape_;
+};
+
+/// One Fourier shape (Sect. 4.4.2) with its coefficients scaled to the stroke: the members
+/// share the harmonic content and differ in period and amplitude. Steady states of these
+/// profiles use time-stepping (SweepOptions::steady.steps_per_period).
+class ScaledFourierFamily final : public ProfileFamily {
+ public:
+  /// Coefficients of y(t) = sum A_k cos(k w t) + B_k sin(k w t), any amplitude (rescaled).
+  ScaledFourierFamily(std::vector<double> cos_coeffs, std::vector<double> sin_coeffs);
+  std::unique_ptr<TableProfile> make(double period, double stroke) const override;
+  std::string name() const override { return "scaled-fourier"; }
+
+ private:
+  std::vector<double> cos_, sin_;
+  double unit_stroke_;  // stroke of the given coefficients
 };
 
 /// One point of an f(Δt) or f(Δy) study.
