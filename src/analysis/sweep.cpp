@@ -1,14 +1,9 @@
 #include "selfalign/analysis/sweep.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <mutex>
 
+#include "parallel_cells.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
@@ -37,32 +32,6 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 
 namespace {
 
-// Runs body(i) for i in [0, n) on options.threads workers, reporting progress.
-template <class Body>
-void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body) {
-  if (o.threads < 0) throw InvalidParameter("threads", o.threads, "must be >= 0 (0: all cores)");
-  std::atomic<std::size_t> done{0};
-  std::mutex progress_mutex;
-  const std::size_t grain = std::max<std::size_t>(1, n / 512);
-  auto run = [&] {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
-                        const std::size_t now = done += r.size();
-                        if (o.progress) {
-                          std::lock_guard lock(progress_mutex);
-                          o.progress(now, n);
-                        }
-                      });
-  };
-  if (o.threads == 0) {
-    run();
-  } else {
-    tbb::task_arena arena(o.threads);
-    arena.execute(run);
-  }
-}
-
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 }  // namespace
@@ -76,7 +45,7 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
   for (double v : a2) require_positive("a2", v);
   for (double v : a3) require_positive("a3", v);
   std::vector<AccelerationCell> cells(a2.size() * a3.size());
-  parallel_cells(cells.size(), o, [&](std::size_t k) {
+  detail::parallel_cells(cells.size(), o, [&](std::size_t k) {
     AccelerationCell& c = cells[k];
     c.a2 = a2[k / a3.size()];
     c.a3 = a3[k % a3.size()];
@@ -150,7 +119,7 @@ std::vector<FamilyPoint> sweep_family(const ProfileFamily& family,
                                       const std::vector<std::pair<double, double>>& points,
                                       const SweepOptions& o) {
   std::vector<FamilyPoint> out(points.size());
-  parallel_cells(points.size(), o, [&](std::size_t k) {
+  detail::parallel_cells(points.size(), o, [&](std::size_t k) {
     FamilyPoint& pt = out[k];
     pt.period = points[k].first;
     pt.stroke = points[k].second;

@@ -1,0 +1,68 @@
+#pragma once
+/// \file positioning.hpp
+/// Positioning accuracy (Sect. 7.1, eq. 39) and the Fig. 17 surfaces.
+///
+/// The object enters the high-friction region in its steady state. Following Sect. 7.1:
+/// x_mu = Δx, the largest displacement in one steady period, and N steady-state entries
+/// x_0s ∈ [-v̄Δt, 0] (with the steady x'_0s at phase 0) cover every way of arriving. Each
+/// entry's stopping run gives an end position x_mu + Δx_overshoot; then
+///   Δx_d = (Δx_overshoot,max - Δx_overshoot,min) / 2            (eq. 39)
+///   x_d  = x_mu + Δx_overshoot,min + Δx_d.
+
+#include <vector>
+
+#include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/analysis/stopping.hpp"
+#include "selfalign/analysis/sweep.hpp"
+
+namespace selfalign {
+
+struct PositioningOptions {
+  int entries = 100;          ///< number N of steady-state entries, >= 1
+  StoppingOptions stopping;   ///< per entry
+  SteadyStateOptions steady;
+};
+
+struct PositioningAccuracy {
+  bool reaches = false;  ///< false when v̄ <= 0: the object never walks into the region
+  SteadyState steady;
+  double x_mu = 0;         ///< = Δx, the largest displacement in one steady period [-]
+  double x_stick_min = 0;  ///< eq. (41) [-]
+  std::vector<double> entries;        ///< x_0s [-]
+  std::vector<StoppingRun> runs;      ///< per entry: end position, kind, times to p
+  double overshoot_min = 0, overshoot_max = 0;  ///< end - x_mu [-]
+  double dx_d = 0;  ///< eq. (39) [-]
+  double x_d = 0;   ///< desired end position [-]
+  int accumulating_entries = 0;
+  bool accumulates = false;  ///< every entry accumulates to x_stick,min
+  bool all_stopped = false;  ///< every entry stopped (none hit max_periods)
+};
+
+/// Sect. 7.1 for a piecewise-constant profile on a two-region table of width w and ratio c_mu
+/// (x_mu is placed at Δx). Throws InvalidParameter on bad inputs.
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
+                                         const PositioningOptions& options = {});
+
+/// One cell of the Fig. 17 surfaces.
+struct PositioningCell {
+  double a2 = 0, a3 = 0;  ///< y2'', y3'' [-]
+  StickSlipCase motion_case = StickSlipCase::non_physical;  ///< (B), a posteriori
+  double f = 0;            ///< (A) eq. (11) [-]
+  bool accumulates = false;  ///< (C)
+  double dx_d = 0;         ///< (D) eq. (39) [-]; NaN where the object does not arrive
+  int accumulating_entries = 0;
+  /// Largest number of periods from entry to p = 0.99 and p = 0.999 over the entries that
+  /// accumulate (-1 if none).
+  int max_periods_p99 = -1, max_periods_p999 = -1;
+};
+
+/// Fig. 17 over the grid a2 x a3 (row-major, a2 outer) at (Δt, Δy, w, c_mu); parallel,
+/// deterministic (SweepOptions as for sweep_accelerations).
+std::vector<PositioningCell> positioning_surfaces(double period, double stroke, double width,
+                                                  double c_mu, const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const PositioningOptions& options = {},
+                                                  const SweepOptions& sweep = {});
+
+}  // namespace selfalign

@@ -1,0 +1,54 @@
+#pragma once
+/// \file stopping.hpp
+/// A stopping run (Sect. 7): the object walks into the friction transition region and stops.
+///
+/// The end position is where the object sticks for good, established by proof, not by
+/// waiting N periods:
+///  - permanent stick: at rest at x with m(x) >= max |y''| (eq. 40), nothing can move it again;
+///  - accumulation: for three-phase profiles, at rest at the start of a period at x_n where the
+///    stick-position map (eq. 59) provably drives the stick positions up to its fixed point
+///    x_stick,min (StickPositionMap::proves_accumulation_from); the end position is that limit,
+///    reached only as t -> infinity (Sect. 7.3).
+
+#include <vector>
+
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/object_state.hpp"
+
+namespace selfalign {
+
+enum class StopKind {
+  permanent_stick,  ///< stuck for good at end_position (eq. 40)
+  accumulation,     ///< stick positions accumulate at end_position = x_stick,min (eq. 60)
+  not_stopped       ///< max_periods reached without a proof (e.g. the object never arrives)
+};
+
+const char* to_string(StopKind kind);
+
+struct StoppingOptions {
+  int max_periods = 10'000;      ///< give up after this many table periods
+  /// Fractions p for which the time to reach x_mu + p (x_stick,min - x_mu) is reported.
+  std::vector<double> fractions{0.99, 0.999};
+};
+
+struct StoppingRun {
+  StopKind kind = StopKind::not_stopped;
+  double end_position = 0;   ///< where the object stops [-]
+  double process_time = 0;   ///< T_p: time the final stick starts [-]; +inf for accumulation
+  double entry_time = 0;     ///< first time x >= x_mu [-]; NaN if never
+  double x_stick_min = 0;    ///< eq. (41) [-]
+  /// Successive positions where the object came to rest at x >= x_mu (x_1, x_2, ...) [-].
+  std::vector<double> stick_positions;
+  /// For each options.fractions[k]: first time x >= x_mu + p (x_stick,min - x_mu) [-], NaN if
+  /// not reached within max_periods; and the number of table periods from entry to then.
+  std::vector<double> time_to_fraction;
+  std::vector<int> periods_to_fraction;
+};
+
+/// Runs the exact solver from `start` on the two-region table until the object stops for good
+/// (the profile must be piecewise constant). Throws InvalidParameter otherwise.
+StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
+                         const ObjectState& start, const StoppingOptions& options = {});
+
+}  // namespace selfalign

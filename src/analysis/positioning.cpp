@@ -1,0 +1,117 @@
+#include "selfalign/analysis/positioning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "parallel_cells.hpp"
+#include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/exact.hpp"
+
+namespace selfalign {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Largest x over the arcs (x is monotone on each arc, so the ends suffice).
+struct MaxPosition final : ArcSink {
+  double max_x = -std::numeric_limits<double>::infinity();
+  void on_arc(const Arc& a) override { max_x = std::max({max_x, a.x0, a.x1}); }
+};
+
+}  // namespace
+
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
+                                         const PositioningOptions& o) {
+  if (o.entries < 1) throw InvalidParameter("entries", o.entries, "must be >= 1");
+  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  if (!pwc)
+    throw InvalidParameter("profile", profile.kind(),
+                           "positioning needs a piecewise-constant table acceleration");
+  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  PositioningAccuracy r;
+  r.steady = steady_state(profile, o.steady);
+  r.reaches = r.steady.v_bar > 0;
+  if (!r.reaches) {
+    r.x_mu = r.x_stick_min = r.overshoot_min = r.overshoot_max = r.dx_d = r.x_d = kNaN;
+    return r;
+  }
+  // Δx: the largest displacement in one steady period (Sect. 7.1), from x = 0 at phase 0.
+  const UniformFriction uniform;
+  const ExactSetup setup{*pwc, *uniform.piecewise_affine()};
+  ExactState s = make_exact_state(setup, {0, 0, r.steady.x_dot_0s});
+  MaxPosition max_position;
+  advance_exact(setup, s, profile.period(), &max_position);
+  r.x_mu = max_position.max_x;
+
+  const TwoRegionFriction friction(r.x_mu, width, c_mu);
+  r.x_stick_min = stick_position_min(friction, profile.peak_acceleration());
+  const double span = r.steady.v_bar * profile.period();
+  r.entries = o.entries == 1 ? std::vector<double>{0.0} : linear_grid(-span, 0.0, o.entries);
+  r.overshoot_min = std::numeric_limits<double>::infinity();
+  r.overshoot_max = -std::numeric_limits<double>::infinity();
+  r.all_stopped = true;
+  for (double x0 : r.entries) {
+    r.runs.push_back(stopping_run(profile, friction, {0, x0, r.steady.x_dot_0s}, o.stopping));
+    const StoppingRun& run = r.runs.back();
+    if (run.kind == StopKind::not_stopped) {
+      r.all_stopped = false;
+      continue;
+    }
+    r.accumulating_entries += run.kind == StopKind::accumulation;
+    r.overshoot_min = std::min(r.overshoot_min, run.end_position - r.x_mu);
+    r.overshoot_max = std::max(r.overshoot_max, run.end_position - r.x_mu);
+  }
+  r.accumulates = r.accumulating_entries == o.entries;
+  if (r.all_stopped) {
+    r.dx_d = 0.5 * (r.overshoot_max - r.overshoot_min);  // eq. (39)
+    r.x_d = r.x_mu + r.overshoot_min + r.dx_d;
+  } else {
+    r.dx_d = r.x_d = kNaN;
+  }
+  return r;
+}
+
+std::vector<PositioningCell> positioning_surfaces(double period, double stroke, double width,
+                                                  double c_mu, const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const PositioningOptions& o,
+                                                  const SweepOptions& sweep) {
+  require_positive("period", period);
+  require_positive("stroke", stroke);
+  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  for (double v : a2) require_positive("a2", v);
+  for (double v : a3) require_positive("a3", v);
+  std::vector<PositioningCell> cells(a2.size() * a3.size());
+  PositioningOptions per_cell = o;
+  per_cell.stopping.fractions = {0.99, 0.999};
+  detail::parallel_cells(cells.size(), sweep, [&](std::size_t k) {
+    PositioningCell& c = cells[k];
+    c.a2 = a2[k / a3.size()];
+    c.a3 = a3[k % a3.size()];
+    const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
+    if (!solve_three_phase(p).physical) {
+      c.f = c.dx_d = kNaN;
+      return;
+    }
+    const ThreePhaseProfile profile(p);
+    const PositioningAccuracy acc = positioning_accuracy(profile, width, c_mu, per_cell);
+    c.motion_case = acc.steady.motion_case;
+    c.f = acc.steady.f;
+    c.accumulates = acc.accumulates;
+    c.accumulating_entries = acc.accumulating_entries;
+    c.dx_d = acc.dx_d;
+    // Periods from entry to p = 0.99 / 0.999 over the accumulating entries (Sect. 7.3).
+    for (const StoppingRun& run : acc.runs) {
+      if (run.kind != StopKind::accumulation) continue;
+      c.max_periods_p99 = std::max(c.max_periods_p99, run.periods_to_fraction[0]);
+      c.max_periods_p999 = std::max(c.max_periods_p999, run.periods_to_fraction[1]);
+    }
+  });
+  return cells;
+}
+
+}  // namespace selfalign

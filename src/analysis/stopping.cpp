@@ -1,0 +1,123 @@
+#include "selfalign/analysis/stopping.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/exact.hpp"
+
+namespace selfalign {
+
+const char* to_string(StopKind kind) {
+  switch (kind) {
+    case StopKind::permanent_stick: return "permanent-stick";
+    case StopKind::accumulation: return "accumulation";
+    case StopKind::not_stopped: return "not-stopped";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Watches the arcs: entry into x >= x_mu, stops at x >= x_mu, first crossings of targets.
+struct StopWatch final : ArcSink {
+  double x_mu;
+  std::vector<double> targets;  // positions to time
+  StoppingRun& run;
+  double last_stop_time = 0;
+  StopWatch(double x_mu_, std::vector<double> targets_, StoppingRun& r)
+      : x_mu(x_mu_), targets(std::move(targets_)), run(r) {}
+
+  // First time on the arc at which x >= X (x is monotone on an arc): bisection on the closed
+  // form, to a relative 1e-15 of the arc's length.
+  static double crossing(const Arc& a, double X) {
+    if (a.x0 >= X) return a.t0;
+    double lo = a.t0, hi = a.t1;
+    for (int i = 0; i < 200 && hi - lo > 1e-15 * (1 + std::abs(hi)); ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (a.at(mid).x >= X ? hi : lo) = mid;
+    }
+    return hi;
+  }
+
+  void on_arc(const Arc& a) override {
+    const double x_hi = std::max(a.x0, a.x1);
+    if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(a, x_mu);
+    for (std::size_t k = 0; k < targets.size(); ++k)
+      if (std::isnan(run.time_to_fraction[k]) && x_hi >= targets[k])
+        run.time_to_fraction[k] = crossing(a, targets[k]);
+    if (a.end == ArcEnd::velocity_zero) {
+      last_stop_time = a.t1;
+      if (a.x1 >= x_mu) run.stick_positions.push_back(a.x1);
+    }
+  }
+};
+
+}  // namespace
+
+StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
+                         const ObjectState& start, const StoppingOptions& o) {
+  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  if (!pwc)
+    throw InvalidParameter("profile", profile.kind(),
+                           "a stopping run needs a piecewise-constant table acceleration");
+  if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");
+  for (double p : o.fractions)
+    if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");
+
+  const double peak = profile.peak_acceleration(), P = profile.period();
+  StoppingRun r;
+  r.x_stick_min = stick_position_min(friction, peak);
+  r.entry_time = kNaN;
+  r.time_to_fraction.assign(o.fractions.size(), kNaN);
+  r.periods_to_fraction.assign(o.fractions.size(), -1);
+  std::vector<double> targets;
+  for (double p : o.fractions)
+    targets.push_back(friction.x_mu() + p * (r.x_stick_min - friction.x_mu()));
+
+  // The accumulation proof needs the three-phase structure behind eq. (59).
+  const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(&profile);
+  std::unique_ptr<StickPositionMap> map;
+  if (three_phase) map = std::make_unique<StickPositionMap>(*three_phase, friction);
+
+  const ExactSetup setup{*pwc, *friction.piecewise_affine()};
+  ExactState s = make_exact_state(setup, start);
+  StopWatch watch(friction.x_mu(), targets, r);
+  const double t_first = (static_cast<double>(s.period_index) + 1) * P;
+  for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
+    advance_exact(setup, s, t_first + k * P, &watch);  // to the next period start (phase 0)
+    const ObjectState& obj = s.object;
+    if (obj.xd != 0 || obj.x < friction.x_mu()) continue;
+    if (sticks_permanently(friction, peak, obj.x)) {  // eq. (40)
+      r.kind = StopKind::permanent_stick;
+      r.end_position = obj.x;
+      r.process_time = watch.last_stop_time;
+    } else if (map && map->proves_accumulation_from(obj.x)) {  // eqs. (59), (60)
+      r.kind = StopKind::accumulation;
+      r.end_position = map->fixed_point();
+      r.process_time = std::numeric_limits<double>::infinity();
+    }
+  }
+  // Accumulation: keep going (finite for p < 1) until every requested fraction is timed.
+  if (r.kind == StopKind::accumulation)
+    for (int k = 0; k < o.max_periods; ++k) {
+      bool pending = false;
+      for (std::size_t i = 0; i < targets.size(); ++i)
+        pending = pending || (std::isnan(r.time_to_fraction[i]) && targets[i] < r.end_position);
+      if (!pending) break;
+      advance_exact(setup, s, s.object.t + P, &watch);
+    }
+  for (std::size_t i = 0; i < targets.size(); ++i)
+    if (!std::isnan(r.time_to_fraction[i]) && !std::isnan(r.entry_time))
+      r.periods_to_fraction[i] =
+          static_cast<int>(std::ceil((r.time_to_fraction[i] - r.entry_time) / P - 1e-12));
+  return r;
+}
+
+}  // namespace selfalign
