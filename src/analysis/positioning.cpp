@@ -59,13 +59,14 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, double wid
     const StoppingRun& run = r.runs.back();
     if (run.kind == StopKind::not_stopped) {
       r.all_stopped = false;
+      if (o.stop_at_first_failure) break;
       continue;
     }
     r.accumulating_entries += run.kind == StopKind::accumulation;
     r.overshoot_min = std::min(r.overshoot_min, run.end_position - r.x_mu);
     r.overshoot_max = std::max(r.overshoot_max, run.end_position - r.x_mu);
   }
-  r.accumulates = r.accumulating_entries == o.entries;
+  r.accumulates = r.all_stopped && r.accumulating_entries == o.entries;
   if (r.all_stopped) {
     r.dx_d = 0.5 * (r.overshoot_max - r.overshoot_min);  // eq. (39)
     r.x_d = r.x_mu + r.overshoot_min + r.dx_d;
@@ -88,6 +89,7 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
   std::vector<PositioningCell> cells(a2.size() * a3.size());
   PositioningOptions per_cell = o;
   per_cell.stopping.fractions = {0.99, 0.999};
+  per_cell.stop_at_first_failure = true;
   detail::parallel_cells(cells.size(), sweep, [&](std::size_t k) {
     PositioningCell& c = cells[k];
     c.a2 = a2[k / a3.size()];

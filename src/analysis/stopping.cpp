@@ -90,9 +90,12 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
   ExactState s = make_exact_state(setup, start);
   StopWatch watch(friction.x_mu(), targets, r);
   const double t_first = (static_cast<double>(s.period_index) + 1) * P;
+  ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
     advance_exact(setup, s, t_first + k * P, &watch);  // to the next period start (phase 0)
     const ObjectState& obj = s.object;
+    if (obj.x == previous.x && obj.xd == previous.xd) break;  // periodic orbit, not a stop
+    previous = obj;
     if (obj.xd != 0 || obj.x < friction.x_mu()) continue;
     if (sticks_permanently(friction, peak, obj.x)) {  // eq. (40)
       r.kind = StopKind::permanent_stick;

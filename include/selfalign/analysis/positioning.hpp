@@ -21,6 +21,9 @@ namespace selfalign {
 struct PositioningOptions {
   int entries = 100;          ///< number N of steady-state entries, >= 1
   StoppingOptions stopping;   ///< per entry
+  /// Skip the remaining entries once one does not stop (Δx_d is then undefined anyway);
+  /// positioning_surfaces sets it.
+  bool stop_at_first_failure = false;
   SteadyStateOptions steady;
 };
 
@@ -58,7 +61,10 @@ struct PositioningCell {
 };
 
 /// Fig. 17 over the grid a2 x a3 (row-major, a2 outer) at (Δt, Δy, w, c_mu); parallel,
-/// deterministic (SweepOptions as for sweep_accelerations).
+/// deterministic (SweepOptions as for sweep_accelerations). Cells whose object never comes to
+/// rest (e.g. y3'' > y2'': it rattles in the transition region, never reaching the x where
+/// m >= y3'') get Δx_d = NaN; options.stopping.max_periods bounds the search per entry (a few
+/// hundred periods is far beyond the few periods a stop takes).
 std::vector<PositioningCell> positioning_surfaces(double period, double stroke, double width,
                                                   double c_mu, const std::vector<double>& a2,
                                                   const std::vector<double>& a3,

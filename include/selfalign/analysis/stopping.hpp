@@ -28,6 +28,8 @@ const char* to_string(StopKind kind);
 
 struct StoppingOptions {
   int max_periods = 10'000;      ///< give up after this many table periods
+  // A run also ends, not stopped, when the state at a period start repeats exactly: the
+  // object is on a periodic orbit that never comes to rest.
   /// Fractions p for which the time to reach x_mu + p (x_stick,min - x_mu) is reported.
   std::vector<double> fractions{0.99, 0.999};
 };
