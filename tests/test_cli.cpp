@@ -3,18 +3,14 @@
 // on error, and the outputs of good runs (CSV, JSON summary, config files, SI units, methods).
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "cli_sandbox.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/units.hpp"
 #include "temp_dir.hpp"
@@ -27,8 +23,10 @@ TEST(CliSimulate, NeedsTheCli) { GTEST_SKIP() << "built without the CLI (SELFALI
 #else
 
 using nlohmann::json;
+using testing::CliResult;
+using testing::CliSandbox;
+using testing::lines;
 using testing::read_text;
-using testing::TempDir;
 using testing::write_text;
 
 // The exact solver computes the same arcs from SI inputs converted to [-] as from [-] inputs;
@@ -37,57 +35,6 @@ constexpr double kSiAgreement = 1e-9;
 // Moreau time-stepping is first order; with h = 1e-3 over 2 periods it stays within 1e-4 of the
 // exact solution here (observed 4e-5), so 1e-3 is a safe bound that still catches a wrong model.
 constexpr double kTimeSteppingAgreement = 1e-3;
-
-struct CliResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// A temporary root; the CLI runs in root/work (which must hold only the run's outputs), and
-// config files and the captured stdout / stderr live in root.
-class CliSandbox {
- public:
-  CliSandbox() { std::filesystem::create_directory(work()); }
-  std::filesystem::path work() const { return root_.path() / "work"; }
-  std::string file(const std::string& name) const { return root_.file(name); }
-  std::string work_file(const std::string& name) const { return (work() / name).string(); }
-
-  CliResult run(const std::vector<std::string>& args) const {
-    std::string command = "cd " + quote(work().string()) + " && " + quote(SELFALIGN_CLI_PATH);
-    for (const std::string& a : args) command += " " + quote(a);
-    command += " >" + quote(file("stdout.txt")) + " 2>" + quote(file("stderr.txt"));
-    const int status = std::system(command.c_str());
-    CliResult r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = read_text(file("stdout.txt"));
-    r.err = read_text(file("stderr.txt"));
-    return r;
-  }
-
-  std::vector<std::string> work_entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : std::filesystem::directory_iterator(work()))
-      names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  TempDir root_;
-};
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
 
 // Column `column` of a CSV row.
 double csv_field(const std::string& row, int column) {

@@ -296,6 +296,70 @@ TEST(BuildSimulateModel, SiInputsAreConvertedWithOneScales) {
   EXPECT_TRUE(m.output_units().si());
 }
 
+TEST(BuildProfileModel, CaseZeroIsAValueOnlyWhenAllowed) {
+  SimulateConfig c;
+  c.a2 = 0.5;  // Appendix: 1/a2 + 1/a3 = 4 > Δt^2/(8 Δy) = 1.49, case 0
+  c.a3 = 0.5;
+  const ProfileModel m = build_profile_model(c, NonPhysicalProfile::allow);
+  EXPECT_EQ(m.profile, nullptr);
+  ASSERT_TRUE(m.three_phase);
+  EXPECT_EQ(m.three_phase->a2, 0.5);
+  EXPECT_EQ(m.three_phase->stroke, 0.084);
+  expect_invalid([&] { build_profile_model(c); }, "a2, a3");
+  // Misuse stays misuse, also when case 0 is allowed.
+  c.a2 = -1;
+  expect_invalid([&] { build_profile_model(c, NonPhysicalProfile::allow); }, "a2");
+}
+
+TEST(BuildProfileModel, IgnoresFrictionInitialStateAndSolverKeys) {
+  SimulateConfig c;
+  c.width = 0;  // misuse for simulate, unused here
+  c.c_mu = 0.5;
+  c.periods = -1;
+  c.method = "rk4";
+  const ProfileModel m = build_profile_model(c);
+  ASSERT_NE(m.profile, nullptr);
+  EXPECT_EQ(m.profile->kind(), "three-phase");
+  c.profile = "quadratic-sequence";
+  c.durations = {0.5, 0.25, 0.25};
+  c.accelerations = {0.0, -1.0, 1.0};
+  const ProfileModel q = build_profile_model(c);
+  EXPECT_EQ(q.profile->kind(), "quadratic-sequence");
+  EXPECT_FALSE(q.three_phase);
+}
+
+TEST(BuildProfileModel, SiInputsConvertedWithOneScales) {
+  const Scales s(2e-3, 0.2, 9.8);
+  SimulateConfig c;
+  c.units = "si";
+  c.length_scale = 2e-3;
+  c.mu = 0.2;
+  c.g = 9.8;
+  c.stroke = 0.084 * 2e-3;
+  const ProfileModel m = build_profile_model(c);
+  EXPECT_NEAR(m.three_phase->stroke, 0.084, kRoundTripTolerance);
+  EXPECT_NEAR(m.three_phase->a2, 2.3, kRoundTripTolerance);  // default, converted both ways
+  EXPECT_NEAR(m.to_model_units(Dimension::velocity, s.velocity()), 1.0, kRoundTripTolerance);
+  EXPECT_NEAR(m.to_model_units(Dimension::time, 3 * s.time()), 3.0, kRoundTripTolerance);
+  EXPECT_EQ(m.to_model_units(Dimension::none, 0.7), 0.7);
+  EXPECT_TRUE(m.output_units().si());
+  c.stroke = -1e-4;
+  const std::string e = expect_invalid([&] { build_profile_model(c); }, "stroke");
+  EXPECT_NE(e.find("-1e-04 [m]"), std::string::npos) << e;  // restated in SI
+}
+
+TEST(ConvertOneValue, ToSiAndBackByDimension) {
+  const Scales s(2e-3, 0.2, 9.8);
+  EXPECT_DOUBLE_EQ(to_si(Dimension::length, 0.5, s), 1e-3);
+  EXPECT_DOUBLE_EQ(to_si(Dimension::time, 2.0, s), 2 * s.time());
+  EXPECT_DOUBLE_EQ(to_si(Dimension::velocity, 1.0, s), s.velocity());
+  EXPECT_DOUBLE_EQ(to_si(Dimension::acceleration, 1.0, s), 0.2 * 9.8);
+  EXPECT_EQ(to_si(Dimension::none, 0.3, s), 0.3);
+  for (Dimension d : {Dimension::length, Dimension::time, Dimension::velocity,
+                      Dimension::acceleration})
+    EXPECT_NEAR(to_dimensionless(d, to_si(d, 0.37, s), s), 0.37, kRoundTripTolerance);
+}
+
 TEST(AtomicFileSet, CommitsAllOrNothing) {
   TempDir dir;
   {

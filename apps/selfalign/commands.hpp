@@ -10,5 +10,13 @@ namespace selfalign::cli {
 
 /// `selfalign simulate`: one run from a config file and/or flags (cmd_simulate.cpp).
 void add_simulate_command(CLI::App& app);
+/// `selfalign steady`: steady state, motion case, v̄ and f on the uniform table (cmd_steady.cpp).
+void add_steady_command(CLI::App& app);
+/// `selfalign floquet`: Floquet multipliers of the steady state, three ways (cmd_floquet.cpp).
+void add_floquet_command(CLI::App& app);
+/// `selfalign converge`: convergence of two velocity responses, eq. (35) (cmd_converge.cpp).
+void add_converge_command(CLI::App& app);
+/// `selfalign sweep accelerations|period|stroke`: parameter studies (cmd_sweep*.cpp).
+void add_sweep_command(CLI::App& app);
 
 }  // namespace selfalign::cli

@@ -25,6 +25,10 @@ int report_error(const std::string& message) {
 // Subcommands, in help order. A new subcommand adds its cmd_<name>.cpp and one line here.
 constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_simulate_command,
+    &selfalign::cli::add_steady_command,
+    &selfalign::cli::add_floquet_command,
+    &selfalign::cli::add_converge_command,
+    &selfalign::cli::add_sweep_command,
 };
 
 }  // namespace

@@ -16,25 +16,18 @@ namespace {
 const std::string kStdout = "-";  // summary destination meaning standard output
 using D = Dimension;
 
-double convert(Dimension d, double v, const Scales& s, bool to_si) {
-  switch (d) {
-    case D::length: return to_si ? s.length_to_si(v) : s.length_from_si(v);
-    case D::time: return to_si ? s.time_to_si(v) : s.time_from_si(v);
-    case D::velocity: return to_si ? s.velocity_to_si(v) : s.velocity_from_si(v);
-    case D::acceleration: return to_si ? s.acceleration_to_si(v) : s.acceleration_from_si(v);
-    case D::none: break;
-  }
-  return v;
+double convert(Dimension d, double v, const Scales& s, bool si) {
+  return si ? to_si(d, v, s) : to_dimensionless(d, v, s);
 }
 
-SimulateConfig convert_config(const SimulateConfig& config, const Scales& scales, bool to_si) {
+SimulateConfig convert_config(const SimulateConfig& config, const Scales& scales, bool si) {
   SimulateConfig r = config;
   for (const ConfigKey& key : simulate_config_keys()) {
     if (key.dimension == D::none) continue;
     if (auto* f = std::get_if<NumberField>(&key.field); f && (r.**f))
-      *(r.**f) = convert(key.dimension, *(r.**f), scales, to_si);
+      *(r.**f) = convert(key.dimension, *(r.**f), scales, si);
     if (auto* f = std::get_if<NumberListField>(&key.field); f && (r.**f))
-      for (double& v : *(r.**f)) v = convert(key.dimension, v, scales, to_si);
+      for (double& v : *(r.**f)) v = convert(key.dimension, v, scales, si);
   }
   return r;
 }
@@ -55,6 +48,28 @@ bool parse_number(std::string_view text, double& out) {
 }
 
 }  // namespace
+
+double to_si(Dimension d, double v, const Scales& s) {
+  switch (d) {
+    case D::length: return s.length_to_si(v);
+    case D::time: return s.time_to_si(v);
+    case D::velocity: return s.velocity_to_si(v);
+    case D::acceleration: return s.acceleration_to_si(v);
+    case D::none: break;
+  }
+  return v;
+}
+
+double to_dimensionless(Dimension d, double v, const Scales& s) {
+  switch (d) {
+    case D::length: return s.length_from_si(v);
+    case D::time: return s.time_from_si(v);
+    case D::velocity: return s.velocity_from_si(v);
+    case D::acceleration: return s.acceleration_from_si(v);
+    case D::none: break;
+  }
+  return v;
+}
 
 SimulateConfig simulate_config_defaults() {
   SimulateConfig d;

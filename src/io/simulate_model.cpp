@@ -11,23 +11,27 @@ namespace selfalign {
 namespace {
 
 // The samples CSV, converted to [-] in SI runs ((s, m/s^2) -> (t/T, y''/(mu g))).
-AccelerationSamples load_samples(const SimulateConfig& c, const SimulateModel& m) {
+AccelerationSamples load_samples(const SimulateConfig& c, UnitSystem units, const Scales& scales) {
   if (!c.samples)
     throw InvalidParameter("samples", "none", "must name a CSV file of 't,ydd' rows when "
                                               "profile = samples");
   AccelerationSamples s = read_acceleration_samples(*c.samples);
-  if (m.units == UnitSystem::si) {
-    for (double& t : s.t) t = m.scales.time_from_si(t);
-    for (double& a : s.ydd) a = m.scales.acceleration_from_si(a);
+  if (units == UnitSystem::si) {
+    for (double& t : s.t) t = scales.time_from_si(t);
+    for (double& a : s.ydd) a = scales.acceleration_from_si(a);
   }
   return s;
 }
 
+ThreePhaseParameters three_phase_parameters(const SimulateConfig& c) {
+  return {*c.period, *c.stroke, *c.a2, *c.a3};
+}
+
 // The table profile named by `profile`, from dimensionless values.
-std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, const SimulateModel& m) {
+std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem units,
+                                           const Scales& scales) {
   const std::string& kind = *c.profile;
-  if (kind == "three-phase")
-    return std::make_unique<ThreePhaseProfile>(ThreePhaseParameters{*c.period, *c.stroke, *c.a2, *c.a3});
+  if (kind == "three-phase") return std::make_unique<ThreePhaseProfile>(three_phase_parameters(c));
   if (kind == "quadratic-sequence") {
     if (c.durations->empty())
       throw InvalidParameter("durations", "none",
@@ -38,7 +42,8 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, const Simula
   if (kind == "fourier")
     return std::make_unique<FourierProfile>(*c.period, *c.fourier_cos, *c.fourier_sin);
   if (kind == "samples")
-    return make_sampled_profile(load_samples(c, m), parse_interpolation(*c.interpolation));
+    return make_sampled_profile(load_samples(c, units, scales),
+                                parse_interpolation(*c.interpolation));
   throw InvalidParameter("profile", kind,
                          "must be one of: three-phase, quadratic-sequence, fourier, samples");
 }
@@ -59,7 +64,7 @@ void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.options.theta = *c.theta;
   m.options.output_step = require_non_negative("output_step", *c.output_step);
   m.friction = make_friction(c);
-  m.profile = make_profile(c, m);
+  m.profile = make_profile(c, m.units, m.scales);
   m.initial = {require_finite("t0", *c.t0), require_finite("x0", *c.x0),
                require_finite("v0", *c.v0)};
   m.options.duration = m.periods * m.profile->period();
@@ -100,6 +105,27 @@ SimulateModel build_simulate_model(const SimulateConfig& config) {
     build_physics(to_dimensionless(resolved, m.scales), m);
   } catch (const InvalidParameter& e) {
     throw in_si_terms(e, resolved, m.scales);
+  }
+  return m;
+}
+
+ProfileModel build_profile_model(const SimulateConfig& config, NonPhysicalProfile non_physical) {
+  const SimulateConfig resolved = resolve_simulate_config(config);
+  ProfileModel m{parse_unit_system(*resolved.units),
+                 Scales(*resolved.length_scale, *resolved.mu, *resolved.g), nullptr, {}};
+  const bool si = m.units == UnitSystem::si;
+  try {
+    const SimulateConfig c = si ? to_dimensionless(resolved, m.scales) : resolved;
+    if (*c.profile == "three-phase") {
+      const ThreePhaseParameters p = three_phase_parameters(c);
+      validate(p);
+      m.three_phase = p;
+      if (non_physical == NonPhysicalProfile::allow && !solve_three_phase(p).physical) return m;
+    }
+    m.profile = make_profile(c, m.units, m.scales);
+  } catch (const InvalidParameter& e) {
+    if (si) throw in_si_terms(e, resolved, m.scales);
+    throw;
   }
   return m;
 }

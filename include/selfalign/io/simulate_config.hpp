@@ -119,6 +119,11 @@ void set_simulate_config_value(SimulateConfig& config, std::string_view key,
 /// `base` with every key set in `overrides` replaced (file values, then flags).
 SimulateConfig merge(const SimulateConfig& base, const SimulateConfig& overrides);
 
+/// One value of dimension `d` converted from dimensionless to SI, and from SI to dimensionless
+/// (Sect. 3.2); values of Dimension::none are returned unchanged.
+double to_si(Dimension d, double value, const Scales& scales);
+double to_dimensionless(Dimension d, double value, const Scales& scales);
+
 /// Converts every dimensional key (Dimension != none; numbers and arrays) from dimensionless
 /// to SI with `scales`. Other keys are copied. The samples file is not touched.
 SimulateConfig to_si(const SimulateConfig& config, const Scales& scales);

@@ -1,14 +1,17 @@
 #pragma once
 /// \file simulate_model.hpp
 /// From a SimulateConfig to the model objects of one run, in dimensionless units (Sect. 3.2):
-/// the table profile, the friction map, the initial state and the solver options.
+/// the table profile, the friction map, the initial state and the solver options
+/// (SimulateModel), or the table profile alone for the analyses (ProfileModel).
 
 #include <memory>
+#include <optional>
 
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/unit_system.hpp"
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/object_state.hpp"
 #include "selfalign/simulate/simulate.hpp"
 #include "selfalign/units.hpp"
@@ -38,5 +41,38 @@ struct SimulateModel {
 /// three-phase request throws naming "a2, a3". Keys the chosen profile or friction map does
 /// not use are ignored.
 SimulateModel build_simulate_model(const SimulateConfig& config);
+
+/// The table profile of a run and its unit system, for the analyses of the uniform table
+/// (steady state, Floquet multipliers, convergence, sweeps), which take no friction map,
+/// initial state or solver settings: those keys are ignored (not validated).
+struct ProfileModel {
+  UnitSystem units;                        ///< the run's input/output unit system
+  Scales scales;                           ///< L, mu, g (used for I/O only in SI runs)
+  /// [-]; null only for a non-physical (case 0) three-phase request built with
+  /// NonPhysicalProfile::allow.
+  std::unique_ptr<TableProfile> profile;
+  /// The three-phase parameters [-] when profile = three-phase (physical or not), else none.
+  std::optional<ThreePhaseParameters> three_phase;
+
+  /// Converts results back to the run's unit system.
+  OutputUnits output_units() const {
+    return units == UnitSystem::si ? OutputUnits(scales) : OutputUnits();
+  }
+  /// A value of dimension `d` given in the run's unit system, in dimensionless units [-].
+  double to_model_units(Dimension d, double value) const {
+    return units == UnitSystem::si ? to_dimensionless(d, value, scales) : value;
+  }
+};
+
+/// What build_profile_model does with a three-phase request that has no solution (case 0).
+enum class NonPhysicalProfile {
+  reject,  ///< throw InvalidParameter naming "a2, a3", as build_simulate_model does
+  allow    ///< return it as a value: profile null, three_phase set
+};
+
+/// Resolves defaults, converts SI inputs with one Scales and builds the table profile; errors
+/// are reported like build_simulate_model's (SI values restated in SI).
+ProfileModel build_profile_model(const SimulateConfig& config,
+                                 NonPhysicalProfile non_physical = NonPhysicalProfile::reject);
 
 }  // namespace selfalign

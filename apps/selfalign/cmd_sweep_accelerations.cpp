@@ -1,0 +1,115 @@
+// `selfalign sweep accelerations`: f (eq. 11), v̄ (eq. 10) and the motion case (a priori and
+// from the steady period) over a (y2'', y3'') grid of the three-phase profile at the config's
+// Δt and Δy (Figs. 10, 11; --log for the Fig. 11 style plane).
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "report.hpp"
+#include "sweep_common.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+using D = Dimension;
+
+struct AccelerationFlags {
+  std::shared_ptr<SweepFlags> common;
+  std::string a2_range, a3_range;
+};
+
+// Header "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged"; a2, a3 as on the grid (run
+// units), row-major with a2 outer, as the library orders the cells.
+std::string cells_csv(const std::vector<AccelerationCell>& cells, const std::vector<double>& a2,
+                      const std::vector<double>& a3, const OutputUnits& u) {
+  std::string csv = "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged\n";
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const AccelerationCell& c = cells[k];
+    csv += csv_number(a2[k / a3.size()]) + ',' + csv_number(a3[k % a3.size()]) + ',' +
+           std::to_string(static_cast<int>(c.predicted)) + ',' +
+           std::to_string(static_cast<int>(c.observed)) + ',' + csv_number(u.velocity(c.v_bar)) +
+           ',' + csv_number(c.f) + ',' + csv_number(u.velocity(c.x_dot_0s)) + ',' +
+           (c.converged ? "1" : "0") + '\n';
+  }
+  return csv;
+}
+
+json cells_summary(const SimulateConfig& config, const ProfileModel& model,
+                   const AccelerationFlags& f, const GridRange& r2, const GridRange& r3,
+                   const std::vector<AccelerationCell>& cells) {
+  const SimulateConfig given = resolve_simulate_config(config);  // Δt, Δy as given (run units)
+  std::vector<StickSlipCase> observed, predicted;
+  int disagreements = 0, not_converged = 0;
+  for (const AccelerationCell& c : cells) {
+    observed.push_back(c.observed);
+    predicted.push_back(c.predicted);
+    if (c.observed != c.predicted) ++disagreements;
+    if (c.predicted != StickSlipCase::non_physical && !c.converged) ++not_converged;
+  }
+  json j;
+  j["sweep"] = "accelerations";
+  j["units"] = to_string(model.units);
+  j["family"] = "three-phase";
+  j["period"] = *given.period;
+  j["stroke"] = *given.stroke;
+  j["grid"] = {{"a2", grid_json(r2)},
+               {"a3", grid_json(r3)},
+               {"spacing", f.common->log ? "log" : "linear"},
+               {"order", "row-major, a2 outer"}};
+  j["cells"] = cells.size();
+  j["cases"] = case_counts(observed);
+  j["cases_a_priori"] = case_counts(predicted);
+  j["a_priori_disagreements"] = disagreements;
+  j["not_converged"] = not_converged;
+  return j;
+}
+
+void run_sweep_accelerations(const AccelerationFlags& f) {
+  const SimulateConfig config = read_config(*f.common->config);
+  const SweepPaths paths = resolve_sweep_paths(config);
+  const ProfileModel model = sweep_model(config);
+  const GridRange r2 = parse_grid_range("a2-range", f.a2_range);
+  const GridRange r3 = parse_grid_range("a3-range", f.a3_range);
+  const std::vector<double> a2 = positive_grid("a2-range", r2, f.common->log, "y2''");
+  const std::vector<double> a3 = positive_grid("a3-range", r3, f.common->log, "y3''");
+  std::vector<double> a2_model, a3_model;  // [-]
+  for (double v : a2) a2_model.push_back(model.to_model_units(D::acceleration, v));
+  for (double v : a3) a3_model.push_back(model.to_model_units(D::acceleration, v));
+
+  const ThreePhaseParameters& p = *model.three_phase;
+  std::vector<AccelerationCell> cells;
+  {
+    const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
+    cells = sweep_accelerations(p.period, p.stroke, a2_model, a3_model,
+                                sweep_options(*f.common, *bar));
+  }
+  write_sweep_outputs(paths, cells_csv(cells, a2, a3, model.output_units()),
+                      cells_summary(config, model, f, r2, r3, cells));
+}
+
+}  // namespace
+
+void add_sweep_accelerations_command(CLI::App& sweep) {
+  CLI::App* sub = sweep.add_subcommand(
+      "accelerations",
+      "f, v_bar and the motion case (a priori and simulated) over a grid of the three-phase "
+      "profile's (y2'', y3'') at the config's period and stroke (Figs. 10, 11). CSV "
+      "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged; rows a2-major.");
+  auto f = std::make_shared<AccelerationFlags>();
+  f->common = add_sweep_flags(*sub);
+  sub->add_option("--a2-range", f->a2_range,
+                  "y2'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
+      ->type_name("LO:HI:N")
+      ->required()
+      ->group("Sweep");
+  sub->add_option("--a3-range", f->a3_range,
+                  "y3'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
+      ->type_name("LO:HI:N")
+      ->required()
+      ->group("Sweep");
+  sub->callback([f] { run_sweep_accelerations(*f); });
+}
+
+}  // namespace selfalign::cli

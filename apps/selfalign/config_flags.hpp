@@ -1,0 +1,39 @@
+#pragma once
+// The config keys of include/selfalign/io/simulate_config.hpp as CLI flags (key c_mu <-> flag
+// --c-mu) plus --config FILE, shared by every subcommand that describes a table motion, so all
+// take the same flags. Flags override the file.
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "selfalign/io/simulate_config.hpp"
+
+namespace selfalign::cli {
+
+/// The flags' values as typed, filled in by CLI11 during parsing.
+struct ConfigFlags {
+  std::string config_file;
+  std::vector<std::string> values;    // one per simulate_config_keys() entry
+  std::vector<CLI::Option*> options;  // the matching flags; nullptr: not offered for this command
+};
+
+/// A command's own wording for a key (e.g. what --out writes), or leaving a key out.
+struct KeyFlag {
+  std::string_view key;   ///< config key name, e.g. "out"
+  std::string_view help;  ///< help text replacing the key table's; empty: no flag for this key
+};
+
+/// Adds --config and one flag per config key to `command`, in the key table's groups.
+/// `overrides` rewords or removes keys whose meaning differs for this command (a key without a
+/// flag is still accepted, and ignored, in a --config file).
+std::shared_ptr<ConfigFlags> add_config_flags(CLI::App& command,
+                                              const std::vector<KeyFlag>& overrides = {});
+
+/// The config file (if any) with the given flags applied over it.
+SimulateConfig read_config(const ConfigFlags& flags);
+
+}  // namespace selfalign::cli

@@ -1,0 +1,57 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
+
+namespace selfalign::cli {
+
+nlohmann::json number_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+std::string csv_number(double value) { return format_number(value); }
+
+std::string unit_label(UnitSystem units, Dimension d) {
+  if (units == UnitSystem::dimensionless) return "[-]";
+  switch (d) {
+    case Dimension::length: return "m";
+    case Dimension::time: return "s";
+    case Dimension::velocity: return "m/s";
+    case Dimension::acceleration: return "m/s^2";
+    case Dimension::none: break;
+  }
+  return "[-]";
+}
+
+std::string TextTable::str() const {
+  std::size_t width = 0;
+  for (const auto& [label, value] : rows_) width = std::max(width, label.size());
+  std::string text;
+  for (const auto& [label, value] : rows_)
+    text += label + std::string(width - label.size() + 2, ' ') + value + '\n';
+  return text;
+}
+
+std::string table_text(const nlohmann::json& value) {
+  if (value.is_null()) return "-";
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_number_float()) return format_number(value.get<double>());
+  return value.dump();
+}
+
+void deliver_report(const nlohmann::json& report, const std::string& table, bool as_json,
+                    const std::optional<std::string>& out) {
+  const std::string text = report.dump(2) + "\n";
+  if (out) {
+    if (out->empty()) throw InvalidParameter("out", "\"\"", "must be a file path");
+    write_file_atomically(*out, text);
+    return;
+  }
+  std::cout << (as_json ? text : table) << std::flush;
+}
+
+}  // namespace selfalign::cli

@@ -1,0 +1,48 @@
+#pragma once
+// Formatting shared by the analysis subcommands: numbers for CSV and JSON, unit labels and a
+// two-column table for human-readable output, and delivering a JSON report.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "selfalign/io/simulate_config.hpp"
+#include "selfalign/io/unit_system.hpp"
+
+namespace selfalign::cli {
+
+/// The value as a JSON number, or null for NaN and ±inf (JSON has neither).
+nlohmann::json number_or_null(double value);
+
+/// A CSV field: shortest text that reads back as the same double; "nan", "inf", "-inf".
+std::string csv_number(double value);
+
+/// "[-]" in dimensionless runs; in SI runs the unit of `d` ("s", "m", "m/s", "m/s^2"; "[-]"
+/// for Dimension::none).
+std::string unit_label(UnitSystem units, Dimension d);
+
+/// A two-column text table: labels padded to a common width.
+class TextTable {
+ public:
+  void row(std::string label, std::string value) {
+    rows_.emplace_back(std::move(label), std::move(value));
+  }
+  std::string str() const;
+
+ private:
+  std::vector<std::pair<std::string, std::string>> rows_;
+};
+
+/// A JSON value as table text: numbers round-trip, null as "-", strings unquoted.
+std::string table_text(const nlohmann::json& value);
+
+/// Delivers a JSON report: to the file `out` when given (atomically; nothing printed), else to
+/// stdout as JSON (as_json) or as the human-readable `table`. Throws InvalidParameter for an
+/// empty path or a file that cannot be written.
+void deliver_report(const nlohmann::json& report, const std::string& table, bool as_json,
+                    const std::optional<std::string>& out);
+
+}  // namespace selfalign::cli

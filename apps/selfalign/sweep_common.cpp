@@ -1,0 +1,121 @@
+#include "sweep_common.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+
+#include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+const char kRangeForm[] = "must be LO:HI:N with numbers LO, HI and a whole number N >= 1";
+
+// The whole of `text` as a number of type T (C locale).
+template <class T>
+bool parse_whole(std::string_view text, T& out) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty()) return false;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return ec == std::errc{} && end == text.data() + text.size();
+}
+
+}  // namespace
+
+GridRange parse_grid_range(const std::string& name, const std::string& text) {
+  GridRange r;
+  r.text = text;
+  const std::size_t first = text.find(':');
+  const std::size_t second = first == std::string::npos ? first : text.find(':', first + 1);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos)
+    throw InvalidParameter(name, text, kRangeForm);
+  const std::string_view all(text);
+  if (!parse_whole(all.substr(0, first), r.lo) ||
+      !parse_whole(all.substr(first + 1, second - first - 1), r.hi) ||
+      !parse_whole(all.substr(second + 1), r.n) || r.n < 1)
+    throw InvalidParameter(name, text, kRangeForm);
+  return r;
+}
+
+std::vector<double> positive_grid(const std::string& name, const GridRange& range, bool log,
+                                  const std::string& what) {
+  if (!(range.lo > 0 && range.hi > 0 && std::isfinite(range.lo) && std::isfinite(range.hi)))
+    throw InvalidParameter(name, range.text, what + " must be > 0 (LO and HI finite and > 0)");
+  return log ? log_grid(range.lo, range.hi, range.n) : linear_grid(range.lo, range.hi, range.n);
+}
+
+nlohmann::json grid_json(const GridRange& range) {
+  return {{"lo", range.lo}, {"hi", range.hi}, {"n", range.n}};
+}
+
+nlohmann::json case_counts(const std::vector<StickSlipCase>& cases) {
+  nlohmann::json counts;
+  for (int c = 0; c <= 5; ++c) counts[std::to_string(c)] = 0;
+  for (StickSlipCase c : cases) {
+    auto& n = counts[std::to_string(static_cast<int>(c))];
+    n = n.get<int>() + 1;
+  }
+  return counts;
+}
+
+std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command) {
+  auto flags = std::make_shared<SweepFlags>();
+  flags->config = add_config_flags(
+      command, {{"out", "CSV file of the results (default: standard output)"},
+                {"summary", "summary JSON file, - for stdout (default: <out without extension>"
+                            ".summary.json when out is given, else none)"}});
+  command.add_option("--threads", flags->threads, "worker threads, >= 0; 0: all cores")
+      ->type_name("INT")
+      ->group("Sweep");
+  command.add_flag("--quiet", flags->quiet, "no progress bar (drawn only when stderr is a "
+                                            "terminal)")
+      ->group("Sweep");
+  command.add_flag("--log", flags->log, "log-spaced grid values (default: linear)")
+      ->group("Sweep");
+  return flags;
+}
+
+ProfileModel sweep_model(const SimulateConfig& config) {
+  SimulateConfig three_phase = config;
+  three_phase.profile = "three-phase";
+  return build_profile_model(three_phase, NonPhysicalProfile::allow);
+}
+
+SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar) {
+  SweepOptions o;
+  o.threads = flags.threads;
+  o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
+  return o;
+}
+
+std::unique_ptr<ProgressBar> sweep_progress_bar(const SweepFlags& flags) {
+  return std::make_unique<ProgressBar>(std::cerr, !flags.quiet && stderr_is_terminal());
+}
+
+SweepPaths resolve_sweep_paths(const SimulateConfig& config) {
+  SweepPaths paths;
+  if (!config.out && !config.summary) return paths;  // CSV to stdout, no summary
+  if (!config.out && *config.summary == "-")
+    throw InvalidParameter("summary", "-",
+                           "cannot share standard output with the CSV: give --out FILE.csv");
+  const OutputPaths resolved = resolve_output_paths(config);
+  paths.csv = resolved.trajectory;
+  paths.summary_to_stdout = resolved.summary_to_stdout();
+  if (!paths.summary_to_stdout) paths.summary = resolved.summary;
+  return paths;
+}
+
+void write_sweep_outputs(const SweepPaths& paths, const std::string& csv,
+                         nlohmann::json summary) {
+  summary["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
+  const std::string summary_text = summary.dump(2) + "\n";
+  AtomicFileSet files;
+  if (paths.csv) files.add(*paths.csv, csv);
+  if (paths.summary) files.add(*paths.summary, summary_text);
+  files.commit();
+  if (!paths.csv) std::cout << csv << std::flush;
+  if (paths.summary_to_stdout) std::cout << summary_text << std::flush;
+}
+
+}  // namespace selfalign::cli

@@ -1,0 +1,85 @@
+#pragma once
+// The parts every `selfalign sweep` subcommand shares: grid ranges "LO:HI:N", the common flags
+// (config keys, --threads, --quiet, --log), the library's sweep options with a progress bar,
+// and writing the CSV with its JSON summary. The subcommands are cmd_sweep_*.cpp.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "config_flags.hpp"
+#include "progress_bar.hpp"
+#include "selfalign/analysis/sweep.hpp"
+#include "selfalign/io/simulate_model.hpp"
+
+namespace selfalign::cli {
+
+/// A grid "LO:HI:N": N values from LO to HI inclusive, in the run's unit system.
+struct GridRange {
+  std::string text;  ///< as typed
+  double lo = 0, hi = 0;
+  int n = 0;
+};
+
+/// Parses "LO:HI:N" (numbers LO, HI in C-locale; a whole number N >= 1). Throws
+/// InvalidParameter(name, text, ...) otherwise.
+GridRange parse_grid_range(const std::string& name, const std::string& text);
+
+/// The grid's values, linear or log-spaced (library linear_grid / log_grid). LO and HI must be
+/// > 0 (every swept quantity is): throws InvalidParameter(name, text, "<what> must be > 0").
+std::vector<double> positive_grid(const std::string& name, const GridRange& range, bool log,
+                                  const std::string& what);
+
+/// {"lo", "hi", "n"} of a range.
+nlohmann::json grid_json(const GridRange& range);
+
+/// Number of results per Table 1 case, {"0": n0, ..., "5": n5}.
+nlohmann::json case_counts(const std::vector<StickSlipCase>& cases);
+
+/// Flags common to every sweep.
+struct SweepFlags {
+  std::shared_ptr<ConfigFlags> config;
+  int threads = 0;
+  bool quiet = false;
+  bool log = false;
+};
+
+/// Adds the config-key flags (--out: the CSV) and --threads, --quiet, --log to `command`.
+std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command);
+
+/// The three-phase parameters of the config [-] with their unit system (the sweeps read Δt, Δy,
+/// y2'', y3'' from them; --profile is ignored). A case-0 setting is not an error here.
+ProfileModel sweep_model(const SimulateConfig& config);
+
+/// The library's options: --threads, and progress reported to `bar`.
+SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar);
+
+/// A progress bar on stderr, drawn when stderr is a terminal and --quiet was not given.
+std::unique_ptr<ProgressBar> sweep_progress_bar(const SweepFlags& flags);
+
+/// Where a sweep writes: the CSV to `out`, or stdout when not given; the summary to `summary`
+/// (default <out without extension>.summary.json when out is given, else none; "-" for
+/// stdout, which needs out).
+struct SweepPaths {
+  std::optional<std::string> csv;      ///< none: standard output
+  std::optional<std::string> summary;  ///< none: not written
+  bool summary_to_stdout = false;
+};
+/// Resolves and checks the paths (before any work is done). Throws InvalidParameter.
+SweepPaths resolve_sweep_paths(const SimulateConfig& config);
+
+/// Writes the CSV and the summary, with "csv_file" added; files are committed together
+/// (AtomicFileSet), then standard output is written.
+void write_sweep_outputs(const SweepPaths& paths, const std::string& csv,
+                         nlohmann::json summary);
+
+/// The sweep subcommands, added under `selfalign sweep` (cmd_sweep.cpp).
+void add_sweep_accelerations_command(CLI::App& sweep);  // cmd_sweep_accelerations.cpp
+enum class SweptParameter { period, stroke };
+void add_sweep_family_command(CLI::App& sweep, SweptParameter swept);  // cmd_sweep_family.cpp
+
+}  // namespace selfalign::cli

@@ -1,0 +1,76 @@
+#pragma once
+// Running the real `selfalign` binary (SELFALIGN_CLI_PATH) in a fresh temporary directory, for
+// the CLI tests (test_cli.cpp, test_cli_analysis.cpp): exit code, captured stdout and stderr,
+// and the files a run left behind.
+
+#ifdef SELFALIGN_CLI_PATH
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "temp_dir.hpp"
+
+namespace selfalign::testing {
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+/// `s` single-quoted for the shell.
+inline std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// A temporary root; the CLI runs in root/work (which must hold only the run's outputs), and
+/// config files and the captured stdout / stderr live in root.
+class CliSandbox {
+ public:
+  CliSandbox() { std::filesystem::create_directory(work()); }
+  std::filesystem::path work() const { return root_.path() / "work"; }
+  std::string file(const std::string& name) const { return root_.file(name); }
+  std::string work_file(const std::string& name) const { return (work() / name).string(); }
+
+  CliResult run(const std::vector<std::string>& args) const {
+    std::string command = "cd " + quote(work().string()) + " && " + quote(SELFALIGN_CLI_PATH);
+    for (const std::string& a : args) command += " " + quote(a);
+    command += " >" + quote(file("stdout.txt")) + " 2>" + quote(file("stderr.txt"));
+    const int status = std::system(command.c_str());
+    CliResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(file("stdout.txt"));
+    r.err = read_text(file("stderr.txt"));
+    return r;
+  }
+
+  std::vector<std::string> work_entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(work()))
+      names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+ private:
+  TempDir root_;
+};
+
+/// The lines of `text`, without their newlines.
+inline std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+}  // namespace selfalign::testing
+
+#endif  // SELFALIGN_CLI_PATH
