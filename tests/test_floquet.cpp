@@ -35,6 +35,11 @@ TEST(Floquet, StickingResponsesHaveMultipliersOneAndZero) {
     SCOPED_TRACE(testing::Message() << p.a2 << ", " << p.a3);
     const FloquetAnalysis f = floquet_multipliers(ThreePhaseProfile(p));
     expect_multipliers(f.analytic, 1, 0, 0.0);
+    // Whole matrices: m12 = d x(t3)/d x'_0s is 0 when the period starts in stick (x'_0s = 0)
+    // and the time to the stick otherwise (case 3 here starts sliding back, x'_0s < 0).
+    EXPECT_NEAR(f.analytic.matrix(0, 1), f.saltation.matrix(0, 1), kClosedFormTol);
+    EXPECT_NEAR(f.finite_difference.matrix(0, 1), f.saltation.matrix(0, 1), kFiniteDifferenceTol);
+    if (f.steady.x_dot_0s == 0) EXPECT_EQ(f.analytic.matrix(0, 1), 0.0);
     expect_multipliers(f.saltation, 1, 0, kClosedFormTol);
     expect_multipliers(f.finite_difference, 1, 0, kFiniteDifferenceTol);
     // Eigenvector of 1 is the position direction (eq. 30): the first column is [1, 0].

@@ -129,32 +129,34 @@ FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FloquetOp
 
 FloquetAnalysis floquet_multipliers(const ThreePhaseProfile& profile, const FloquetOptions& o) {
   FloquetAnalysis r = floquet_multipliers(static_cast<const TableProfile&>(profile), o);
-  // 1. Analytic, eqs. (25)-(33).
-  Eigen::Matrix2d a;
-  if (r.steady.motion_case == StickSlipCase::slip_slip) {
-    const ThreePhaseParameters& p = profile.parameters();
-    // m12 = d x(t3) / d x'_0s: a velocity perturbation is carried unchanged along a slip and
-    // scaled by a+/a- at each reversal (the crossings' closed-form times, from the exact arcs).
-    ArcList list;
-    const UniformFriction friction(1.0);
-    const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
-    ExactState s = make_exact_state(setup, {0, 0, r.steady.x_dot_0s});
-    advance_exact(setup, s, p.period, &list);
-    double scale = 1, m12 = 0, t_prev = 0;
-    for (std::size_t i = 0; i < list.arcs.size(); ++i) {
-      const Arc& arc = list.arcs[i];
-      if (arc.end != ArcEnd::velocity_zero) continue;
-      m12 += scale * (arc.t1 - t_prev);
-      const double y_dd = arc.table_accel;  // reversal: x'' = -σ - y'' before, +σ - y'' after
-      const double before = -arc.direction - y_dd, after = arc.direction - y_dd;
-      scale *= after / before;
-      t_prev = arc.t1;
+  // 1. Analytic, eqs. (25)-(33): Φ = [[1, m12], [0, m22]]. A position shift passes through
+  // unchanged; m22 = 0 once the response sticks (eq. 30) and λ2 = c4 of eq. (33) in slip-slip.
+  // m12 = d x(t3)/d x'_0s (eqs. 28, 31): a velocity perturbation rides unchanged along a slip,
+  // is scaled by x''+/x''- = (σ - y'')/(-σ - y'') at a reversal and erased at a stick; the
+  // event times are those of the closed-form steady solution (the exact arcs).
+  const ThreePhaseParameters& p = profile.parameters();
+  ArcList list;
+  const UniformFriction friction(1.0);
+  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  ExactState s = make_exact_state(setup, {0, 0, r.steady.x_dot_0s});
+  advance_exact(setup, s, p.period, &list);
+  double scale = list.arcs.front().kind == ArcKind::stick ? 0 : 1, m12 = 0, t_prev = 0;
+  for (std::size_t i = 0; i + 1 < list.arcs.size() && scale != 0; ++i) {
+    const Arc& arc = list.arcs[i];
+    if (arc.end != ArcEnd::velocity_zero) continue;
+    m12 += scale * (arc.t1 - t_prev);
+    t_prev = arc.t1;
+    if (list.arcs[i + 1].kind == ArcKind::stick) {
+      scale = 0;  // eq. (30): the stick erases the velocity perturbation
+    } else {
+      const double y_dd = arc.table_accel;
+      scale *= (arc.direction - y_dd) / (-arc.direction - y_dd);
     }
-    m12 += scale * (p.period - t_prev);
-    a << 1, m12, 0, slip_slip_multiplier(p.a2, p.a3);
-  } else {
-    a << 1, 0, 0, 0;  // eq. (30): a stick erases velocity perturbations
   }
+  m12 += scale * (p.period - t_prev);
+  const bool slip_slip = r.steady.motion_case == StickSlipCase::slip_slip;
+  Eigen::Matrix2d a;
+  a << 1, m12, 0, slip_slip ? slip_slip_multiplier(p.a2, p.a3) : 0.0;
   r.analytic = make_monodromy(a);
   for (int k = 0; k < 2; ++k) {
     r.spread = std::max(r.spread, std::abs(r.analytic.multipliers[k] - r.saltation.multipliers[k]));

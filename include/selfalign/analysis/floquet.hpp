@@ -1,9 +1,11 @@
 #pragma once
 /// \file floquet.hpp
 /// Floquet multipliers of the steady state on the uniform table, three ways (Sect. 6.1):
-///  1. analytic — the linearised period map of eqs. (25)-(33): Φ = [[1, 0], [0, 0]] for every
-///     response that sticks (cases 1, 2, 3, 5; eq. 30) and Φ = [[1, m12], [0, λ2]] for
-///     slip-slip (case 4; eq. 33) with λ2 = c4 = (y2''-1)(y3''-1) / ((y2''+1)(y3''+1));
+///  1. analytic — the linearised period map of eqs. (25)-(33): Φ = [[1, m12], [0, 0]] for every
+///     response that sticks (cases 1, 2, 3, 5; eq. 30, where m12 = 0 when x'_0s = 0) and
+///     Φ = [[1, m12], [0, λ2]] for slip-slip (case 4; eq. 33) with
+///     λ2 = c4 = (y2''-1)(y3''-1) / ((y2''+1)(y3''+1)); m12 = d x(t3)/d x'_0s from the event
+///     times of the closed-form steady solution;
 ///  2. saltation — the monodromy matrix built from the fundamental solution of every arc of a
 ///     steady period, coupled by saltation matrices at the state events (Leine & Nijmeijer):
 ///        x' = 0 with reversal:   S = diag(1, a+/a-)   (a-: x'' before, a+: x'' after)
