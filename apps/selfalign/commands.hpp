@@ -16,7 +16,14 @@ void add_steady_command(CLI::App& app);
 void add_floquet_command(CLI::App& app);
 /// `selfalign converge`: convergence of two velocity responses, eq. (35) (cmd_converge.cpp).
 void add_converge_command(CLI::App& app);
-/// `selfalign sweep accelerations|period|stroke`: parameter studies (cmd_sweep*.cpp).
+/// `selfalign stop`: one stopping run on the two-region table, Sect. 7 (cmd_stop.cpp).
+void add_stop_command(CLI::App& app);
+/// `selfalign accuracy`: positioning accuracy, Sect. 7.1, eq. (39) (cmd_accuracy.cpp).
+void add_accuracy_command(CLI::App& app);
+/// `selfalign accumulation`: the stick-position map, eqs. (59), (60) (cmd_accumulation.cpp).
+void add_accumulation_command(CLI::App& app);
+/// `selfalign sweep accelerations|period|stroke|positioning`: parameter studies
+/// (cmd_sweep*.cpp).
 void add_sweep_command(CLI::App& app);
 
 }  // namespace selfalign::cli

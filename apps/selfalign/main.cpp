@@ -28,6 +28,9 @@ constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_steady_command,
     &selfalign::cli::add_floquet_command,
     &selfalign::cli::add_converge_command,
+    &selfalign::cli::add_stop_command,
+    &selfalign::cli::add_accuracy_command,
+    &selfalign::cli::add_accumulation_command,
     &selfalign::cli::add_sweep_command,
 };
 

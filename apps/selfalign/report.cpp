@@ -54,4 +54,27 @@ void deliver_report(const nlohmann::json& report, const std::string& table, bool
   std::cout << (as_json ? text : table) << std::flush;
 }
 
+ReportPaths resolve_report_paths(const SimulateConfig& config, bool as_json) {
+  const OutputPaths resolved = resolve_output_paths(config);
+  ReportPaths paths;
+  paths.csv = resolved.trajectory;
+  if (as_json && config.summary && !resolved.summary_to_stdout())
+    throw InvalidParameter("summary", *config.summary,
+                           "cannot be combined with --json (which prints the report)");
+  if (!as_json && !resolved.summary_to_stdout()) paths.report = resolved.summary;
+  paths.report_as_json = as_json || config.summary.has_value();
+  return paths;
+}
+
+void deliver_csv_and_report(const ReportPaths& paths, const std::string& csv,
+                            nlohmann::json report, const std::string& table) {
+  report["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
+  const std::string text = report.dump(2) + "\n";
+  AtomicFileSet files;
+  if (paths.csv) files.add(*paths.csv, csv);
+  if (paths.report) files.add(*paths.report, text);
+  files.commit();
+  if (!paths.report) std::cout << (paths.report_as_json ? text : table) << std::flush;
+}
+
 }  // namespace selfalign::cli

@@ -45,4 +45,23 @@ std::string table_text(const nlohmann::json& value);
 void deliver_report(const nlohmann::json& report, const std::string& table, bool as_json,
                     const std::optional<std::string>& out);
 
+/// Where a command whose --out is a CSV (stop, accuracy, accumulation) writes: the CSV to
+/// `out` (or none); the JSON report to `summary`, by default <out without extension>
+/// .summary.json beside the CSV, or to stdout: as JSON with --json or --summary -, as the
+/// table when neither out nor summary is given.
+struct ReportPaths {
+  std::optional<std::string> csv;     ///< none: no CSV
+  std::optional<std::string> report;  ///< none: standard output
+  bool report_as_json = false;        ///< on standard output: JSON (else the table)
+};
+
+/// Resolves and checks the paths before any work is done (resolve_output_paths). --json with
+/// --summary FILE is misuse. Throws InvalidParameter.
+ReportPaths resolve_report_paths(const SimulateConfig& config, bool as_json);
+
+/// Writes the CSV (when paths.csv) and the report with "csv_file" added, committed together
+/// (AtomicFileSet); then prints the report to stdout when it goes there.
+void deliver_csv_and_report(const ReportPaths& paths, const std::string& csv,
+                            nlohmann::json report, const std::string& table);
+
 }  // namespace selfalign::cli

@@ -81,5 +81,6 @@ void write_sweep_outputs(const SweepPaths& paths, const std::string& csv,
 void add_sweep_accelerations_command(CLI::App& sweep);  // cmd_sweep_accelerations.cpp
 enum class SweptParameter { period, stroke };
 void add_sweep_family_command(CLI::App& sweep, SweptParameter swept);  // cmd_sweep_family.cpp
+void add_sweep_positioning_command(CLI::App& sweep);  // cmd_sweep_positioning.cpp
 
 }  // namespace selfalign::cli

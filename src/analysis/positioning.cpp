@@ -12,6 +12,12 @@
 #include "selfalign/simulate/exact.hpp"
 
 namespace selfalign {
+void validate(const PositioningOptions& o) {
+  if (o.entries < 1) throw InvalidParameter("entries", o.entries, "must be >= 1");
+  if (o.stopping.max_periods < 1)
+    throw InvalidParameter("max_periods", o.stopping.max_periods, "must be >= 1");
+}
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -26,7 +32,7 @@ struct MaxPosition final : ArcSink {
 
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
                                          const PositioningOptions& o) {
-  if (o.entries < 1) throw InvalidParameter("entries", o.entries, "must be >= 1");
+  validate(o);
   const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
   if (!pwc)
     throw InvalidParameter("profile", profile.kind(),
@@ -84,6 +90,7 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
   require_positive("period", period);
   require_positive("stroke", stroke);
   TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  validate(o);  // up front, not from inside a worker thread
   for (double v : a2) require_positive("a2", v);
   for (double v : a3) require_positive("a3", v);
   std::vector<PositioningCell> cells(a2.size() * a3.size());

@@ -89,6 +89,7 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
   const ExactSetup setup{*pwc, *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, start);
   StopWatch watch(friction.x_mu(), targets, r);
+  watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
   const double t_first = (static_cast<double>(s.period_index) + 1) * P;
   ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {

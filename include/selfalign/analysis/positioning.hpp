@@ -27,6 +27,9 @@ struct PositioningOptions {
   SteadyStateOptions steady;
 };
 
+/// Throws InvalidParameter unless entries >= 1 and stopping.max_periods >= 1.
+void validate(const PositioningOptions& options);
+
 struct PositioningAccuracy {
   bool reaches = false;  ///< false when v̄ <= 0: the object never walks into the region
   SteadyState steady;

@@ -1,0 +1,191 @@
+// `selfalign accumulation`: the stick-position map of eq. (59) for the three-phase profile on
+// the two-region table (Sect. 7.3, Fig. 18): its fixed point (eq. 60) against x_stick,min
+// (eq. 41), its slope there, the basin of monotone accumulation, the Sect. 7.3 condition
+// x_{n+1}(x_mu) < x_stick,min for accumulation from every entry, and the map iterated from x1.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "report.hpp"
+#include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/analysis/sweep.hpp"
+#include "selfalign/error.hpp"
+#include "stopping_common.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+using D = Dimension;
+
+constexpr int kMaxIterations = 50;  // map applications listed under "iterates"
+
+struct AccumulationFlags {
+  bool as_json = false;
+  double x1 = 0, from = 0, to = 0;  // run units
+  int n = 400;
+  CLI::Option* x1_option = nullptr;
+  CLI::Option* from_option = nullptr;
+  CLI::Option* to_option = nullptr;
+};
+
+const ThreePhaseProfile& three_phase_profile(const SimulateModel& model) {
+  const auto* p = dynamic_cast<const ThreePhaseProfile*>(model.profile.get());
+  if (!p)
+    throw InvalidParameter("profile", model.profile->kind(),
+                           "the stick-position map (eq. 59) needs the three-phase profile");
+  return *p;
+}
+
+// A length given in the run's units, in [-].
+double model_length(const SimulateModel& model, double x) {
+  return model.units == UnitSystem::si ? to_dimensionless(D::length, x, model.scales) : x;
+}
+
+// x1, x2 = map(x1), ... [-] while below the fixed point and still moving (in floating point),
+// at most kMaxIterations applications; and for each p, the applications until
+// x >= x_mu + p (x_stick,min - x_mu) (null: not within them).
+json iterates_json(const StickPositionMap& map, const TwoRegionFriction& f, double x_stick_min,
+                   double x1, const OutputUnits& u) {
+  std::vector<double> x{x1};
+  while (static_cast<int>(x.size()) <= kMaxIterations && x.back() < map.fixed_point()) {
+    const double next = map(x.back());
+    if (next == x.back()) break;  // a fixed point in floating point
+    x.push_back(next);
+  }
+  json j;
+  j["x1"] = u.length(x1);
+  j["positions"] = json::array();
+  for (double v : x) j["positions"].push_back(u.length(v));
+  j["iterations"] = x.size() - 1;
+  j["passed_fixed_point"] = x.back() > map.fixed_point();
+  j["fractions"] = json::array();
+  for (double p : StoppingOptions{}.fractions) {  // 0.99, 0.999
+    const double target = f.x_mu() + p * (x_stick_min - f.x_mu());
+    json iterations = nullptr;
+    for (std::size_t k = 0; k < x.size() && iterations.is_null(); ++k)
+      if (x[k] >= target) iterations = k;
+    j["fractions"].push_back(
+        {{"p", p}, {"position", length_or_null(u, target)}, {"iterations", iterations}});
+  }
+  return j;
+}
+
+json accumulation_json(const SimulateModel& model, const StickPositionMap& map, double x1) {
+  const OutputUnits u = model.output_units();
+  const TwoRegionFriction& f = two_region(model);
+  const double x_stick_min = stick_position_min(f, model.profile->peak_acceleration());
+  json j = stopping_context_json(model, f, true);
+  j["fixed_point"] = u.length(map.fixed_point());           // eq. (60)
+  j["x_stick_min"] = length_or_null(u, x_stick_min);       // eq. (41)
+  j["fixed_point_minus_x_stick_min"] = length_or_null(u, map.fixed_point() - x_stick_min);
+  j["slope_at_fixed_point"] = map.slope_at_fixed_point();  // cos θ [-]
+  j["basin_lower_bound"] = u.length(map.basin_lower_bound());
+  j["map_at_x_mu"] = u.length(map(f.x_mu()));              // eq. (59) at x_n = x_mu
+  j["accumulates_for_every_entry"] = map.accumulates_for_every_entry();
+  j["iterates"] = iterates_json(map, f, x_stick_min, x1, u);
+  return j;
+}
+
+// Header "x_n,x_next,diagonal" (Fig. 18): x_n on the grid as given (run units), x_{n+1} of
+// eq. (59), and the diagonal x_{n+1} = x_n whose crossing is the fixed point.
+std::string map_csv(const SimulateModel& model, const StickPositionMap& map,
+                    const std::vector<double>& grid) {
+  const OutputUnits u = model.output_units();
+  std::string csv = "x_n,x_next,diagonal\n";
+  for (double x : grid)
+    csv += csv_number(x) + ',' + csv_number(u.length(map(model_length(model, x)))) + ',' +
+           csv_number(x) + '\n';
+  return csv;
+}
+
+std::string accumulation_table(const json& j, UnitSystem units) {
+  auto with_unit = [&](const json& v) {
+    return v.is_null() ? std::string("-") : table_text(v) + " " + unit_label(units, D::length);
+  };
+  const json& it = j["iterates"];
+  TextTable t;
+  t.row("fixed_point (eq. 60)", with_unit(j["fixed_point"]));
+  t.row("x_stick_min (eq. 41)", with_unit(j["x_stick_min"]));
+  t.row("difference", with_unit(j["fixed_point_minus_x_stick_min"]));
+  t.row("slope_at_fixed_point", table_text(j["slope_at_fixed_point"]));
+  t.row("basin_lower_bound", with_unit(j["basin_lower_bound"]));
+  t.row("map_at_x_mu", with_unit(j["map_at_x_mu"]));
+  t.row("accumulates_for_every_entry", j["accumulates_for_every_entry"].get<bool>() ? "yes" : "no");
+  t.row("iterates", table_text(it["iterations"]) + " from x1 = " + with_unit(it["x1"]) +
+                        " to " + with_unit(it["positions"].back()) +
+                        (it["passed_fixed_point"].get<bool>() ? " (past the fixed point)" : ""));
+  for (const json& p : it["fractions"])
+    t.row("p = " + table_text(p["p"]), table_text(p["iterations"]) + " iterations to x = " +
+                                           with_unit(p["position"]));
+  t.row("x_mu", with_unit(j["x_mu"]));
+  t.row("units", table_text(j["units"]));
+  return t.str();
+}
+
+void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
+  const SimulateConfig config = read_config(flags);
+  const ReportPaths paths = resolve_report_paths(config, f.as_json);
+  const SimulateModel model = stopping_model(config);
+  const TwoRegionFriction& friction = two_region(model);
+  const StickPositionMap map(three_phase_profile(model), friction);
+  const OutputUnits u = model.output_units();
+  const double x_mu = friction.x_mu();
+  const double x1 = f.x1_option->count() > 0 ? model_length(model, require_finite("x1", f.x1))
+                                             : x_mu;
+  // The CSV grid in the run's units, as given.
+  const double from = f.from_option->count() > 0 ? require_finite("from", f.from)
+                                                 : u.length(x_mu);
+  const double to = f.to_option->count() > 0 ? require_finite("to", f.to)
+                                             : u.length(x_mu + friction.width());
+  if (f.n < 1) throw InvalidParameter("n", f.n, "must be >= 1");
+  const std::vector<double> grid = linear_grid(from, to, f.n);
+  const json report = accumulation_json(model, map, x1);
+  deliver_csv_and_report(paths, paths.csv ? map_csv(model, map, grid) : "", report,
+                         accumulation_table(report, model.units));
+}
+
+}  // namespace
+
+void add_accumulation_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "accumulation",
+      "The stick-position map x_n -> x_{n+1} of eq. (59) in the friction transition region "
+      "(Sect. 7.3, Fig. 18) for the three-phase profile: fixed point (eq. 60) = x_stick,min "
+      "(eq. 41), slope there, basin, the condition x_{n+1}(x_mu) < x_stick,min for "
+      "accumulation from every entry, and the map iterated from --x1. --out: the map on a grid, "
+      "CSV x_n,x_next,diagonal.");
+  auto flags = add_stopping_config_flags(
+      *sub,
+      {{"x0", ""}, {"v0", ""}, {"t0", ""}, {"output_step", ""},
+       {"out", "CSV x_n,x_next,diagonal of the map on the grid --from, --to, --n (Fig. 18; "
+               "default: none)"},
+       {"summary", "report JSON file, - for stdout (default: <out without extension>"
+                   ".summary.json when out is given, else the report is printed)"}});
+  auto f = std::make_shared<AccumulationFlags>();
+  sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table; with --out: "
+                                      "instead of writing <stem>.summary.json)")
+      ->group("Output");
+  const std::string unit = ". Unit: [-], SI [m]";
+  f->x1_option = sub->add_option("--x1", f->x1,
+                                 "first stick position x1 the map is iterated from" + unit +
+                                     ". Default: x_mu")
+                     ->type_name("NUMBER")
+                     ->group("Stick-position map");
+  f->from_option = sub->add_option("--from", f->from,
+                                   "first x_n of the CSV grid" + unit + ". Default: x_mu")
+                       ->type_name("NUMBER")
+                       ->group("Stick-position map");
+  f->to_option = sub->add_option("--to", f->to,
+                                 "last x_n of the CSV grid" + unit + ". Default: x_mu + width")
+                     ->type_name("NUMBER")
+                     ->group("Stick-position map");
+  sub->add_option("--n", f->n, "number of grid points, >= 1. Default: " + std::to_string(f->n))
+      ->type_name("N")
+      ->group("Stick-position map");
+  sub->callback([flags, f] { run_accumulation(*flags, *f); });
+}
+
+}  // namespace selfalign::cli

@@ -1,0 +1,159 @@
+// `selfalign stop`: one stopping run (Sect. 7). The object walks from (t0, x0, v0) into the
+// friction transition region of the two-region table and stops for good: by permanent stick
+// (eq. 40) or by accumulation of its stick positions at x_stick,min (eqs. 59, 60), reached only
+// as t -> inf; with the times to reach x_mu + p (x_stick,min - x_mu) (Sect. 7.3). With --out,
+// the trajectory of the run as a phase portrait (Fig. 16).
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "report.hpp"
+#include "stopping_common.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+using D = Dimension;
+
+struct StopFlags {
+  bool as_json = false;
+  std::vector<double> fractions = StoppingOptions{}.fractions;
+  int max_periods = StoppingOptions{}.max_periods;
+};
+
+// End of the CSV trajectory [-]: the stop (permanent stick); the last fraction reached plus one
+// period (accumulation, whose stop is at t = inf); the whole run (not stopped).
+double trajectory_end(const StoppingRun& r, double t0, double period, int max_periods) {
+  double end = t0 + max_periods * period;
+  if (r.kind == StopKind::permanent_stick) end = r.process_time;
+  if (r.kind == StopKind::accumulation) {
+    double last = std::isnan(r.entry_time) ? t0 : r.entry_time;
+    for (double t : r.time_to_fraction)
+      if (std::isfinite(t)) last = std::max(last, t);
+    end = last + period;
+  }
+  return end > t0 ? end : t0 + period;
+}
+
+// Header "t,x,x_dot,stick": time, position, velocity in the run's units; stick 0/1.
+std::string phase_portrait_csv(const Trajectory& tr, const OutputUnits& u) {
+  std::string csv = "t,x,x_dot,stick\n";
+  for (std::size_t i = 0; i < tr.size(); ++i)
+    csv += csv_number(u.time(tr.t[i])) + ',' + csv_number(u.length(tr.x[i])) + ',' +
+           csv_number(u.velocity(tr.xd[i])) + ',' + (tr.stick[i] ? "1" : "0") + '\n';
+  return csv;
+}
+
+json stop_json(const SimulateModel& model, const StoppingOptions& o, const StoppingRun& r) {
+  const OutputUnits u = model.output_units();
+  const TwoRegionFriction& f = two_region(model);
+  json j = stopping_context_json(model, f, true);
+  const bool stopped = r.kind != StopKind::not_stopped;
+  j["stop"] = to_string(r.kind);
+  j["end_position"] = stopped ? json(u.length(r.end_position)) : json(nullptr);
+  j["process_time"] = stopped ? number_or_null(u.time(r.process_time)) : json(nullptr);
+  j["entry_time"] = number_or_null(u.time(r.entry_time));
+  j["x_stick_min"] = length_or_null(u, r.x_stick_min);
+  j["stick_positions"] = json::array();
+  for (double x : r.stick_positions) j["stick_positions"].push_back(u.length(x));
+  j["fractions"] = json::array();
+  for (std::size_t k = 0; k < o.fractions.size(); ++k) {
+    const double p = o.fractions[k];
+    const int periods = r.periods_to_fraction[k];
+    j["fractions"].push_back(
+        {{"p", p},
+         {"position", length_or_null(u, f.x_mu() + p * (r.x_stick_min - f.x_mu()))},
+         {"time", number_or_null(u.time(r.time_to_fraction[k]))},
+         {"periods_from_entry", periods < 0 ? json(nullptr) : json(periods)}});
+  }
+  j["initial"] = {{"t", u.time(model.initial.t)},
+                  {"x", u.length(model.initial.x)},
+                  {"x_dot", u.velocity(model.initial.xd)}};
+  j["max_periods"] = o.max_periods;
+  return j;
+}
+
+std::string stop_table(const json& j, UnitSystem units) {
+  auto with_unit = [&](const json& v, D d) {
+    return v.is_null() ? std::string("-") : table_text(v) + " " + unit_label(units, d);
+  };
+  TextTable t;
+  t.row("stop", table_text(j["stop"]));
+  t.row("end_position", with_unit(j["end_position"], D::length));
+  t.row("process_time", j["stop"] == "accumulation" ? std::string("inf (accumulation)")
+                                                    : with_unit(j["process_time"], D::time));
+  t.row("entry_time", with_unit(j["entry_time"], D::time));
+  t.row("x_mu", with_unit(j["x_mu"], D::length));
+  t.row("x_stick_min", with_unit(j["x_stick_min"], D::length));
+  const json& sticks = j["stick_positions"];
+  t.row("stick_positions", sticks.empty() ? std::string("none")
+                                          : std::to_string(sticks.size()) + ", first " +
+                                                with_unit(sticks.front(), D::length) +
+                                                ", last " + with_unit(sticks.back(), D::length));
+  for (const json& p : j["fractions"])
+    t.row("p = " + table_text(p["p"]),
+          "x = " + with_unit(p["position"], D::length) + " at t = " +
+              with_unit(p["time"], D::time) + ", " + table_text(p["periods_from_entry"]) +
+              " periods from entry");
+  t.row("units", table_text(j["units"]));
+  return t.str();
+}
+
+void run_stop(const ConfigFlags& flags, const StopFlags& f) {
+  const SimulateConfig config = read_config(flags);
+  const ReportPaths paths = resolve_report_paths(config, f.as_json);
+  const SimulateModel model = stopping_model(config);
+  const TwoRegionFriction& friction = two_region(model);
+  StoppingOptions options;
+  options.max_periods = f.max_periods;
+  options.fractions = f.fractions;
+  const StoppingRun run = stopping_run(*model.profile, friction, model.initial, options);
+
+  std::string csv;
+  if (paths.csv) {  // the same run, sampled by simulate() with the exact solver
+    SimulationOptions o = model.options;
+    o.duration = trajectory_end(run, model.initial.t, model.profile->period(), f.max_periods) -
+                 model.initial.t;
+    csv = phase_portrait_csv(simulate(*model.profile, friction, model.initial, o).trajectory,
+                             model.output_units());
+  }
+  const json report = stop_json(model, options, run);
+  deliver_csv_and_report(paths, csv, report, stop_table(report, model.units));
+}
+
+}  // namespace
+
+void add_stop_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "stop",
+      "One stopping run on the two-region table (Sect. 7): from (t0, x0, v0) until the object "
+      "sticks for good (eq. 40) or its stick positions provably accumulate at x_stick,min "
+      "(eqs. 41, 59, 60); times to reach x_mu + p (x_stick,min - x_mu). --out: the trajectory "
+      "CSV t,x,x_dot,stick (Fig. 16). Needs a piecewise-constant table acceleration.");
+  auto flags = add_stopping_config_flags(
+      *sub,
+      {{"out", "trajectory CSV t,x,x_dot,stick (Fig. 16) from t0 to the stop (accumulation: to "
+               "the last fraction reached plus one period; not stopped: max-periods periods); "
+               "default: none"},
+       {"summary", "report JSON file, - for stdout (default: <out without extension>"
+                   ".summary.json when out is given, else the report is printed)"}});
+  auto f = std::make_shared<StopFlags>();
+  sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table; with --out: "
+                                      "instead of writing <stem>.summary.json)")
+      ->group("Output");
+  sub->add_option("--fractions", f->fractions,
+                  "fractions p in [0, 1]: report when x >= x_mu + p (x_stick,min - x_mu) is "
+                  "first reached. Default: 0.99,0.999")
+      ->delimiter(',')
+      ->type_name("LIST")
+      ->group("Solver");
+  add_max_periods_option(*sub, f->max_periods);
+  sub->callback([flags, f] { run_stop(*flags, *f); });
+}
+
+}  // namespace selfalign::cli

@@ -1,0 +1,150 @@
+// `selfalign sweep positioning`: the Fig. 17 surfaces over a (y2'', y3'') grid of the
+// three-phase profile at the config's Δt, Δy, w and c_mu: f (A, eq. 11), the motion case (B),
+// accumulation (C) and the positioning error Δx_d (D, eq. 39), with the periods from entry to
+// p = 0.99 and 0.999 of the way to x_stick,min (Sect. 7.3).
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "report.hpp"
+#include "selfalign/analysis/positioning.hpp"
+#include "selfalign/error.hpp"
+#include "sweep_common.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+using D = Dimension;
+
+constexpr int kDefaultMaxPeriods = 300;  // a stop takes a few periods (Sect. 7.3: at most 7)
+
+struct PositioningFlags {
+  std::shared_ptr<SweepFlags> common;
+  std::string a2_range, a3_range;
+  int entries = PositioningOptions{}.entries;
+  int max_periods = kDefaultMaxPeriods;
+};
+
+// Header "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,max_periods_p999";
+// a2, a3 as on the grid, row-major with a2 outer; dx_d in the run's units (nan where the object
+// does not arrive or an entry does not stop); periods -1 where no entry accumulates.
+std::string cells_csv(const std::vector<PositioningCell>& cells, const std::vector<double>& a2,
+                      const std::vector<double>& a3, const OutputUnits& u) {
+  std::string csv = "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,"
+                    "max_periods_p999\n";
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const PositioningCell& c = cells[k];
+    csv += csv_number(a2[k / a3.size()]) + ',' + csv_number(a3[k % a3.size()]) + ',' +
+           std::to_string(static_cast<int>(c.motion_case)) + ',' + csv_number(c.f) + ',' +
+           (c.accumulates ? "1" : "0") + ',' + csv_number(u.length(c.dx_d)) + ',' +
+           std::to_string(c.accumulating_entries) + ',' + std::to_string(c.max_periods_p99) +
+           ',' + std::to_string(c.max_periods_p999) + '\n';
+  }
+  return csv;
+}
+
+json cells_summary(const SimulateConfig& config, const ProfileModel& model,
+                   const PositioningFlags& f, const GridRange& r2, const GridRange& r3,
+                   const std::vector<PositioningCell>& cells) {
+  const SimulateConfig given = resolve_simulate_config(config);  // run units
+  std::vector<StickSlipCase> cases;
+  int accumulating = 0, with_accumulating_entries = 0, p99 = -1, p999 = -1;
+  for (const PositioningCell& c : cells) {
+    cases.push_back(c.motion_case);
+    accumulating += c.accumulates;
+    with_accumulating_entries += c.accumulating_entries > 0;
+    p99 = std::max(p99, c.max_periods_p99);
+    p999 = std::max(p999, c.max_periods_p999);
+  }
+  json j;
+  j["sweep"] = "positioning";
+  j["units"] = to_string(model.units);
+  j["family"] = "three-phase";
+  j["period"] = *given.period;
+  j["stroke"] = *given.stroke;
+  j["width"] = *given.width;
+  j["c_mu"] = *given.c_mu;
+  j["entries"] = f.entries;
+  j["max_periods"] = f.max_periods;
+  j["grid"] = {{"a2", grid_json(r2)},
+               {"a3", grid_json(r3)},
+               {"spacing", f.common->log ? "log" : "linear"},
+               {"order", "row-major, a2 outer"}};
+  j["cells"] = cells.size();
+  j["cases"] = case_counts(cases);
+  j["accumulating_cells"] = accumulating;
+  j["cells_with_accumulating_entries"] = with_accumulating_entries;
+  j["max_periods_p99"] = p99;
+  j["max_periods_p999"] = p999;
+  return j;
+}
+
+void run_sweep_positioning(const PositioningFlags& f) {
+  const SimulateConfig config = read_config(*f.common->config);
+  const SweepPaths paths = resolve_sweep_paths(config);
+  const ProfileModel model = sweep_model(config);
+  const SimulateConfig given = resolve_simulate_config(config);
+  const double width = model.to_model_units(D::length, *given.width);
+  const double c_mu = *given.c_mu;
+  if (f.entries < 1) throw InvalidParameter("entries", f.entries, "must be >= 1");
+  if (f.max_periods < 1) throw InvalidParameter("max-periods", f.max_periods, "must be >= 1");
+  const GridRange r2 = parse_grid_range("a2-range", f.a2_range);
+  const GridRange r3 = parse_grid_range("a3-range", f.a3_range);
+  const std::vector<double> a2 = positive_grid("a2-range", r2, f.common->log, "y2''");
+  const std::vector<double> a3 = positive_grid("a3-range", r3, f.common->log, "y3''");
+  std::vector<double> a2_model, a3_model;  // [-]
+  for (double v : a2) a2_model.push_back(model.to_model_units(D::acceleration, v));
+  for (double v : a3) a3_model.push_back(model.to_model_units(D::acceleration, v));
+
+  PositioningOptions options;
+  options.entries = f.entries;
+  options.stopping.max_periods = f.max_periods;
+  const ThreePhaseParameters& p = *model.three_phase;
+  std::vector<PositioningCell> cells;
+  {
+    const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
+    cells = positioning_surfaces(p.period, p.stroke, width, c_mu, a2_model, a3_model, options,
+                                 sweep_options(*f.common, *bar));
+  }
+  write_sweep_outputs(paths, cells_csv(cells, a2, a3, model.output_units()),
+                      cells_summary(config, model, f, r2, r3, cells));
+}
+
+}  // namespace
+
+void add_sweep_positioning_command(CLI::App& sweep) {
+  CLI::App* sub = sweep.add_subcommand(
+      "positioning",
+      "Fig. 17 over a grid of the three-phase profile's (y2'', y3'') at the config's period, "
+      "stroke, width and c_mu: f, motion case, accumulation and the positioning error dx_d "
+      "(eq. 39) from N steady-state entries per cell. CSV a2,a3,case,f,accumulates,dx_d,"
+      "accumulating_entries,max_periods_p99,max_periods_p999; rows a2-major.");
+  auto f = std::make_shared<PositioningFlags>();
+  f->common = add_sweep_flags(*sub);
+  sub->add_option("--a2-range", f->a2_range,
+                  "y2'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
+      ->type_name("LO:HI:N")
+      ->required()
+      ->group("Sweep");
+  sub->add_option("--a3-range", f->a3_range,
+                  "y3'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
+      ->type_name("LO:HI:N")
+      ->required()
+      ->group("Sweep");
+  sub->add_option("--entries", f->entries,
+                  "steady-state entries x_0s per cell, >= 1. Default: " +
+                      std::to_string(f->entries))
+      ->type_name("N")
+      ->group("Sweep");
+  sub->add_option("--max-periods", f->max_periods,
+                  "give up an entry's stopping run after N table periods, >= 1. Default: " +
+                      std::to_string(f->max_periods))
+      ->type_name("N")
+      ->group("Sweep");
+  sub->callback([f] { run_sweep_positioning(*f); });
+}
+
+}  // namespace selfalign::cli
