@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Sets everything up on a fresh Debian machine and runs selfalign's main job.
 #   1. installs the Debian dependencies (scripts/install-deps.sh, idempotent)
-#   2. builds and installs selfalign into build/install (CLI: build/install/bin/selfalign)
-#   3. runs the main job on built-in defaults, writing to out/ (or the folder given as $1)
+#   2. builds and installs selfalign into build/install (CLI: build/install/bin/selfalign) and
+#      the Python module into .venv (scripts/install-python.sh: .venv/bin/python -c 'import selfalign')
+#   3. runs the main job on built-in defaults: `python -m selfalign reproduce` regenerates the
+#      paper's figures, their data and a PASS/FAIL table of its claims into out/ (or $1)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out}
@@ -11,9 +13,8 @@ bash scripts/install-deps.sh
 cmake --preset release >/dev/null
 cmake --build --preset release -j "$(nproc)"
 cmake --install build/release >/dev/null
-bin=build/install/bin/selfalign
+bash scripts/install-python.sh build/release
 
-mkdir -p "$out"
-echo "== selfalign simulate (defaults: Sect. 7.2 setting) -> $out/trajectory.csv"
-"$bin" simulate --out "$out/trajectory.csv" --summary "$out/summary.json"
-cat "$out/summary.json"
+# The main job: every figure of the paper, its data, report.md / index.html and the claims table.
+.venv/bin/python -m selfalign reproduce --out "$out"
+echo "open $out/index.html (or read $out/report.md)"

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test: installs the Debian dependencies (idempotent), builds, and runs ctest.
-#   scripts/test.sh          Release build (build/release), all tests
+#   scripts/test.sh          Release build (build/release), all tests, then the Python module's
+#                            pytest suite (python/tests) against .venv (scripts/install-python.sh)
 #   scripts/test.sh --asan   Debug build with AddressSanitizer + UBSan (build/asan), all tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,4 +12,11 @@ preset=release
 bash scripts/install-deps.sh
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
+# Python module: release only (a sanitized extension cannot load in an unsanitized python).
+if [ "$preset" = release ]; then
+  bash scripts/install-python.sh build/release
+fi
 ctest --preset "$preset"
+if [ "$preset" = release ]; then
+  .venv/bin/python -m pytest python/tests -q
+fi

@@ -1,0 +1,431 @@
+"""The paper's figures, one function per figure (Hunnekens et al. 2010).
+
+Each ``fig_*`` function computes its data with the library, writes the data as CSV and the
+figure as PNG and SVG into ``out_dir``, and returns a :class:`Figure` describing what it drew
+and which statement of the paper it reproduces. Everything is dimensionless (Sect. 3.2).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from typing import Callable, Optional
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from . import _selfalign as sa  # noqa: E402
+
+Progress = Optional[Callable[[int, int], None]]
+
+
+@dataclasses.dataclass
+class Figure:
+    """A reproduced figure: its files and the paper's statement it illustrates."""
+
+    number: str
+    title: str
+    statement: str
+    files: list[str]
+    data: list[str]
+    notes: str = ""
+    raw: Optional[dict] = None  # the computed data, for the claims table
+
+
+# Settings used throughout (the paper's, where it gives them).
+SECT72 = dict(period=1.0, stroke=0.084)  # Sect. 7.2: Δt = 1, Δy = 0.084
+WIDTH, C_MU = 0.05, 2.5  # Sect. 7.2: w = 0.05, c_mu = 2.5
+CASE_SETTINGS = {  # one three-phase setting per case of Table 1 (checked a priori and simulated)
+    1: (1.0, 0.084, 3.0, 0.9),
+    2: (1.0, 0.084, 0.9, 3.0),
+    3: (1.0, 0.084, 2.3, 1.3),
+    4: (1.0, 0.084, 1.05, 2.0),
+    5: (2.0, 0.084, 0.9, 0.9),
+}
+CASE_COLORS = ["#bbbbbb", "#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e"]
+
+
+def _save(fig: plt.Figure, out_dir: str, name: str) -> list[str]:
+    files = []
+    for ext in ("png", "svg"):
+        path = os.path.join(out_dir, f"{name}.{ext}")
+        fig.savefig(path, dpi=130, bbox_inches="tight")
+        files.append(path)
+    plt.close(fig)
+    return files
+
+
+def _csv(out_dir: str, name: str, columns: dict[str, np.ndarray]) -> str:
+    path = os.path.join(out_dir, f"{name}.csv")
+    arrays = [np.asarray(v, dtype=float).ravel() for v in columns.values()]
+    np.savetxt(path, np.column_stack(arrays), delimiter=",", header=",".join(columns), comments="",
+               fmt="%.17g")
+    return path
+
+
+def _three_phase(period: float, stroke: float, a2: float, a3: float) -> sa.ThreePhaseProfile:
+    return sa.ThreePhaseProfile(period=period, stroke=stroke, a2=a2, a3=a3)
+
+
+def fig3(out_dir: str) -> Figure:
+    """Fig. 3: a stick-slip response computed with time-stepping.
+
+    The table follows a periodic sequence of second-order polynomials (the scaled Fig. 7-like
+    shape)."""
+    profile = sa.ScaledShapeFamily.paper_like().make(2.5, 1.5)
+    options = sa.SimulationOptions(method="time-stepping", duration=14.0, step=1e-3,
+                                   output_step=0.01)
+    tr = sa.simulate(profile, sa.UniformFriction(), sa.ObjectState(), options).trajectory
+    x_abs = tr.x + tr.y  # absolute position of the object
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    top.plot(tr.t, x_abs, label="x (object)")
+    top.plot(tr.t, tr.y, "--", label="y (table)")
+    top.set_ylabel("position x, y [-]")
+    top.legend()
+    bottom.plot(tr.t, tr.xd + tr.yd, label="x' (object)")
+    bottom.plot(tr.t, tr.yd, "--", label="y' (table)")
+    bottom.set_xlabel("time [-]")
+    bottom.set_ylabel("velocity x', y' [-]")
+    bottom.legend()
+    fig.suptitle("Fig. 3: stick-slip with a sequence of quadratics (time-stepping)")
+    data = _csv(out_dir, "fig03", {"t": tr.t, "x_abs": x_abs, "y": tr.y,
+                                    "x_dot_abs": tr.xd + tr.yd, "y_dot": tr.yd})
+    return Figure("3", "Stick-slip response (time-stepping)",
+                  "The table moves slowly forward dragging the mass along and fast backward, so "
+                  "the mass slips and walks forward (Sect. 4.2).",
+                  _save(fig, out_dir, "fig03"), [data],
+                  "Absolute positions x + y are plotted; the paper's exact polynomial sequence is "
+                  "not given, a Fig. 7-like shape with Δt = 2.5, Δy = 1.5 is used.")
+
+
+def _family_sweep(kind: str, values: np.ndarray, fixed: float, progress: Progress):
+    family = sa.ScaledShapeFamily.paper_like()
+    if kind == "period":
+        return sa.sweep_period(family, fixed, values, progress=progress)
+    return sa.sweep_stroke(family, fixed, values, progress=progress)
+
+
+def fig4(out_dir: str, progress: Progress = None) -> Figure:
+    """Fig. 4: f against Δt at Δy = 0.02."""
+    periods = np.linspace(0.02, 0.2, 46)
+    r = _family_sweep("period", periods, 0.02, progress)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.semilogy(r["period"], r["f"], "o-", ms=3)
+    ax.set_xlabel("Δt [-]")
+    ax.set_ylabel("f [-]")
+    ax.set_title("Fig. 4: f against Δt (Δy = 0.02)")
+    data = _csv(out_dir, "fig04", {"period": r["period"], "f": r["f"], "v_bar": r["v_bar"]})
+    return Figure("4", "Objective against excitation period",
+                  "A large excitation frequency (small Δt) is beneficial: f grows with Δt "
+                  "(Sect. 4.4.1).", _save(fig, out_dir, "fig04"), [data],
+                  "Scaled Fig. 7-like polynomial sequence (the paper's sequence is not given).", r)
+
+
+def fig5(out_dir: str, progress: Progress = None) -> Figure:
+    """Fig. 5: f against Δy at Δt = 0.05."""
+    strokes = np.linspace(0.002, 0.04, 39)
+    r = _family_sweep("stroke", strokes, 0.05, progress)
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.semilogy(r["stroke"], r["f"], "o-", ms=3)
+    ax.set_xlabel("Δy [-]")
+    ax.set_ylabel("f [-]")
+    ax.set_title("Fig. 5: f against Δy (Δt = 0.05)")
+    data = _csv(out_dir, "fig05", {"stroke": r["stroke"], "f": r["f"], "v_bar": r["v_bar"]})
+    return Figure("5", "Objective against stroke",
+                  "A large stroke is beneficial: f falls as Δy grows (Sect. 4.4.1).",
+                  _save(fig, out_dir, "fig05"), [data],
+                  "Scaled Fig. 7-like polynomial sequence (the paper's sequence is not given).", r)
+
+
+def fig6(out_dir: str) -> Figure:
+    """Fig. 6 (setting only): a 12th-order Fourier profile and its steady response.
+
+    Under the Fig. 6 limits. The optimisation itself is the profile-optimisation issue; here
+    the Fourier series of a three-phase shape, scaled to Δy = 0.021, is shown."""
+    period, stroke = 0.072, 0.021
+    base = _three_phase(period, stroke, 1000.0, 400.0)
+    t = np.linspace(0.0, period, 2048, endpoint=False)
+    y, _, _ = base.sample(t)
+    coeffs = np.fft.rfft(y) / len(t)
+    n = 12
+    cos = 2 * coeffs[1:n + 1].real
+    sin = -2 * coeffs[1:n + 1].imag
+    fourier = sa.ScaledFourierFamily(cos, sin).make(period, stroke)
+    steady = sa.steady_state(fourier)
+    options = sa.SimulationOptions(method="time-stepping", duration=3 * period, step=period / 4000,
+                                   output_step=period / 400)
+    tr = sa.simulate(fourier, sa.UniformFriction(), sa.ObjectState(0, 0, steady.x_dot_0s),
+                     options).trajectory
+    fig, axes = plt.subplots(3, 1, figsize=(6, 7), sharex=True)
+    axes[0].plot(tr.t, tr.y)
+    axes[0].set_ylabel("y [-]")
+    axes[1].plot(tr.t, tr.yd, label="y'")
+    axes[1].plot(tr.t, tr.xd + tr.yd, "--", label="x' + y' (object)")
+    axes[1].axhline(3.2, color="k", lw=0.5)
+    axes[1].axhline(-3.2, color="k", lw=0.5)
+    axes[1].legend()
+    axes[1].set_ylabel("velocity [-]")
+    axes[2].plot(tr.t, tr.ydd)
+    axes[2].axhline(1275, color="k", lw=0.5)
+    axes[2].axhline(-1275, color="k", lw=0.5)
+    axes[2].set_ylabel("y'' [-]")
+    axes[2].set_xlabel("time [-]")
+    fig.suptitle(f"Fig. 6 setting: 12th-order Fourier profile, f = {steady.f:.3g}")
+    data = _csv(out_dir, "fig06", {"t": tr.t, "y": tr.y, "y_dot": tr.yd, "y_ddot": tr.ydd,
+                                    "x_dot": tr.xd})
+    return Figure("6", "Fourier profile (Fig. 6 setting)",
+                  "Δt = 0.072, Δy = 0.021, y'_max = 3.2, y''_max = 1275; the optimum has a "
+                  "zero-acceleration interval, then negative, then positive acceleration "
+                  "(Sect. 4.4.2).", _save(fig, out_dir, "fig06"), [data],
+                  "Not optimised yet (profile optimisation is a separate issue): the 12-term "
+                  "Fourier series of a three-phase shape. The paper's printed f = 56 is read as "
+                  "f = 5.6e-4 (lost exponent).")
+
+
+def fig7(out_dir: str) -> Figure:
+    """Fig. 7: the three-phase profile, y, y', y'' over a period with t0..t3."""
+    profile = _three_phase(1.0, 0.084, 2.3, 1.3)
+    sol = profile.solution
+    t = np.linspace(0, 1, 1001)
+    y, yd, ydd = profile.sample(t)
+    fig, axes = plt.subplots(3, 1, figsize=(6, 6), sharex=True)
+    for ax, v, label in zip(axes, (y, yd, ydd), ("y [-]", "y' [-]", "y'' [-]")):
+        ax.plot(t, v)
+        ax.set_ylabel(label)
+        for tk, name in ((0, "t0"), (sol.t1, "t1"), (sol.t2, "t2"), (sol.t3, "t3")):
+            ax.axvline(tk, color="k", lw=0.5, ls=":")
+        ax.axhline(0, color="k", lw=0.5)
+    axes[1].fill_between(t, yd, 0, alpha=0.2)
+    axes[2].fill_between(t, ydd, 0, alpha=0.2)
+    axes[2].set_xlabel("time [-]")
+    fig.suptitle("Fig. 7: three-phase table profile (Δt = 1, Δy = 0.084, y2'' = 2.3, y3'' = 1.3)")
+    data = _csv(out_dir, "fig07", {"t": t, "y": y, "y_dot": yd, "y_ddot": ydd})
+    return Figure("7", "Three-phase table profile",
+                  "Three intervals of constant acceleration 0, -y2'', +y3''; min y = 0, stroke "
+                  "Δy, periodic y and y' (Sect. 4.4.3, Appendix).", _save(fig, out_dir, "fig07"),
+                  [data])
+
+
+def fig9(out_dir: str) -> Figure:
+    """Fig. 9: time histories of the five cases (steady state)."""
+    fig, axes = plt.subplots(5, 1, figsize=(6, 10), sharex=False)
+    columns = {}
+    for ax, (case, (dt, dy, a2, a3)) in zip(axes, CASE_SETTINGS.items()):
+        profile = _three_phase(dt, dy, a2, a3)
+        steady = sa.steady_state(profile)
+        options = sa.SimulationOptions(duration=2 * dt, output_step=dt / 500)
+        tr = sa.simulate(profile, sa.UniformFriction(), sa.ObjectState(0, 0, steady.x_dot_0s),
+                         options).trajectory
+        ax.plot(tr.t, tr.xd, label="x' (relative)")
+        ax.plot(tr.t, tr.yd, "--", label="y' (table)")
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_title(f"case {case}: {sa.describe(int(steady.motion_case))} "
+                     f"(y2''={a2}, y3''={a3}, Δt={dt})", fontsize=9)
+        ax.set_ylabel("velocity [-]")
+        columns[f"t_case{case}"] = tr.t
+        columns[f"x_dot_case{case}"] = tr.xd
+    axes[0].legend(fontsize=8)
+    axes[-1].set_xlabel("time [-]")
+    fig.tight_layout()
+    length = min(len(v) for v in columns.values())
+    data = _csv(out_dir, "fig09", {k: v[:length] for k, v in columns.items()})
+    return Figure("9", "The five cases of Table 1",
+                  "Stick-slip x' >= 0, stick-slip x' <= 0, general stick-slip, slip-slip, pure "
+                  "stick (Table 1, Fig. 9).", _save(fig, out_dir, "fig09"), [data])
+
+
+def _case_f_surfaces(out_dir: str, name: str, title: str, period: float, stroke: float,
+                     grid: np.ndarray, log: bool, f_cap: float, progress: Progress):
+    r = sa.sweep_accelerations(period, stroke, grid, grid, progress=progress)
+    f = np.minimum(np.where(np.isfinite(r["f"]), r["f"], f_cap), f_cap)
+    f = np.where(r["observed"] == 0, np.nan, f)
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.5))
+    mesh = left.pcolormesh(grid, grid, f.T, shading="nearest", cmap="viridis")
+    fig.colorbar(mesh, ax=left)
+    left.set_title(f"f (capped at {f_cap:g})")
+    right.set_title("case (0 = non-physical)")
+    cmap = matplotlib.colors.ListedColormap(CASE_COLORS)
+    cases = right.pcolormesh(grid, grid, r["observed"].T.astype(float), shading="nearest",
+                             cmap=cmap, vmin=-0.5, vmax=5.5)
+    fig.colorbar(cases, ax=right, ticks=range(6))
+    for ax in (left, right):
+        ax.set_xlabel("y2'' [-]")
+        ax.set_ylabel("y3'' [-]")
+        if log:
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+    fig.suptitle(title)
+    a2, a3 = np.meshgrid(grid, grid, indexing="ij")
+    data = _csv(out_dir, name, {"a2": a2, "a3": a3, "case_a_priori": r["predicted"],
+                                 "case": r["observed"], "v_bar": r["v_bar"], "f": r["f"]})
+    return _save(fig, out_dir, name), [data], r
+
+
+def fig10(out_dir: str, progress: Progress = None) -> Figure:
+    """Fig. 10: f and case over (y2'', y3'') in [1, 1275]^2, Δt = 0.072, Δy = 0.021."""
+    grid = sa.log_grid(1.0, 1275.0, 200)
+    files, data, r = _case_f_surfaces(out_dir, "fig10",
+                                      "Fig. 10: f and case, Δt = 0.072, Δy = 0.021",
+                                      0.072, 0.021, grid, True, 1.6e-3, progress)
+    return Figure("10", "f and case over large accelerations",
+                  "f rises sharply where general stick-slip turns into slip-slip; f capped at "
+                  "1.6e-3 (Sect. 5.2).", files, data,
+                  "The paper does not state Fig. 10's (Δt, Δy); the Fig. 6 setting is used, whose "
+                  "v̄ ≈ 0.3 matches the 1.6e-3 colour scale.", r)
+
+
+def fig11(out_dir: str, progress: Progress = None) -> Figure:
+    """Fig. 11: f and case over small accelerations (0, 3]^2, Δt = 1, Δy = 0.084."""
+    grid = sa.linear_grid(3.0 / 200, 3.0, 200)
+    files, data, r = _case_f_surfaces(out_dir, "fig11", "Fig. 11: f and case, Δt = 1, Δy = 0.084",
+                                      1.0, 0.084, grid, False, 0.8, progress)
+    return Figure("11", "f and case over small accelerations",
+                  "Stick is possible where |y''| < 1: cases 1 and 2 appear; case 1 is preferable; "
+                  "f >= 0.8 set to 0.8 (Sect. 5.2).", files, data, raw=r)
+
+
+def fig12(out_dir: str) -> Figure:
+    """Fig. 12: an illustrative case-1 trajectory over one period."""
+    profile = _three_phase(*CASE_SETTINGS[1])
+    sol = profile.solution
+    tr = sa.simulate(profile, sa.UniformFriction(), sa.ObjectState(),
+                     sa.SimulationOptions(duration=1.0, output_step=1e-3)).trajectory
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6, 5), sharex=True)
+    top.plot(tr.t, tr.x)
+    top.set_ylabel("x [-]")
+    bottom.plot(tr.t, tr.xd, label="x'")
+    bottom.plot(tr.t, tr.ydd / 10, "--", label="y''/10")
+    bottom.legend()
+    for ax in (top, bottom):
+        for tk in (0, sol.t1, sol.t2, sol.t3):
+            ax.axvline(tk, color="k", lw=0.5, ls=":")
+    bottom.set_xlabel("time [-]")
+    fig.suptitle("Fig. 12: case-1 trajectory (y2'' = 3, y3'' = 0.9)")
+    data = _csv(out_dir, "fig12", {"t": tr.t, "x": tr.x, "x_dot": tr.xd, "y_ddot": tr.ydd})
+    return Figure("12", "Case-1 trajectory",
+                  "Stick on [t0, t1], slip with x'' = y2'' - 1 on [t1, t2], decelerate with "
+                  "-1 - y3'' until x' = 0, stick until t3 (eqs. 12-24).",
+                  _save(fig, out_dir, "fig12"), [data])
+
+
+def fig13(out_dir: str) -> Figure:
+    """Fig. 13: convergence of two velocity responses and V = (v1 - v2)^2/2."""
+    profile = _three_phase(*CASE_SETTINGS[1])
+    c = sa.velocity_convergence(profile, sa.ConvergenceOptions(v1=0.6, v2=-0.4, duration=4.0))
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
+    top.plot(c.t, c.v1, label="v1")
+    top.plot(c.t, c.v2, "--", label="v2")
+    top.set_ylabel("velocity [-]")
+    top.legend()
+    bottom.plot(c.t, c.lyapunov)
+    bottom.set_ylabel("V [-]")
+    bottom.set_xlabel("time [-]")
+    for iv in c.intervals:
+        mid = 0.5 * (iv.t_begin + iv.t_end)
+        bottom.text(mid, max(c.lyapunov) * 1.02, "=" if iv.same else "≠", ha="center")
+    if c.t_coincide is not None:
+        for ax in (top, bottom):
+            ax.axvline(c.t_coincide, color="k", lw=0.5, ls=":")
+    fig.suptitle("Fig. 13: convergence of two case-1 responses")
+    data = _csv(out_dir, "fig13", {"t": c.t, "v1": c.v1, "v2": c.v2, "V": c.lyapunov})
+    return Figure("13", "Convergence of velocity responses",
+                  "V is constant where v̂1 = v̂2 and decreases where v̂1 ≠ v̂2; for case 1 the "
+                  "responses coincide in finite time (Sect. 6.2).", _save(fig, out_dir, "fig13"),
+                  [data])
+
+
+def fig16(out_dir: str) -> Figure:
+    """Fig. 16: phase portraits for (2.3, 1.3) and (1.8, 1.1), two entries each."""
+    fig, axes = plt.subplots(2, 1, figsize=(7, 7))
+    columns = {}
+    for ax, (a2, a3) in zip(axes, ((2.3, 1.3), (1.8, 1.1))):
+        profile = _three_phase(1.0, 0.084, a2, a3)
+        acc = sa.positioning_accuracy(profile, WIDTH, C_MU)  # 100 entries, Sect. 7.1
+        friction = sa.TwoRegionFriction(acc.x_mu, WIDTH, C_MU)
+        for k, x0 in enumerate((acc.entries[10], acc.entries[60])):  # two of the entries
+            tr = sa.simulate(profile, friction, sa.ObjectState(0, x0, acc.steady.x_dot_0s),
+                             sa.SimulationOptions(duration=12.0, output_step=2e-3)).trajectory
+            ax.plot(tr.x, tr.xd, lw=0.8, label=f"x0s = {x0:.4f}")
+            columns[f"x_{a2}_{a3}_{k}"] = tr.x
+            columns[f"x_dot_{a2}_{a3}_{k}"] = tr.xd
+        ax.axvline(acc.x_mu, color="k", ls="--", lw=0.7)
+        ax.axvline(acc.x_stick_min, color="k", ls="--", lw=0.7)
+        ax.set_title(f"(y2'', y3'') = ({a2}, {a3}): Δx_d = {acc.dx_d:.3g}", fontsize=10)
+        ax.set_xlabel("x [-]")
+        ax.set_ylabel("x' [-]")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    data = _csv(out_dir, "fig16", columns)
+    return Figure("16", "Phase portraits entering the high-friction region",
+                  "Upper: both trajectories stop at the same position (accumulation to "
+                  "x_stick,min); lower: the end positions differ (Sect. 7.2).",
+                  _save(fig, out_dir, "fig16"), [data])
+
+
+def fig17(out_dir: str, progress: Progress = None, n: int = 120, entries: int = 60) -> Figure:
+    """Fig. 17: (A) f, (B) case, (C) accumulation, (D) Δx_d over (y2'', y3'')."""
+    grid = sa.linear_grid(2.5 / n, 2.5, n)
+    options = sa.PositioningOptions(entries=entries, stopping=sa.StoppingOptions(max_periods=300))
+    r = sa.positioning_surfaces(1.0, 0.084, WIDTH, C_MU, grid, grid, options=options,
+                                progress=progress)
+    fig, axes = plt.subplots(2, 2, figsize=(11, 9))
+    panels = [("A: f (capped at 0.8)", np.minimum(np.nan_to_num(r["f"], nan=np.nan, posinf=0.8), 0.8),
+               "viridis"),
+              ("B: case", r["case"].astype(float), matplotlib.colors.ListedColormap(CASE_COLORS)),
+              ("C: accumulation", r["accumulates"].astype(float), "Greys"),
+              ("D: Δx_d", r["dx_d"], "magma")]
+    for ax, (title, values, cmap) in zip(axes.ravel(), panels):
+        kwargs = dict(vmin=-0.5, vmax=5.5) if title.startswith("B") else {}
+        mesh = ax.pcolormesh(grid, grid, values.T, shading="nearest", cmap=cmap, **kwargs)
+        fig.colorbar(mesh, ax=ax)
+        ax.set_title(title)
+        ax.set_xlabel("y2'' [-]")
+        ax.set_ylabel("y3'' [-]")
+    fig.suptitle("Fig. 17: Δt = 1, Δy = 0.084, w = 0.05, c_mu = 2.5")
+    fig.tight_layout()
+    a2, a3 = np.meshgrid(grid, grid, indexing="ij")
+    data = _csv(out_dir, "fig17", {"a2": a2, "a3": a3, "case": r["case"], "f": r["f"],
+                                    "accumulates": r["accumulates"], "dx_d": r["dx_d"],
+                                    "max_periods_p99": r["max_periods_p99"],
+                                    "max_periods_p999": r["max_periods_p999"]})
+    return Figure("17", "f, case, accumulation and positioning error",
+                  "High y2'' moves fast but must stay low enough to stick; low y3'' favours case "
+                  "1; where accumulation occurs (C) the positioning error vanishes (D) (Sect. 7.2).",
+                  _save(fig, out_dir, "fig17"), [data],
+                  f"{n} x {n} grid over (0, 2.5]^2, {entries} entries per cell; white: the object "
+                  "never arrives (case 0, 2, 5 or v̄ <= 0) or never comes to rest.", r)
+
+
+def fig18(out_dir: str) -> Figure:
+    """Fig. 18: the stick-position map (59), the diagonal and the fixed point."""
+    profile = _three_phase(1.05, 0.084, 2.2, 0.9)
+    friction = sa.TwoRegionFriction(0.0, WIDTH, C_MU)
+    m = sa.StickPositionMap(profile, friction)
+    x_stick_min = sa.stick_position_min(friction, profile.peak_acceleration)
+    x = np.linspace(0.0, WIDTH, 400)
+    x_next = m(x)
+    fig, ax = plt.subplots(figsize=(6, 5))
+    ax.plot(x, x_next, label="x_{n+1}(x_n), eq. (59)")
+    ax.plot(x, x, "k:", label="diagonal")
+    ax.plot([m.fixed_point()], [m.fixed_point()], "ro", label="fixed point, eq. (60)")
+    ax.axvline(0.0, color="k", ls="--", lw=0.7)
+    ax.axvline(x_stick_min, color="k", ls="--", lw=0.7)
+    ax.axvline(m.basin_lower_bound(), color="gray", ls="--", lw=0.7)
+    ax.set_xlabel("x_n [-]  (x_mu = 0)")
+    ax.set_ylabel("x_{n+1} [-]")
+    ax.set_xlim(0, WIDTH)
+    ax.set_ylim(0, WIDTH)
+    ax.legend(fontsize=8)
+    ax.set_title("Fig. 18: y2'' = 2.2, y3'' = 0.9, Δt = 1.05, Δy = 0.084")
+    data = _csv(out_dir, "fig18", {"x_n": x, "x_next": x_next, "diagonal": x})
+    return Figure("18", "Stick-position map",
+                  "The fixed point of map (59) lies at x_stick,min; depending on the initial "
+                  "conditions the mass accumulates there or sticks beyond it (Sect. 7.3).",
+                  _save(fig, out_dir, "fig18"), [data],
+                  "Middle dashed line: basin bound c1 - 2K cos θ (docs/accumulation.md).")
+
+
+ALL = [fig3, fig4, fig5, fig6, fig7, fig9, fig10, fig11, fig12, fig13, fig16, fig17, fig18]

@@ -1,0 +1,29 @@
+#include "arrays.hpp"
+
+#include <string>
+
+#include "selfalign/error.hpp"
+
+namespace selfalign::python {
+
+std::vector<double> to_vector(const py::handle& values, const char* name) {
+  const auto a = DoubleArray::ensure(values);
+  if (!a) throw py::type_error(std::string(name) + ": expected an array-like of floats");
+  if (a.ndim() != 1)
+    throw InvalidParameter(name, "an array with " + std::to_string(a.ndim()) + " dimensions",
+                           "must be one-dimensional");
+  return {a.data(), a.data() + a.size()};
+}
+
+py::array make_readonly(py::array a) {
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+py::array readonly_bool_view(const std::vector<unsigned char>& values, py::handle owner) {
+  static_assert(sizeof(bool) == sizeof(unsigned char));
+  return make_readonly(py::array(py::dtype::of<bool>(), {static_cast<py::ssize_t>(values.size())},
+                                 {}, values.data(), owner));
+}
+
+}  // namespace selfalign::python

@@ -1,0 +1,69 @@
+#pragma once
+// NumPy conversions shared by the bindings: array-likes in, owning arrays or read-only views
+// out, and elementwise evaluation of scalar library functions.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <utility>
+#include <vector>
+
+namespace selfalign::python {
+
+namespace py = pybind11;
+
+/// A C-contiguous float64 array converted from any array-like (copies only when needed).
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// Copies a 1-D array-like of floats. Throws InvalidParameter(name) unless it is 1-D.
+std::vector<double> to_vector(const py::handle& values, const char* name);
+
+/// Moves a vector into a 1-D NumPy array that owns it (no copy).
+template <class T>
+py::array_t<T> to_array(std::vector<T>&& values) {
+  auto* heap = new std::vector<T>(std::move(values));
+  const py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(static_cast<py::ssize_t>(heap->size()), heap->data(), owner);
+}
+
+/// Marks an array read-only (views of library results must not write into them).
+py::array make_readonly(py::array a);
+
+/// A read-only 1-D view of `values`, which `owner` (the Python object holding them) keeps alive.
+template <class T>
+py::array readonly_view(const std::vector<T>& values, py::handle owner) {
+  return make_readonly(
+      py::array_t<T>(static_cast<py::ssize_t>(values.size()), values.data(), owner));
+}
+/// The same for 0/1 flags stored as unsigned char, viewed as a NumPy bool array.
+py::array readonly_bool_view(const std::vector<unsigned char>& values, py::handle owner);
+
+/// Binds the std::vector member `member` of Class as a read-only NumPy view property.
+template <class PyClass, class Class, class T>
+void def_array(PyClass& cls, const char* name, std::vector<T> Class::*member, const char* doc) {
+  cls.def_property_readonly(
+      name,
+      [member](py::object self) { return readonly_view(self.cast<const Class&>().*member, self); },
+      doc);
+}
+
+/// Is x a Python int or float (or a subclass, e.g. numpy.float64)?
+inline bool is_scalar(const py::handle& x) {
+  return py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x);
+}
+
+/// f(x) elementwise: a Python scalar for a Python int/float, else an ndarray of x's shape
+/// with element type R.
+template <class R, class F>
+py::object map_elementwise(const py::handle& x, const F& f) {
+  if (is_scalar(x)) return py::cast(static_cast<R>(f(x.cast<double>())));
+  const auto in = DoubleArray::ensure(x);
+  if (!in) throw py::type_error("expected a float or an array-like of floats");
+  py::array_t<R> out(std::vector<py::ssize_t>(in.shape(), in.shape() + in.ndim()));
+  const double* src = in.data();
+  R* dst = out.mutable_data();
+  for (py::ssize_t i = 0; i < in.size(); ++i) dst[i] = static_cast<R>(f(src[i]));
+  return out;
+}
+
+}  // namespace selfalign::python

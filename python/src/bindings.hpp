@@ -1,0 +1,28 @@
+#pragma once
+// The Python module selfalign._selfalign: one bind function per area of the library, each in
+// its own file (errors.cpp, units.cpp, ...). Thin: parse arguments, call the library, convert
+// results to NumPy; no physics here.
+
+#include <pybind11/pybind11.h>
+
+#include "int_enum.hpp"
+
+namespace selfalign::python {
+
+namespace py = pybind11;
+
+void bind_errors(py::module_& m);        // InvalidParameter -> selfalign.InvalidParameter
+void bind_units(py::module_& m);         // Scales
+void bind_friction(py::module_& m);      // FrictionMap, UniformFriction, TwoRegionFriction
+void bind_profiles(py::module_& m);      // TableProfile, piecewise-constant, Fourier, sampled
+void bind_three_phase(py::module_& m);   // ThreePhaseParameters/Solution/Profile
+void bind_simulate(py::module_& m);      // ObjectState, Method, SimulationOptions, simulate
+void bind_solvers(py::module_& m);       // exact solver (arcs) and time stepping
+void bind_steady_state(py::module_& m);  // StickSlipCase, predict_case, steady_state
+void bind_floquet(py::module_& m);       // floquet_multipliers
+void bind_convergence(py::module_& m);   // velocity_convergence
+void bind_sweep(py::module_& m);         // grids, families, sweeps
+void bind_stopping(py::module_& m);      // stick positions, stopping runs
+void bind_positioning(py::module_& m);   // positioning accuracy and surfaces
+
+}  // namespace selfalign::python

@@ -1,0 +1,77 @@
+#pragma once
+// Library enums whose values the Python API also hands out as plain ints (case numbers in
+// sweep arrays, arc kinds in exact_arcs) are bound as real Python enum.IntEnum classes: they
+// compare equal to ints, hash like ints, pickle, and convert from ints. A type caster maps the
+// C++ enum to and from the IntEnum class created by bind_int_enum. Every translation unit of
+// the module sees these casters through bindings.hpp (one definition of each caster).
+
+#include <pybind11/pybind11.h>
+
+#include <initializer_list>
+#include <utility>
+
+#include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/simulate/arc.hpp"
+
+namespace selfalign::python {
+
+/// The Python IntEnum class of Enum (set once by bind_int_enum, kept for the process).
+template <class Enum>
+struct IntEnumClass {
+  static inline PyObject* type = nullptr;
+};
+
+/// Creates enum.IntEnum `name` (module 'selfalign') with these members and adds it to m.
+template <class Enum>
+void bind_int_enum(pybind11::module_& m, const char* name, const char* doc,
+                   std::initializer_list<std::pair<const char*, Enum>> members) {
+  namespace py = pybind11;
+  py::list items;
+  for (const auto& [member, value] : members)
+    items.append(py::make_tuple(member, static_cast<int>(value)));
+  py::object cls =
+      py::module_::import("enum").attr("IntEnum")(name, items, py::arg("module") = "selfalign");
+  cls.attr("__doc__") = doc;
+  m.attr(name) = cls;
+  IntEnumClass<Enum>::type = cls.release().ptr();
+}
+
+}  // namespace selfalign::python
+
+namespace pybind11::detail {
+
+template <class Enum>
+struct int_enum_caster {
+  PYBIND11_TYPE_CASTER(Enum, const_name("IntEnum"));
+
+  // Accepts a member of the class, or (when converting) anything the class accepts: an int.
+  bool load(handle src, bool convert) {
+    const handle type(selfalign::python::IntEnumClass<Enum>::type);
+    if (!convert && !isinstance(src, type)) return false;
+    try {
+      value = static_cast<Enum>(reinterpret_borrow<object>(type)(src).template cast<int>());
+      return true;
+    } catch (const error_already_set&) {
+      return false;
+    }
+  }
+  static handle cast(Enum src, return_value_policy, handle) {
+    const handle type(selfalign::python::IntEnumClass<Enum>::type);
+    return reinterpret_borrow<object>(type)(static_cast<int>(src)).release();
+  }
+};
+
+template <>
+struct type_caster<selfalign::StickSlipCase> : int_enum_caster<selfalign::StickSlipCase> {
+  static constexpr auto name = const_name("StickSlipCase");
+};
+template <>
+struct type_caster<selfalign::ArcKind> : int_enum_caster<selfalign::ArcKind> {
+  static constexpr auto name = const_name("ArcKind");
+};
+template <>
+struct type_caster<selfalign::ArcEnd> : int_enum_caster<selfalign::ArcEnd> {
+  static constexpr auto name = const_name("ArcEnd");
+};
+
+}  // namespace pybind11::detail

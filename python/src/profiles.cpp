@@ -1,0 +1,224 @@
+// Table profiles (Sect. 4.4): the TableProfile interface with a vectorised sample(), and the
+// piecewise-constant, Fourier and sampled families. The three-phase profile: three_phase.cpp.
+#include <string>
+#include <utility>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "repr.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/sampled.hpp"
+
+namespace selfalign::python {
+
+namespace {
+
+// (y, y', y'') at every t: floats for a float, arrays of t's shape for an array-like.
+py::tuple sample(const TableProfile& profile, const py::object& t) {
+  if (is_scalar(t)) {
+    const TableState s = profile.state(t.cast<double>());
+    return py::make_tuple(s.y, s.yd, s.ydd);
+  }
+  const auto in = DoubleArray::ensure(t);
+  if (!in) throw py::type_error("t: expected a float or an array-like of floats");
+  const std::vector<py::ssize_t> shape(in.shape(), in.shape() + in.ndim());
+  py::array_t<double> y(shape), yd(shape), ydd(shape);
+  const double* src = in.data();
+  double *py = y.mutable_data(), *pyd = yd.mutable_data(), *pydd = ydd.mutable_data();
+  for (py::ssize_t i = 0; i < in.size(); ++i) {
+    const TableState s = profile.state(src[i]);
+    py[i] = s.y;
+    pyd[i] = s.yd;
+    pydd[i] = s.ydd;
+  }
+  return py::make_tuple(y, yd, ydd);
+}
+
+py::dict segments(const PiecewiseConstantProfile& p) {
+  std::vector<double> begin, accel, y, yd;
+  for (const AccelerationSegment& s : p.segments()) {
+    begin.push_back(s.begin);
+    accel.push_back(s.accel);
+    y.push_back(s.y);
+    yd.push_back(s.yd);
+  }
+  py::dict d;
+  d["begin"] = to_array(std::move(begin));
+  d["accel"] = to_array(std::move(accel));
+  d["y"] = to_array(std::move(y));
+  d["yd"] = to_array(std::move(yd));
+  return d;
+}
+
+std::string profile_repr(const py::object& self) {
+  const auto& p = self.cast<const TableProfile&>();
+  return "<" + py::type::of(self).attr("__name__").cast<std::string>() + " kind='" + p.kind() +
+         "' period=" + format_number(p.period()) + " stroke=" + format_number(p.stroke()) + ">";
+}
+
+void bind_table_profile(py::module_& m) {
+  py::class_<TableState>(m, "TableState",
+                         "Table position, velocity and acceleration at one time [-].")
+      .def(py::init([](double y, double yd, double ydd) {
+             return TableState{y, yd, ydd};
+           }),
+           py::arg("y") = 0.0, py::arg("yd") = 0.0, py::arg("ydd") = 0.0)
+      .def_readwrite("y", &TableState::y, "table position y [-]")
+      .def_readwrite("yd", &TableState::yd, "table velocity y' [-]")
+      .def_readwrite("ydd", &TableState::ydd,
+                     "table acceleration y'' [-] (right limit at a switch)")
+      .def("__repr__", [](const TableState& s) {
+        return Repr("TableState")("y", s.y)("yd", s.yd)("ydd", s.ydd).str();
+      });
+
+  py::class_<TableProfile>(m, "TableProfile", R"doc(
+A prescribed periodic table motion y(t) (Sect. 4.4). Abstract: build a ThreePhaseProfile,
+PiecewiseConstantProfile, FourierProfile or a sampled profile (make_sampled_profile).
+
+All quantities are dimensionless (Sect. 3.2). A profile is periodic with period Δt; its
+velocity has zero mean, and min y = 0 (Sect. 4.4.3, constraint 1), so the stroke is max y.)doc")
+      .def_property_readonly("period", &TableProfile::period, "Δt [-], > 0")
+      .def_property_readonly("peak_acceleration", &TableProfile::peak_acceleration,
+                             "sup over the period of |y''| [-] (used by eq. 40)")
+      .def_property_readonly("stroke", &TableProfile::stroke, "Δy = max y - min y [-]")
+      .def_property_readonly("kind", &TableProfile::kind,
+                             "short family name ('three-phase', 'fourier', ...)")
+      .def("state", &TableProfile::state, py::arg("t"),
+           "y, y', y'' at one time t [-] (any real t: periodic extension; y'' right-continuous).")
+      .def(
+          "velocity",
+          [](const TableProfile& p, const py::object& t) {
+            return map_elementwise<double>(t, [&](double v) { return p.velocity(v); });
+          },
+          py::arg("t"), "y'(t) [-] at time(s) t (float or ndarray).")
+      .def("sample", &sample, py::arg("t"), R"doc(
+The table motion at every time of t (float or array-like of any shape) [-]: a tuple
+(y, yd, ydd) of float64 arrays shaped like t (floats for a float t).)doc")
+      .def("piecewise_constant", &TableProfile::piecewise_constant,
+           py::return_value_policy::reference_internal,
+           "The profile as a PiecewiseConstantProfile when its acceleration is piecewise "
+           "constant (then the exact solver applies), else None.")
+      .def("__repr__", &profile_repr);
+}
+
+void bind_piecewise_constant(py::module_& m) {
+  py::class_<PiecewiseConstantProfile, TableProfile>(m, "PiecewiseConstantProfile", R"doc(
+A periodic table profile whose acceleration is piecewise constant: a periodic sequence of
+second-order polynomials y(t) (Fig. 3 style, Sect. 4.2); the form the exact solver integrates.
+Build it with PiecewiseConstantProfile.from_accelerations.)doc")
+      .def_static(
+          "from_accelerations",
+          [](const py::object& durations, const py::object& accels, const std::string& kind) {
+            const std::vector<double> d = to_vector(durations, "durations");
+            const std::vector<double> a = to_vector(accels, "accels");
+            return PiecewiseConstantProfile::from_accelerations(d, a, kind);
+          },
+          py::arg("durations"), py::arg("accels"), py::arg("kind") = "quadratic-sequence",
+          R"doc(
+The periodic profile with accelerations accels[i] [-] held for durations[i] [-].
+
+Periodicity of y' needs sum(accels[i] durations[i]) = 0 (checked to 1e-12 relative to
+sum |accels[i]| durations[i]). The initial velocity makes the mean velocity zero (periodic y),
+the initial position makes min y = 0. Zero-length segments are dropped. Raises
+InvalidParameter on sizes that differ, negative or non-finite durations, a zero period,
+non-finite accelerations, or a velocity that does not return.)doc")
+      .def("segments", &segments, R"doc(
+The constant-acceleration segments of one period as a dict of 1-D float64 arrays:
+'begin' (start time in [0, Δt)), 'accel' (y''), 'y' and 'yd' (table state at the start) [-].)doc")
+      .def("segment_at", &PiecewiseConstantProfile::segment_at, py::arg("phase"),
+           "Index of the segment containing phase p in [0, Δt).")
+      .def("phase", &PiecewiseConstantProfile::phase, py::arg("t"), "Phase of t in [0, Δt) [-].");
+}
+
+void bind_fourier(py::module_& m) {
+  py::class_<FourierProfile, TableProfile>(m, "FourierProfile", R"doc(
+A Fourier-series table profile of any order N (Sect. 4.4.2):
+  y(t) = c_0 + sum_{k=1..N} (A_k cos(k w t) + B_k sin(k w t)),   w = 2 pi / Δt,
+with c_0 chosen so that min y = 0. Periodic in y and y' by construction. Not piecewise
+constant: simulate it with Method.time_stepping.)doc")
+      .def(py::init([](double period, const py::object& cos_coeffs, const py::object& sin_coeffs) {
+             return FourierProfile(period, to_vector(cos_coeffs, "cos_coeffs"),
+                                   to_vector(sin_coeffs, "sin_coeffs"));
+           }),
+           py::arg("period"), py::arg("cos_coeffs"), py::arg("sin_coeffs"), R"doc(
+period:     Δt [-], > 0
+cos_coeffs: A_1..A_N [-]; sin_coeffs: B_1..B_N [-] (the shorter is padded with zeros);
+            finite, not all zero. Raises InvalidParameter otherwise.)doc")
+      .def_property_readonly("order", &FourierProfile::order, "N")
+      .def_property_readonly(
+          "cos_coeffs",
+          [](const FourierProfile& p) { return to_array(std::vector(p.cos_coeffs())); },
+          "A_1..A_N [-] (a copy)")
+      .def_property_readonly(
+          "sin_coeffs",
+          [](const FourierProfile& p) { return to_array(std::vector(p.sin_coeffs())); },
+          "B_1..B_N [-] (a copy)")
+      .def_property_readonly("offset", &FourierProfile::offset, "c_0 [-]");
+}
+
+void bind_sampled(py::module_& m) {
+  py::enum_<Interpolation>(m, "Interpolation",
+                           "How sampled accelerations are interpolated; also accepted as the "
+                           "strings 'constant' and 'linear'.")
+      .value("constant", Interpolation::constant,
+             "y'' = y''_i on [t_i, t_{i+1}) (piecewise constant: the exact solver applies)")
+      .value("linear", Interpolation::linear, "y'' linear between samples (piecewise-cubic y)")
+      .def(py::init(&parse_interpolation), py::arg("text"));
+  py::implicitly_convertible<py::str, Interpolation>();
+
+  py::class_<AccelerationSamples>(m, "AccelerationSamples",
+                                  "Samples (t_i, y''_i) of one table period.")
+      .def(py::init([](const py::object& t, const py::object& ydd) {
+             return AccelerationSamples{to_vector(t, "t"), to_vector(ydd, "ydd")};
+           }),
+           py::arg("t"), py::arg("ydd"),
+           "t: sample times [-] (t[0] = 0, strictly increasing; the last is the period Δt); "
+           "ydd: table accelerations at t [-].")
+      .def_property(
+          "t", [](const AccelerationSamples& s) { return to_array(std::vector(s.t)); },
+          [](AccelerationSamples& s, const py::object& v) { s.t = to_vector(v, "t"); },
+          "sample times (a float64 copy) [-] or [s]")
+      .def_property(
+          "ydd", [](const AccelerationSamples& s) { return to_array(std::vector(s.ydd)); },
+          [](AccelerationSamples& s, const py::object& v) { s.ydd = to_vector(v, "ydd"); },
+          "table accelerations at t (a float64 copy) [-] or [m/s^2]")
+      .def("__len__", [](const AccelerationSamples& s) { return s.t.size(); });
+
+  m.def(
+      "read_acceleration_samples",
+      [](const py::object& path) {
+        return read_acceleration_samples(py::str(py::module_::import("os").attr("fspath")(path)));
+      },
+      py::arg("path"), R"doc(
+Reads a samples CSV: one 't,y''' pair per line, in the same unit system as the rest of the
+input; blank lines, lines starting with '#', and one leading header line are ignored. The first
+time must be 0, times strictly increasing; the last time is the period Δt. Raises
+InvalidParameter naming the file and line on malformed input.)doc");
+
+  m.def("make_sampled_profile", &make_sampled_profile, py::arg("samples"),
+        py::arg("interpolation") = Interpolation::constant, R"doc(
+The periodic profile of dimensionless samples, interpolated piecewise constant (returns a
+PiecewiseConstantProfile: the exact solver applies) or piecewise linear (returns a
+LinearAccelerationProfile). The acceleration must integrate to zero over the period (1e-9
+relative); the initial velocity makes y periodic and the initial position makes min y = 0.
+Raises InvalidParameter on fewer than 2 samples, t[0] != 0, non-increasing or non-finite
+times, non-finite accelerations or a non-zero net velocity change.)doc");
+
+  py::class_<LinearAccelerationProfile, TableProfile>(
+      m, "LinearAccelerationProfile",
+      "Piecewise-linear acceleration (piecewise-cubic y) through samples; built by "
+      "make_sampled_profile(samples, Interpolation.linear).")
+      .def(py::init<const AccelerationSamples&>(), py::arg("samples"));
+}
+
+}  // namespace
+
+void bind_profiles(py::module_& m) {
+  bind_table_profile(m);
+  bind_piecewise_constant(m);
+  bind_fourier(m);
+  bind_sampled(m);
+}
+
+}  // namespace selfalign::python

@@ -1,0 +1,141 @@
+// One run of either solver: ObjectState, Method, SimulationOptions, simulate() and its
+// sampled trajectory as NumPy columns.
+#include "selfalign/simulate/simulate.hpp"
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "repr.hpp"
+
+namespace selfalign::python {
+
+namespace {
+
+void bind_object_state(py::module_& m) {
+  py::class_<ObjectState>(m, "ObjectState", R"doc(
+State of the object at one time [-]: x is its position relative to the table (its leading
+edge, for the friction map), xd = x' its velocity relative to the table.)doc")
+      .def(py::init([](double t, double x, double xd) {
+             return ObjectState{t, x, xd};
+           }),
+           py::arg("t") = 0.0, py::arg("x") = 0.0, py::arg("xd") = 0.0)
+      .def_readwrite("t", &ObjectState::t, "time [-]")
+      .def_readwrite("x", &ObjectState::x, "position relative to the table [-]")
+      .def_readwrite("xd", &ObjectState::xd, "relative velocity x' [-]")
+      .def("__repr__", [](const ObjectState& s) {
+        return Repr("ObjectState")("t", s.t)("x", s.x)("xd", s.xd).str();
+      });
+}
+
+void bind_trajectory(py::module_& m) {
+  py::class_<Trajectory> cls(m, "Trajectory", R"doc(
+A sampled trajectory [-]: equal-length read-only NumPy columns t, x, xd, y, yd, ydd (float64)
+and stick (bool). The arrays are views into the result (kept alive by it); copy them to modify.)doc");
+  def_array(cls, "t", &Trajectory::t, "time [-]");
+  def_array(cls, "x", &Trajectory::x, "object position relative to the table [-]");
+  def_array(cls, "xd", &Trajectory::xd, "object velocity relative to the table x' [-]");
+  def_array(cls, "y", &Trajectory::y, "table position y [-]");
+  def_array(cls, "yd", &Trajectory::yd, "table velocity y' [-]");
+  def_array(cls, "ydd", &Trajectory::ydd, "table acceleration y'' [-]");
+  cls.def_property_readonly(
+      "stick",
+      [](const py::object& self) {
+        return readonly_bool_view(self.cast<const Trajectory&>().stick, self);
+      },
+      "True where the object sticks (x' = 0, no slip)");
+  cls.def("__len__", &Trajectory::size);
+  cls.def("__repr__", [](const Trajectory& t) {
+    return "<Trajectory: " + std::to_string(t.size()) + " samples>";
+  });
+  cls.def(
+      "as_dict",
+      [](const py::object& self) {
+        py::dict d;
+        for (const char* c : {"t", "x", "xd", "y", "yd", "ydd", "stick"}) d[c] = self.attr(c);
+        return d;
+      },
+      "The columns as a dict name -> array (e.g. for numpy.savetxt or pandas.DataFrame).");
+}
+
+void bind_method(py::module_& m) {
+  py::enum_<Method>(m, "Method",
+                    "Solver choice; also accepted as the strings 'exact' and 'time-stepping'.")
+      .value("exact", Method::exact,
+             "event-driven closed form: piecewise-constant y'', piecewise-affine m(x)")
+      .value("time_stepping", Method::time_stepping,
+             "Moreau time-stepping (Sect. 4.1): any profile and friction map")
+      .def(py::init(&parse_method), py::arg("text"));
+  py::implicitly_convertible<py::str, Method>();
+}
+
+void bind_options(py::module_& m) {
+  const SimulationOptions d;
+  py::class_<SimulationOptions>(m, "SimulationOptions", "Options of simulate().")
+      .def(py::init([](Method method, double duration, double step, double theta,
+                       double output_step, bool record) {
+             SimulationOptions o;
+             o.method = method;
+             o.duration = duration;
+             o.step = step;
+             o.theta = theta;
+             o.output_step = output_step;
+             o.record = record;
+             return o;
+           }),
+           py::kw_only(), py::arg("method") = d.method, py::arg("duration") = d.duration,
+           py::arg("step") = d.step, py::arg("theta") = d.theta,
+           py::arg("output_step") = d.output_step, py::arg("record") = d.record)
+      .def_readwrite("method", &SimulationOptions::method, "Method.exact or Method.time_stepping")
+      .def_readwrite("duration", &SimulationOptions::duration, "simulated time after t0 [-], > 0")
+      .def_readwrite("step", &SimulationOptions::step,
+                     "time-stepping step h [-], > 0 (unused by the exact solver)")
+      .def_readwrite("theta", &SimulationOptions::theta, "time-stepping theta, in [0, 1]")
+      .def_readwrite("output_step", &SimulationOptions::output_step,
+                     "spacing of recorded samples [-]; 0: h (time-stepping) or Δt/200 (exact)")
+      .def_readwrite("record", &SimulationOptions::record,
+                     "False: only the summary (empty trajectory)")
+      .def("__repr__", [](const SimulationOptions& o) {
+        return Repr("SimulationOptions")
+            .raw("method", enum_name(o.method))("duration", o.duration)("step", o.step)(
+                "theta", o.theta)("output_step", o.output_step)("record", o.record)
+            .str();
+      });
+}
+
+}  // namespace
+
+void bind_simulate(py::module_& m) {
+  bind_object_state(m);
+  bind_trajectory(m);
+  bind_method(m);
+  bind_options(m);
+
+  py::class_<SimulationResult>(m, "SimulationResult", "The outcome of simulate().")
+      .def_readonly("trajectory", &SimulationResult::trajectory,
+                    "samples at t0 + j*output_step and at the end time (NumPy columns)")
+      .def_readonly("final_state", &SimulationResult::final_state, "state at t0 + duration [-]")
+      .def_readonly("work", &SimulationResult::work,
+                    "arcs (exact) or steps (time-stepping) computed")
+      .def_readonly("mean_velocity_last_period", &SimulationResult::mean_velocity_last_period,
+                    "(x(t_end) - x(t_end - Δt))/Δt [-]; NaN if the run is shorter than a period")
+      .def_readonly("stick_fraction", &SimulationResult::stick_fraction,
+                    "fraction of recorded samples in stick [-]")
+      .def("__repr__", [](const SimulationResult& r) {
+        return Repr("SimulationResult")
+            .raw("final_state", py::repr(py::cast(r.final_state)))(
+                "samples", static_cast<long long>(r.trajectory.size()))(
+                "work", static_cast<long long>(r.work))(
+                "mean_velocity_last_period", r.mean_velocity_last_period)("stick_fraction",
+                                                                          r.stick_fraction)
+            .str();
+      });
+
+  m.def("simulate", &simulate, py::arg("profile"), py::arg("friction"),
+        py::arg("initial") = ObjectState{}, py::arg("options") = SimulationOptions{},
+        py::call_guard<py::gil_scoped_release>(), R"doc(
+Simulates eq. (6), -Sign(x') ∋ x'' + y'', with friction bound m(x) from `initial` over
+options.duration, with the exact event-driven solver or Moreau time-stepping. Raises
+InvalidParameter on bad options, or when Method.exact is asked of a profile that is not
+piecewise constant or a friction map that is not piecewise affine. Runs without the GIL.)doc");
+}
+
+}  // namespace selfalign::python

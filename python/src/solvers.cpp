@@ -1,0 +1,205 @@
+// The two solvers one step below simulate(): the exact event-driven solver (its arcs, eqs.
+// 12-24 and 42-47) and Moreau time-stepping (Sect. 4.1), each with an explicit state.
+#include <cstdint>
+#include <utility>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "repr.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
+
+namespace selfalign::python {
+
+namespace {
+
+// The exact solver's setup borrowed from a profile and a friction map.
+ExactSetup exact_setup(const TableProfile& profile, const FrictionMap& friction) {
+  const PiecewiseConstantProfile* p = profile.piecewise_constant();
+  if (!p)
+    throw InvalidParameter("profile", profile.kind(),
+                           "the exact solver needs a piecewise-constant table acceleration");
+  const PiecewiseAffineFriction* f = friction.piecewise_affine();
+  if (!f)
+    throw InvalidParameter("friction", "not piecewise affine",
+                           "the exact solver needs a piecewise-affine friction map");
+  return {*p, *f};
+}
+
+// Collects arcs column-wise.
+struct ArcColumns final : ArcSink {
+  std::vector<double> t0, t1, x0, xd0, x1, xd1, table_accel, bound0, slope, alpha, omega, center;
+  std::vector<std::int8_t> kind, direction, end;
+  std::vector<std::int64_t> segment, piece;
+  void on_arc(const Arc& a) override {
+    t0.push_back(a.t0), t1.push_back(a.t1), x0.push_back(a.x0), xd0.push_back(a.xd0);
+    x1.push_back(a.x1), xd1.push_back(a.xd1), table_accel.push_back(a.table_accel);
+    bound0.push_back(a.bound0), slope.push_back(a.slope), alpha.push_back(a.alpha);
+    omega.push_back(a.omega), center.push_back(a.center);
+    kind.push_back(static_cast<std::int8_t>(a.kind));
+    direction.push_back(a.direction);
+    end.push_back(static_cast<std::int8_t>(a.end));
+    segment.push_back(static_cast<std::int64_t>(a.segment));
+    piece.push_back(static_cast<std::int64_t>(a.piece));
+  }
+  py::dict to_dict() && {
+    py::dict d;
+    d["t0"] = to_array(std::move(t0)), d["t1"] = to_array(std::move(t1));
+    d["x0"] = to_array(std::move(x0)), d["xd0"] = to_array(std::move(xd0));
+    d["x1"] = to_array(std::move(x1)), d["xd1"] = to_array(std::move(xd1));
+    d["table_accel"] = to_array(std::move(table_accel));
+    d["bound0"] = to_array(std::move(bound0)), d["slope"] = to_array(std::move(slope));
+    d["alpha"] = to_array(std::move(alpha)), d["omega"] = to_array(std::move(omega));
+    d["center"] = to_array(std::move(center));
+    d["kind"] = to_array(std::move(kind)), d["direction"] = to_array(std::move(direction));
+    d["end"] = to_array(std::move(end));
+    d["segment"] = to_array(std::move(segment)), d["piece"] = to_array(std::move(piece));
+    return d;
+  }
+};
+
+void bind_exact(py::module_& m) {
+  bind_int_enum<ArcKind>(m, "ArcKind", R"doc(
+The closed form of one exact arc (an enum.IntEnum).
+  stick      = 0  x' = 0, x constant (|y''| <= m(x))
+  parabolic  = 1  constant friction: x'' = alpha (eqs. 12-24)
+  harmonic   = 2  x'' = -omega^2 (x - x_e) (eqs. 42-47)
+  hyperbolic = 3  x'' = +omega^2 (x - x_e) (backward slip on rising friction))doc",
+                         {{"stick", ArcKind::stick},
+                          {"parabolic", ArcKind::parabolic},
+                          {"harmonic", ArcKind::harmonic},
+                          {"hyperbolic", ArcKind::hyperbolic}});
+  bind_int_enum<ArcEnd>(m, "ArcEnd", R"doc(
+What ended an arc (an enum.IntEnum).
+  acceleration_switch = 0  the table acceleration changed (segment end)
+  velocity_zero       = 1  x' reached 0 (the stick/slip decision follows)
+  friction_boundary   = 2  x reached the end of a friction piece (e.g. x_mu or x_mu + w)
+  horizon             = 3  the requested end time)doc",
+                        {{"acceleration_switch", ArcEnd::acceleration_switch},
+                         {"velocity_zero", ArcEnd::velocity_zero},
+                         {"friction_boundary", ArcEnd::friction_boundary},
+                         {"horizon", ArcEnd::horizon}});
+
+  py::class_<ExactState>(m, "ExactState",
+                         "Mutable state of the exact solver: the object state plus where it is "
+                         "in the profile. Make it with make_exact_state.")
+      .def_readwrite("object", &ExactState::object, "t, x, x' [-]")
+      .def_readwrite("segment", &ExactState::segment, "current acceleration segment")
+      .def_readwrite("period_index", &ExactState::period_index, "floor(t / Δt)")
+      .def("__repr__", [](const ExactState& s) {
+        return Repr("ExactState")("t", s.object.t)("x", s.object.x)("xd", s.object.xd)(
+                   "segment", static_cast<long long>(s.segment))("period_index", s.period_index)
+            .str();
+      });
+
+  m.def(
+      "make_exact_state",
+      [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& object) {
+        return make_exact_state(exact_setup(profile, friction), object);
+      },
+      py::arg("profile"), py::arg("friction"), py::arg("object") = ObjectState{},
+      "Places an object state in a piecewise-constant profile (finds its period and segment).");
+  m.def(
+      "advance_exact",
+      [](const TableProfile& profile, const FrictionMap& friction, ExactState& state,
+         double t_end) {
+        require_finite("t_end", t_end);
+        return advance_exact(exact_setup(profile, friction), state, t_end);
+      },
+      py::arg("profile"), py::arg("friction"), py::arg("state"), py::arg("t_end"),
+      py::call_guard<py::gil_scoped_release>(), R"doc(
+Advances `state` in place to time t_end (>= state.object.t) with the exact event-driven
+solver; returns the number of arcs computed. Events (acceleration switches, x' = 0, friction
+boundaries) are located in closed form; at x' = 0 the set-valued law decides: stick iff
+|y''| <= m(x) (eqs. 2, 6). Raises InvalidParameter for a profile that is not piecewise
+constant or a friction map that is not piecewise affine.)doc");
+  m.def(
+      "exact_arcs",
+      [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& initial,
+         double duration) {
+        require_positive("duration", duration);
+        const ExactSetup setup = exact_setup(profile, friction);
+        ArcColumns arcs;
+        {
+          py::gil_scoped_release release;
+          ExactState state = make_exact_state(setup, initial);
+          advance_exact(setup, state, initial.t + duration, &arcs);
+        }
+        return std::move(arcs).to_dict();
+      },
+      py::arg("profile"), py::arg("friction"), py::arg("initial") = ObjectState{},
+      py::arg("duration") = 20.0, R"doc(
+Every closed-form arc of an exact run from `initial` over `duration` [-], as a dict of 1-D
+arrays (one entry per arc):
+  float64: t0, t1 (start, end time), x0, xd0, x1, xd1 (state at t0, t1), table_accel (y''),
+           bound0 (m(x0)), slope (k = dm/dx), alpha (parabolic x''), omega, center
+           (harmonic/hyperbolic omega and x_e)
+  int8:    kind (ArcKind), direction (slip direction +1/-1, 0 for stick), end (ArcEnd)
+  int64:   segment (table-acceleration segment), piece (friction piece)
+Between events x'' = -sigma m(x) - y'' has constant coefficients (eqs. 12-24, 42-47).)doc");
+
+  m.def("sticks", &sticks, py::arg("table_accel"), py::arg("bound"),
+        "The set-valued law (2): an object at rest relative to the table under table "
+        "acceleration A is held by friction bound m iff |A| <= m.");
+}
+
+void bind_time_stepping(py::module_& m) {
+  const TimeSteppingOptions d;
+  py::class_<TimeSteppingOptions>(m, "TimeSteppingOptions", "Options of Moreau's time-stepping.")
+      .def(py::init([](double step, double theta) {
+             return TimeSteppingOptions{step, theta};
+           }),
+           py::kw_only(), py::arg("step") = d.step, py::arg("theta") = d.theta)
+      .def_readwrite("step", &TimeSteppingOptions::step, "step size h [-], > 0")
+      .def_readwrite("theta", &TimeSteppingOptions::theta,
+                     "theta of the position update, in [0, 1]")
+      .def(
+          "validate", [](const TimeSteppingOptions& o) { validate(o); },
+          "Raises InvalidParameter unless 0 < step and 0 <= theta <= 1.")
+      .def("__repr__", [](const TimeSteppingOptions& o) {
+        return Repr("TimeSteppingOptions")("step", o.step)("theta", o.theta).str();
+      });
+
+  py::class_<TimeSteppingState>(m, "TimeSteppingState",
+                                "Mutable state of the stepper (step times are t0 + k h). Make "
+                                "it with make_time_stepping_state.")
+      .def_readwrite("object", &TimeSteppingState::object, "t, x, x' [-]")
+      .def_readwrite("t0", &TimeSteppingState::t0, "time of step 0 [-]")
+      .def_readwrite("step_index", &TimeSteppingState::step_index, "k")
+      .def_readwrite("table_velocity", &TimeSteppingState::table_velocity, "y'(t_k) [-]")
+      .def_readwrite("stick", &TimeSteppingState::stick, "whether the last step ended in stick")
+      .def("__repr__", [](const TimeSteppingState& s) {
+        return Repr("TimeSteppingState")("t", s.object.t)("x", s.object.x)("xd", s.object.xd)(
+                   "step_index", s.step_index)("stick", s.stick)
+            .str();
+      });
+
+  m.def("make_time_stepping_state", &make_time_stepping_state, py::arg("profile"),
+        py::arg("object") = ObjectState{}, "Starts a stepper at an object state.");
+  m.def(
+      "advance_time_stepping",
+      [](const TableProfile& profile, const FrictionMap& friction,
+         const TimeSteppingOptions& options, TimeSteppingState& state, long long steps) {
+        validate(options);
+        if (steps < 0) throw InvalidParameter("steps", static_cast<double>(steps), "must be >= 0");
+        advance_time_stepping(profile, friction, options, state, steps);
+      },
+      py::arg("profile"), py::arg("friction"), py::arg("options"), py::arg("state"),
+      py::arg("steps"), py::call_guard<py::gil_scoped_release>(), R"doc(
+Advances `state` in place by `steps` Moreau steps (Sect. 4.1). One step t_k -> t_k + h:
+  x_M      = x_k + (h/2) x'_k                         (where friction is read)
+  x'_{k+1} = x'_k - (y'(t_{k+1}) - y'(t_k)) - h m(x_M) s,   s ∈ Sign(x'_{k+1})
+  x_{k+1}  = x_k + h ((1 - theta) x'_k + theta x'_{k+1})
+solved in closed form (a projection: stick iff |v*| <= h m(x_M)). Any profile and friction
+map. Raises InvalidParameter on bad options or steps < 0.)doc");
+}
+
+}  // namespace
+
+void bind_solvers(py::module_& m) {
+  bind_exact(m);
+  bind_time_stepping(m);
+}
+
+}  // namespace selfalign::python

@@ -1,0 +1,127 @@
+// Motion cases (Table 1, Sect. 5.1) and the steady state on the uniform table (Sect. 4.3, 5.1,
+// 6.2): v̄ (eq. 10) and the objective f (eq. 11).
+#include "selfalign/analysis/steady_state.hpp"
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "repr.hpp"
+#include "selfalign/analysis/motion_case.hpp"
+
+namespace selfalign::python {
+
+namespace {
+
+void bind_cases(py::module_& m) {
+  bind_int_enum<StickSlipCase>(m, "StickSlipCase", R"doc(
+The motion cases of Table 1 (Sect. 5.1) plus the non-physical case 0.
+
+An enum.IntEnum: a member equals the paper's case number (StickSlipCase.slip_slip == 4), and
+the case arrays of the sweeps hold these ints (StickSlipCase(a[i, j]) names one).
+  non_physical        = 0  no three-phase profile with this stroke exists
+  stick_slip_forward  = 1  stick-slip with x' >= 0 (desirable)
+  stick_slip_backward = 2  stick-slip with x' <= 0 (undesirable)
+  general_stick_slip  = 3  stick-slip in both directions
+  slip_slip           = 4  never sticks
+  pure_stick          = 5  no relative motion)doc",
+                               {{"non_physical", StickSlipCase::non_physical},
+                                {"stick_slip_forward", StickSlipCase::stick_slip_forward},
+                                {"stick_slip_backward", StickSlipCase::stick_slip_backward},
+                                {"general_stick_slip", StickSlipCase::general_stick_slip},
+                                {"slip_slip", StickSlipCase::slip_slip},
+                                {"pure_stick", StickSlipCase::pure_stick}});
+
+  m.def("describe", &describe, py::arg("case"),
+        "Table 1's description of a case, e.g. \"stick-slip x' >= 0\".");
+  m.def("predict_case", &predict_case, py::arg("parameters"), R"doc(
+A priori case of the three-phase profile (the rules of the paper's flow chart, Fig. 8,
+derived in docs/motion-cases.md). With a = a2, b = a3 and T1 = t1, T2 = t2 - t1, T3 = t3 - t2:
+  not physical -> 0;  a <= 1, b <= 1 -> 5;  a > 1, b <= 1 -> 1;  a <= 1, b > 1 -> 2;
+  a > 1, b > 1: with the object at rest at t1 it stops in [t2, t3] after
+  tau_s = (a - 1) T2 / (1 + b) and slides back to x'(t3) = -(b - 1)(T3 - tau_s);
+  |x'(t3)| < T1 -> 3, otherwise -> 4.
+Raises InvalidParameter on non-positive or NaN parameters.)doc");
+}
+
+void bind_steady_options(py::module_& m) {
+  const SteadyStateOptions d;
+  py::class_<SteadyStateOptions>(m, "SteadyStateOptions", "Options of steady_state().")
+      .def(py::init([](int max_periods, double velocity_tol, int steps_per_period, double theta,
+                       double stepping_tol) {
+             SteadyStateOptions o;
+             o.max_periods = max_periods;
+             o.velocity_tol = velocity_tol;
+             o.steps_per_period = steps_per_period;
+             o.theta = theta;
+             o.stepping_tol = stepping_tol;
+             return o;
+           }),
+           py::kw_only(), py::arg("max_periods") = d.max_periods,
+           py::arg("velocity_tol") = d.velocity_tol,
+           py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
+           py::arg("stepping_tol") = d.stepping_tol)
+      .def_readwrite("max_periods", &SteadyStateOptions::max_periods,
+                     "periods simulated at most before giving up (>= 2)")
+      .def_readwrite("velocity_tol", &SteadyStateOptions::velocity_tol,
+                     "|P(v) - v| accepted as steady [-] (exact solver)")
+      .def_readwrite("steps_per_period", &SteadyStateOptions::steps_per_period,
+                     "time-stepping (profiles the exact solver cannot take): h = Δt / this")
+      .def_readwrite("theta", &SteadyStateOptions::theta, "time-stepping theta")
+      .def_readwrite("stepping_tol", &SteadyStateOptions::stepping_tol,
+                     "time-stepping: |P(v) - v| accepted [-]; 0: 10 h")
+      .def("__repr__", [](const SteadyStateOptions& o) {
+        return Repr("SteadyStateOptions")("max_periods", o.max_periods)(
+                   "velocity_tol", o.velocity_tol)("steps_per_period", o.steps_per_period)(
+                   "theta", o.theta)("stepping_tol", o.stepping_tol)
+            .str();
+      });
+}
+
+}  // namespace
+
+void bind_steady_state(py::module_& m) {
+  bind_cases(m);
+  bind_steady_options(m);
+
+  py::class_<SteadyState>(m, "SteadyState", "The periodic velocity response on the uniform table.")
+      .def_readonly("converged", &SteadyState::converged,
+                    "False: max_periods reached (the fields hold the last iterate)")
+      .def_readonly("method", &SteadyState::method, "the solver used")
+      .def_readonly("x_dot_0s", &SteadyState::x_dot_0s,
+                    "steady-state x' at the profile's t0 (phase 0) [-]")
+      .def_readonly("phase", &SteadyState::phase,
+                    "phase of the steady-state initial condition in [0, Δt) [-]")
+      .def_readonly("v_bar", &SteadyState::v_bar,
+                    "average velocity over a steady period, eq. (10) [-]")
+      .def_readonly("f", &SteadyState::f, "objective of eq. (11) [-]; +inf when v̄ = 0")
+      .def_readonly("displacement", &SteadyState::displacement,
+                    "x(t0 + Δt) - x(t0) over a steady period [-]")
+      .def_readonly("periods", &SteadyState::periods, "periods simulated to find it")
+      .def_readonly("motion_case", &SteadyState::motion_case,
+                    "a posteriori Table 1 case of the steady period")
+      .def("__repr__", [](const SteadyState& s) {
+        return Repr("SteadyState")("converged", s.converged)("x_dot_0s", s.x_dot_0s)(
+                   "v_bar", s.v_bar)("f", s.f)
+            .raw("motion_case", enum_name(s.motion_case))("periods", s.periods)
+            .str();
+      });
+
+  m.def("steady_state", &steady_state, py::arg("profile"),
+        py::arg("options") = SteadyStateOptions{}, py::call_guard<py::gil_scoped_release>(),
+        R"doc(
+Steady state on the uniform table (friction bound 1): the unique periodic velocity response
+(Sect. 6.2), found by iterating the period map P(v) = x'(t0 + Δt) and secant steps on
+P(v) - v; its average velocity v̄ (eq. 10), objective f (eq. 11) and a posteriori case.
+Exact solver where the table acceleration is piecewise constant, time-stepping otherwise.
+Raises InvalidParameter on bad options. Runs without the GIL.)doc");
+
+  m.attr("OBJECTIVE_SCALE") = kObjectiveScale;
+  m.def(
+      "objective_f",
+      [](const py::object& v_bar, double c) {
+        return map_elementwise<double>(v_bar, [c](double v) { return objective_f(v, c); });
+      },
+      py::arg("v_bar"), py::arg("c") = kObjectiveScale,
+      "Objective f = 1/(c v̄^2) of eq. (11) (float or ndarray); +inf where v̄ = 0.");
+}
+
+}  // namespace selfalign::python

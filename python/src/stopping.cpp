@@ -1,0 +1,134 @@
+// Where and how the object stops in the friction transition region (Sect. 7.2, 7.3):
+// eqs. (40), (41), the stick-position map (59)-(60) and stopping runs.
+#include "selfalign/analysis/stopping.hpp"
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "repr.hpp"
+#include "selfalign/analysis/stick_position.hpp"
+
+namespace selfalign::python {
+
+namespace {
+
+void bind_stick_position(py::module_& m) {
+  m.def(
+      "sticks_permanently",
+      [](const FrictionMap& friction, double peak_acceleration, const py::object& x) {
+        return map_elementwise<bool>(
+            x, [&](double v) { return sticks_permanently(friction, peak_acceleration, v); });
+      },
+      py::arg("friction"), py::arg("peak_acceleration"), py::arg("x"),
+      "eq. (40): True where an object at rest at x [-] is held by friction whatever the table "
+      "does, i.e. m(x) >= max |y''| (bool, or a bool ndarray shaped like x).");
+  m.def("stick_position_min", &stick_position_min, py::arg("friction"),
+        py::arg("peak_acceleration"), R"doc(
+eq. (41) [-]: x_stick,min = x_mu + w (max|y''| - 1)/(c_mu - 1), the smallest x >= x_mu at
+which eq. (40) holds; x_mu when the peak acceleration is <= 1, +inf when it exceeds c_mu (the
+object never stops for good).)doc");
+
+  py::class_<StickPositionMap>(m, "StickPositionMap", R"doc(
+The stick-position map of eq. (59) for a three-phase profile on a two-region table:
+  x_{n+1} = c2 + sqrt((K + d cos θ)^2 + (d sin θ)^2),   d = x_n - c1,
+  c1 = (b2 + a2)/b1,  c2 = (b2 - a3)/b1,  K = (a2 + a3)/b1,  θ = sqrt(b1) (t2 - t1),
+with fixed point c1 (eq. 60) and slope cos θ there (docs/accumulation.md). Calling the map
+works elementwise on floats and ndarrays.)doc")
+      .def(py::init<const ThreePhaseProfile&, const TwoRegionFriction&>(), py::arg("profile"),
+           py::arg("friction"))
+      .def(
+          "__call__",
+          [](const StickPositionMap& map, const py::object& x_n) {
+            return map_elementwise<double>(x_n, [&](double v) { return map(v); });
+          },
+          py::arg("x_n"), "x_{n+1} of eq. (59) [-] (float or ndarray)")
+      .def("fixed_point", &StickPositionMap::fixed_point, "eq. (60): (b2 + a2)/b1 [-]")
+      .def("slope_at_fixed_point", &StickPositionMap::slope_at_fixed_point,
+           "d x_{n+1}/d x_n at the fixed point: cos θ [-]")
+      .def("basin_lower_bound", &StickPositionMap::basin_lower_bound,
+           "x_{n+1}(x) < fixed point iff x > this bound (for x < fixed point) [-]")
+      .def("accumulates_for_every_entry", &StickPositionMap::accumulates_for_every_entry,
+           "Sect. 7.3: accumulation for every entry iff x_{n+1}(x_mu) < x_stick,min.")
+      .def("proves_accumulation_from", &StickPositionMap::proves_accumulation_from, py::arg("x_n"),
+           "Whether an object stuck at x_n at the start of a period provably accumulates to "
+           "the fixed point (the map's assumptions hold along the sequence).")
+      .def(
+          "slip_duration",
+          [](const StickPositionMap& map, const py::object& x_n) {
+            return map_elementwise<double>(x_n, [&](double v) { return map.slip_duration(v); });
+          },
+          py::arg("x_n"), "Time from t1 to the stop x_{n+1}: (t2 - t1) + eq. (58)'s arc time [-].");
+}
+
+void bind_stopping_run(py::module_& m) {
+  py::enum_<StopKind>(m, "StopKind", "How a stopping run ended.")
+      .value("permanent_stick", StopKind::permanent_stick,
+             "stuck for good at end_position (eq. 40)")
+      .value("accumulation", StopKind::accumulation,
+             "stick positions accumulate at end_position = x_stick,min (eq. 60)")
+      .value("not_stopped", StopKind::not_stopped,
+             "max_periods reached without a proof (e.g. the object never arrives)");
+
+  const StoppingOptions d;
+  py::class_<StoppingOptions>(m, "StoppingOptions", "Options of stopping_run().")
+      .def(py::init([](int max_periods, const py::object& fractions) {
+             StoppingOptions o;
+             o.max_periods = max_periods;
+             o.fractions = to_vector(fractions, "fractions");
+             return o;
+           }),
+           py::kw_only(), py::arg("max_periods") = d.max_periods,
+           py::arg("fractions") = to_array(std::vector(d.fractions)))
+      .def_readwrite("max_periods", &StoppingOptions::max_periods,
+                     "give up after this many table periods (a run also ends, not stopped, "
+                     "when the state at a period start repeats exactly)")
+      .def_property(
+          "fractions", [](const StoppingOptions& o) { return to_array(std::vector(o.fractions)); },
+          [](StoppingOptions& o, const py::object& v) { o.fractions = to_vector(v, "fractions"); },
+          "fractions p in [0, 1]: the time to reach x_mu + p (x_stick,min - x_mu) is reported")
+      .def("__repr__", [](const StoppingOptions& o) {
+        std::string fractions;
+        for (double p : o.fractions)
+          fractions += (fractions.empty() ? "" : ", ") + format_number(p);
+        return Repr("StoppingOptions")("max_periods", o.max_periods)
+            .raw("fractions", "[" + fractions + "]")
+            .str();
+      });
+
+  py::class_<StoppingRun> run(m, "StoppingRun", "The outcome of stopping_run().");
+  run.def_readonly("kind", &StoppingRun::kind, "how the run ended")
+      .def_readonly("end_position", &StoppingRun::end_position, "where the object stops [-]")
+      .def_readonly("process_time", &StoppingRun::process_time,
+                    "T_p: time the final stick starts [-]; +inf for accumulation")
+      .def_readonly("entry_time", &StoppingRun::entry_time,
+                    "first time x >= x_mu [-]; NaN if never")
+      .def_readonly("x_stick_min", &StoppingRun::x_stick_min, "eq. (41) [-]");
+  def_array(run, "stick_positions", &StoppingRun::stick_positions,
+            "successive positions where the object came to rest at x >= x_mu [-]");
+  def_array(run, "time_to_fraction", &StoppingRun::time_to_fraction,
+            "per options.fractions[k]: first time x >= x_mu + p (x_stick,min - x_mu) [-]; NaN "
+            "if not reached");
+  def_array(run, "periods_to_fraction", &StoppingRun::periods_to_fraction,
+            "per options.fractions[k]: table periods from entry to then (int)");
+  run.def("__repr__", [](const StoppingRun& r) {
+    return Repr("StoppingRun")
+        .raw("kind", enum_name(r.kind))("end_position", r.end_position)(
+            "process_time", r.process_time)("entry_time", r.entry_time)
+        .str();
+  });
+
+  m.def("stopping_run", &stopping_run, py::arg("profile"), py::arg("friction"), py::arg("start"),
+        py::arg("options") = StoppingOptions{}, py::call_guard<py::gil_scoped_release>(), R"doc(
+Runs the exact solver from `start` on the two-region table until the object provably stops for
+good (Sect. 7): a permanent stick (eq. 40), or, for three-phase profiles, stick positions that
+the map of eq. (59) drives to its fixed point x_stick,min (accumulation, Sect. 7.3). The
+profile must be piecewise constant; raises InvalidParameter otherwise. Runs without the GIL.)doc");
+}
+
+}  // namespace
+
+void bind_stopping(py::module_& m) {
+  bind_stick_position(m);
+  bind_stopping_run(m);
+}
+
+}  // namespace selfalign::python

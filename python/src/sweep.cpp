@@ -1,0 +1,167 @@
+// Parameter studies (Sect. 4.4.1, 5.2): the (a2, a3) grid of Figs. 10, 11 and the f(Δt),
+// f(Δy) studies of Figs. 4, 5, as dicts of NumPy arrays. Parallel, deterministic.
+#include "selfalign/analysis/sweep.hpp"
+
+#include <cstdint>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "progress.hpp"
+
+namespace selfalign::python {
+
+namespace {
+
+constexpr const char* kSweepArgs = R"doc(
+Cells are computed in parallel on `threads` workers (0: all cores), each into its own slot, so
+the result is identical for any thread count. `progress`, if given, is called as
+progress(done, total) as cells complete (from worker threads, one call at a time, holding the
+GIL); an exception it raises stops the sweep and is re-raised. The GIL is released otherwise.)doc";
+
+py::dict family_points(std::vector<FamilyPoint>&& points) {
+  const auto n = static_cast<py::ssize_t>(points.size());
+  py::array_t<double> period(n), stroke(n), v_bar(n), f(n);
+  py::array_t<bool> physical(n);
+  py::array_t<std::int32_t> observed(n);
+  for (py::ssize_t k = 0; k < n; ++k) {
+    const FamilyPoint& p = points[static_cast<std::size_t>(k)];
+    period.mutable_data()[k] = p.period;
+    stroke.mutable_data()[k] = p.stroke;
+    physical.mutable_data()[k] = p.physical;
+    observed.mutable_data()[k] = static_cast<std::int32_t>(p.observed);
+    v_bar.mutable_data()[k] = p.v_bar;
+    f.mutable_data()[k] = p.f;
+  }
+  py::dict d;
+  d["period"] = period, d["stroke"] = stroke, d["physical"] = physical;
+  d["observed"] = observed, d["v_bar"] = v_bar, d["f"] = f;
+  return d;
+}
+
+void bind_families(py::module_& m) {
+  py::class_<ProfileFamily>(m, "ProfileFamily",
+                            "A family of table profiles indexed by period Δt and stroke Δy "
+                            "(Figs. 4, 5). Abstract.")
+      .def("make", &ProfileFamily::make, py::arg("period"), py::arg("stroke"),
+           "The member with this period and stroke [-], or None when it does not exist (case 0).")
+      .def_property_readonly("name", &ProfileFamily::name, "short family name");
+  py::class_<ThreePhaseFamily, ProfileFamily>(m, "ThreePhaseFamily",
+                                              "Three-phase profiles with fixed accelerations "
+                                              "(a2, a3).")
+      .def(py::init<double, double>(), py::arg("a2"), py::arg("a3"),
+           "a2, a3: y2'', y3'' [-], > 0.");
+  py::class_<ScaledShapeFamily, ProfileFamily>(m, "ScaledShapeFamily", R"doc(
+One shape of piecewise-constant acceleration (a Fig. 3 style sequence of quadratics), stretched
+in time to the period and scaled in amplitude to the stroke: durations scale with Δt,
+accelerations with Δy / Δt^2.)doc")
+      .def(py::init<PiecewiseConstantProfile>(), py::arg("shape"))
+      .def_static("paper_like", &ScaledShapeFamily::paper_like,
+                  "The default shape: fractions (0.35, 0.35, 0.30) of the period with "
+                  "accelerations (0, -6/7, +1).");
+  py::class_<ScaledFourierFamily, ProfileFamily>(m, "ScaledFourierFamily", R"doc(
+One Fourier shape (Sect. 4.4.2) with its coefficients scaled to the stroke: the members share
+the harmonic content and differ in period and amplitude. Their steady states use
+time-stepping (SteadyStateOptions.steps_per_period).)doc")
+      .def(py::init([](const py::object& cos_coeffs, const py::object& sin_coeffs) {
+             return ScaledFourierFamily(to_vector(cos_coeffs, "cos_coeffs"),
+                                        to_vector(sin_coeffs, "sin_coeffs"));
+           }),
+           py::arg("cos_coeffs"), py::arg("sin_coeffs"),
+           "Coefficients of y(t) = sum A_k cos(k w t) + B_k sin(k w t), any amplitude.");
+}
+
+}  // namespace
+
+void bind_sweep(py::module_& m) {
+  m.def(
+      "linear_grid", [](double lo, double hi, int n) { return to_array(linear_grid(lo, hi, n)); },
+      py::arg("lo"), py::arg("hi"), py::arg("n"),
+      "n values from lo to hi inclusive, evenly spaced (n >= 1; n = 1 gives lo); float64.");
+  m.def(
+      "log_grid", [](double lo, double hi, int n) { return to_array(log_grid(lo, hi, n)); },
+      py::arg("lo"), py::arg("hi"), py::arg("n"),
+      "n values from lo to hi inclusive, evenly spaced in log (lo, hi > 0); float64.");
+
+  m.def(
+      "sweep_accelerations",
+      [](double period, double stroke, const py::object& a2_in, const py::object& a3_in,
+         const SteadyStateOptions& steady, int threads, const py::object& progress_in) {
+        const std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
+        const PythonProgress progress(progress_in);
+        const SweepOptions options = sweep_options(threads, progress, steady);
+        const std::vector<AccelerationCell> cells =
+            progress.run([&] { return sweep_accelerations(period, stroke, a2, a3, options); });
+        const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(a2.size()),
+                                             static_cast<py::ssize_t>(a3.size())};
+        py::array_t<std::int32_t> predicted(shape), observed(shape);
+        py::array_t<double> v_bar(shape), f(shape), x_dot_0s(shape);
+        py::array_t<bool> converged(shape);
+        for (std::size_t k = 0; k < cells.size(); ++k) {  // row-major: k = i * len(a3) + j
+          predicted.mutable_data()[k] = static_cast<std::int32_t>(cells[k].predicted);
+          observed.mutable_data()[k] = static_cast<std::int32_t>(cells[k].observed);
+          v_bar.mutable_data()[k] = cells[k].v_bar;
+          f.mutable_data()[k] = cells[k].f;
+          x_dot_0s.mutable_data()[k] = cells[k].x_dot_0s;
+          converged.mutable_data()[k] = cells[k].converged;
+        }
+        py::dict d;
+        d["a2"] = to_array(std::vector(a2)), d["a3"] = to_array(std::vector(a3));
+        d["predicted"] = predicted, d["observed"] = observed, d["v_bar"] = v_bar, d["f"] = f;
+        d["x_dot_0s"] = x_dot_0s, d["converged"] = converged;
+        return d;
+      },
+      py::arg("period"), py::arg("stroke"), py::arg("a2"), py::arg("a3"), py::kw_only(),
+      py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
+      py::arg("progress") = py::none(),
+      (std::string(R"doc(
+f and the motion case of the three-phase profile over the grid a2 × a3 at fixed (Δt, Δy)
+(Figs. 10, 11). Returns a dict of arrays shaped (len(a2), len(a3)) (cell [i, j] is a2[i],
+a3[j]): 'predicted', 'observed' (int32 StickSlipCase values: a priori Fig. 8 rules and the
+simulated steady period), 'v_bar' (eq. 10), 'f' (eq. 11; +inf for v̄ = 0), 'x_dot_0s'
+(float64, NaN for case 0), 'converged' (bool); plus the 1-D grids 'a2' and 'a3'.
+Raises InvalidParameter on bad inputs.)doc") +
+       kSweepArgs)
+          .c_str());
+
+  bind_families(m);
+
+  m.def(
+      "sweep_period",
+      [](const ProfileFamily& family, double stroke, const py::object& periods_in,
+         const SteadyStateOptions& steady, int threads, const py::object& progress_in) {
+        const std::vector<double> periods = to_vector(periods_in, "periods");
+        const PythonProgress progress(progress_in);
+        const SweepOptions options = sweep_options(threads, progress, steady);
+        return family_points(
+            progress.run([&] { return sweep_period(family, stroke, periods, options); }));
+      },
+      py::arg("family"), py::arg("stroke"), py::arg("periods"), py::kw_only(),
+      py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
+      py::arg("progress") = py::none(),
+      (std::string(R"doc(
+f against Δt at fixed Δy (Fig. 4). Returns a dict of 1-D arrays, one entry per period:
+'period', 'stroke', 'v_bar' (eq. 10), 'f' (eq. 11) (float64; NaN where the family has no
+member), 'physical' (bool), 'observed' (int32 StickSlipCase values).)doc") +
+       kSweepArgs)
+          .c_str());
+  m.def(
+      "sweep_stroke",
+      [](const ProfileFamily& family, double period, const py::object& strokes_in,
+         const SteadyStateOptions& steady, int threads, const py::object& progress_in) {
+        const std::vector<double> strokes = to_vector(strokes_in, "strokes");
+        const PythonProgress progress(progress_in);
+        const SweepOptions options = sweep_options(threads, progress, steady);
+        return family_points(
+            progress.run([&] { return sweep_stroke(family, period, strokes, options); }));
+      },
+      py::arg("family"), py::arg("period"), py::arg("strokes"), py::kw_only(),
+      py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
+      py::arg("progress") = py::none(),
+      (std::string(R"doc(
+f against Δy at fixed Δt (Fig. 5). Returns the same dict as sweep_period, one entry per
+stroke.)doc") +
+       kSweepArgs)
+          .c_str());
+}
+
+}  // namespace selfalign::python

@@ -1,0 +1,84 @@
+"""Misuse raises selfalign.InvalidParameter (a ValueError) carrying name, value and range."""
+
+import math
+
+import numpy as np
+import pytest
+
+import selfalign as sa
+
+
+def test_invalid_parameter_is_a_value_error():
+    assert issubclass(sa.InvalidParameter, ValueError)
+
+
+def test_negative_width_names_the_width():
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.TwoRegionFriction(x_mu=0.5, width=-1.0, c_mu=2.5)
+    e = info.value
+    assert (e.name, e.value, e.allowed) == ("width", "-1", "must be > 0")
+    assert str(e) == "invalid width = -1: must be > 0"
+
+
+@pytest.mark.parametrize("width", [0.0, -0.05])
+def test_width_must_be_positive(width):
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.TwoRegionFriction(0.5, width, 2.5)
+    assert info.value.name == "width"
+
+
+@pytest.mark.parametrize("c_mu", [1.0, 0.5])
+def test_friction_ratio_must_exceed_one(c_mu):
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.TwoRegionFriction(0.5, 0.05, c_mu)
+    assert info.value.name == "c_mu"
+    assert "1" in info.value.allowed
+
+
+@pytest.mark.parametrize("field", ["period", "stroke", "a2", "a3"])
+def test_nan_three_phase_parameter_is_named(field):
+    values = dict(period=1.0, stroke=0.084, a2=3.0, a3=0.9)
+    values[field] = math.nan
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.ThreePhaseProfile(**values)
+    assert info.value.name == field
+    assert info.value.value.lower() == "nan"
+
+
+def test_case_zero_profile_is_an_error_but_its_solution_is_a_value():
+    p = sa.ThreePhaseParameters(period=1.0, stroke=0.084, a2=1.0, a3=1.0)  # 1 + 1 > 1/(8 Δy)
+    assert sa.solve_three_phase(p).physical is False
+    assert sa.predict_case(p) == sa.StickSlipCase.non_physical
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.ThreePhaseProfile(p)
+    assert info.value.name == "a2, a3"
+
+
+def test_bad_method_string_is_an_invalid_parameter():
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.Method("runge-kutta")
+    assert info.value.name == "method"
+
+
+def test_exact_solver_refuses_a_fourier_profile():
+    profile = sa.FourierProfile(1.0, [0.0], [0.05])
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.simulate(profile, sa.UniformFriction(), options=sa.SimulationOptions(method="exact"))
+    assert info.value.name == "method"
+
+
+def test_grids_must_be_one_dimensional():
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.sweep_accelerations(1.0, 0.084, np.ones((2, 2)), [1.0])
+    assert info.value.name == "a2"
+
+
+def test_negative_thread_count_is_rejected():
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.sweep_accelerations(1.0, 0.084, [3.0], [0.9], threads=-1)
+    assert info.value.name == "threads"
+
+
+def test_progress_must_be_callable():
+    with pytest.raises(TypeError):
+        sa.sweep_accelerations(1.0, 0.084, [3.0], [0.9], progress=42)

@@ -1,0 +1,71 @@
+"""Positioning accuracy (Sect. 7.1, eq. 39) and the Fig. 17 surfaces."""
+
+import numpy as np
+import pytest
+
+import selfalign as sa
+
+from conftest import CLOSED_FORM_TOL, PERIOD, STROKE
+
+W, C_MU = 0.05, 4.0  # c_mu > every a2 used: the objects stop
+
+
+def test_positioning_accuracy_is_eq_39(case1_profile):
+    n = 25
+    acc = sa.positioning_accuracy(case1_profile, W, C_MU, sa.PositioningOptions(entries=n))
+    assert acc.reaches and acc.all_stopped
+    steady = sa.steady_state(case1_profile)
+    assert acc.steady.v_bar == steady.v_bar
+    # Entries x_0s ∈ [-v̄Δt, 0].
+    assert acc.entries.shape == (n,) and acc.entries.dtype == np.float64
+    assert np.all(acc.entries <= 0) and np.all(acc.entries >= -steady.v_bar * PERIOD - 1e-15)
+    ends = acc.end_positions
+    assert ends.shape == (n,) and len(acc.runs) == n
+    np.testing.assert_array_equal(ends, [r.end_position for r in acc.runs])
+    overshoot = ends - acc.x_mu
+    assert acc.overshoot_min == pytest.approx(overshoot.min(), abs=CLOSED_FORM_TOL)
+    assert acc.overshoot_max == pytest.approx(overshoot.max(), abs=CLOSED_FORM_TOL)
+    dx_d = (overshoot.max() - overshoot.min()) / 2  # eq. (39)
+    assert acc.dx_d == pytest.approx(dx_d, abs=CLOSED_FORM_TOL)
+    assert acc.x_d == pytest.approx(acc.x_mu + overshoot.min() + dx_d, abs=CLOSED_FORM_TOL)
+    friction = sa.TwoRegionFriction(acc.x_mu, W, C_MU)
+    assert acc.x_stick_min == pytest.approx(
+        sa.stick_position_min(friction, case1_profile.peak_acceleration), rel=CLOSED_FORM_TOL)
+    assert acc.accumulating_entries == sum(r.kind == sa.StopKind.accumulation for r in acc.runs)
+
+
+def test_positioning_surfaces_shapes_and_cells():
+    a2, a3 = np.array([2.5, 3.0, 4.0]), np.array([0.9, 1.2])
+    options = sa.PositioningOptions(entries=8, stopping=sa.StoppingOptions(max_periods=300))
+    r = sa.positioning_surfaces(PERIOD, STROKE, W, C_MU, a2, a3, options=options, threads=1)
+    shape = (3, 2)
+    for key, dtype in [("case", np.int32), ("f", np.float64), ("accumulates", np.bool_),
+                       ("dx_d", np.float64), ("accumulating_entries", np.int32),
+                       ("max_periods_p99", np.int32), ("max_periods_p999", np.int32)]:
+        assert r[key].shape == shape and r[key].dtype == dtype, key
+    for i, x in enumerate(a2):
+        for j, y in enumerate(a3):
+            if not sa.solve_three_phase(sa.ThreePhaseParameters(PERIOD, STROKE, x, y)).physical:
+                assert r["case"][i, j] == sa.StickSlipCase.non_physical
+                assert np.isnan(r["f"][i, j]) and np.isnan(r["dx_d"][i, j])
+                continue
+            profile = sa.ThreePhaseProfile(PERIOD, STROKE, x, y)
+            acc = sa.positioning_accuracy(profile, W, C_MU, options)
+            assert r["case"][i, j] == acc.steady.motion_case
+            assert r["f"][i, j] == acc.steady.f
+            assert r["accumulates"][i, j] == acc.accumulates
+            assert r["accumulating_entries"][i, j] == acc.accumulating_entries
+            if acc.all_stopped:
+                assert r["dx_d"][i, j] == pytest.approx(acc.dx_d, rel=CLOSED_FORM_TOL)
+
+
+def test_positioning_surfaces_do_not_depend_on_threads():
+    a2, a3 = sa.linear_grid(2.5, 5.0, 4), sa.linear_grid(0.8, 1.6, 3)
+    options = sa.PositioningOptions(entries=6, stopping=sa.StoppingOptions(max_periods=200))
+    calls = []
+    one = sa.positioning_surfaces(PERIOD, STROKE, W, C_MU, a2, a3, options=options, threads=1)
+    two = sa.positioning_surfaces(PERIOD, STROKE, W, C_MU, a2, a3, options=options, threads=2,
+                                  progress=lambda d, t: calls.append((d, t)))
+    for key in one:
+        np.testing.assert_array_equal(one[key], two[key])
+    assert calls[-1] == (12, 12)
