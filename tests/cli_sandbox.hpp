@@ -1,4 +1,6 @@
 #pragma once
+
+#include <gtest/gtest.h>
 // Running the real `selfalign` binary (SELFALIGN_CLI_PATH) in a fresh temporary directory, for
 // the CLI tests (test_cli.cpp, test_cli_analysis.cpp): exit code, captured stdout and stderr,
 // and the files a run left behind.
@@ -70,6 +72,30 @@ inline std::vector<std::string> lines(const std::string& text) {
   for (std::string line; std::getline(in, line);) result.push_back(line);
   return result;
 }
+
+/// The contract for bad input: exit code 2, exactly one line `selfalign: error: ...` on stderr
+/// containing every `expected` substring (the parameter's name and its allowed range), nothing
+/// on stdout, and no file left in the sandbox's work folder.
+inline void expect_clean_failure(const CliSandbox& box, const CliResult& r,
+                                 const std::vector<std::string>& expected) {
+  EXPECT_EQ(r.exit_code, 2);
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.back(), '\n');
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(r.err.rfind("selfalign: error: ", 0), 0u) << r.err;
+  for (const std::string& s : expected) EXPECT_NE(r.err.find(s), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_TRUE(box.work_entries().empty()) << "left behind: " << box.work_entries().front();
+}
+
+/// A parameterised misuse case: the command line and what its error line must contain.
+struct MisuseCase {
+  std::string name;
+  std::vector<std::string> args;
+  std::vector<std::string> expected;  // substrings of the error line
+};
+
+inline void PrintTo(const MisuseCase& c, std::ostream* os) { *os << c.name; }
 
 }  // namespace selfalign::testing
 

@@ -25,6 +25,8 @@ TEST(CliSimulate, NeedsTheCli) { GTEST_SKIP() << "built without the CLI (SELFALI
 using nlohmann::json;
 using testing::CliResult;
 using testing::CliSandbox;
+using testing::expect_clean_failure;
+using testing::MisuseCase;
 using testing::lines;
 using testing::read_text;
 using testing::write_text;
@@ -48,19 +50,20 @@ std::string num(double v) { return format_number(v); }
 // ---------------------------------------------------------------------------------------------
 // Misuse: exit code 2, one line on stderr naming the parameter and its range, no file written.
 
-struct MisuseCase {
+// simulate's misuse cases may also carry a config file, written to the sandbox root.
+struct ConfigMisuseCase {
   std::string name;
   std::vector<std::string> args;
   std::string config_name, config_text;     // written to the sandbox root when non-empty
   std::vector<std::string> expected;        // substrings of the error line
 };
 
-void PrintTo(const MisuseCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ConfigMisuseCase& c, std::ostream* os) { *os << c.name; }
 
-class CliMisuse : public ::testing::TestWithParam<MisuseCase> {};
+class CliMisuse : public ::testing::TestWithParam<ConfigMisuseCase> {};
 
 TEST_P(CliMisuse, ExitsTwoWithOneLineAndWritesNothing) {
-  const MisuseCase& c = GetParam();
+  const ConfigMisuseCase& c = GetParam();
   CliSandbox box;
   std::vector<std::string> args = {"simulate"};
   if (!c.config_name.empty()) {
@@ -69,19 +72,10 @@ TEST_P(CliMisuse, ExitsTwoWithOneLineAndWritesNothing) {
   }
   args.insert(args.end(), c.args.begin(), c.args.end());
   args.insert(args.end(), {"--out", "run.csv"});
-  const CliResult r = box.run(args);
-
-  EXPECT_EQ(r.exit_code, 2);
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.back(), '\n');
-  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
-  EXPECT_EQ(r.err.rfind("selfalign: error: ", 0), 0u) << r.err;
-  for (const std::string& s : c.expected) EXPECT_NE(r.err.find(s), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  EXPECT_TRUE(box.work_entries().empty()) << "left behind: " << box.work_entries().front();
+  expect_clean_failure(box, box.run(args), c.expected);
 }
 
-const MisuseCase kMisuseCases[] = {
+const ConfigMisuseCase kMisuseCases[] = {
     {"width_zero", {"--width", "0"}, "", "", {"width = 0", "must be > 0"}},
     {"width_negative", {"--width", "-0.01"}, "", "", {"width = -0.01", "must be > 0"}},
     {"width_negative_si", {"--units", "si", "--width", "-0.002"}, "", "",

@@ -28,6 +28,8 @@ TEST(CliAnalysis, NeedsTheCli) {
 using nlohmann::json;
 using testing::CliResult;
 using testing::CliSandbox;
+using testing::expect_clean_failure;
+using testing::MisuseCase;
 using testing::lines;
 using testing::read_text;
 
@@ -373,27 +375,11 @@ TEST(CliSweep, PeriodAndStrokeStudies) {
 // ---------------------------------------------------------------------------------------------
 // Misuse: exit code 2, one line on stderr, nothing on stdout, no file left behind.
 
-struct MisuseCase {
-  std::string name;
-  std::vector<std::string> args;
-  std::vector<std::string> expected;  // substrings of the error line
-};
-
-void PrintTo(const MisuseCase& c, std::ostream* os) { *os << c.name; }
-
 class CliAnalysisMisuse : public ::testing::TestWithParam<MisuseCase> {};
 
 TEST_P(CliAnalysisMisuse, ExitsTwoWithOneLineAndWritesNothing) {
-  const MisuseCase& c = GetParam();
   CliSandbox box;
-  const CliResult r = box.run(c.args);
-  EXPECT_EQ(r.exit_code, 2);
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
-  EXPECT_EQ(r.err.rfind("selfalign: error: ", 0), 0u) << r.err;
-  for (const std::string& s : c.expected) EXPECT_NE(r.err.find(s), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  EXPECT_TRUE(box.work_entries().empty()) << "left behind: " << box.work_entries().front();
+  expect_clean_failure(box, box.run(GetParam().args), GetParam().expected);
 }
 
 const MisuseCase kMisuseCases[] = {

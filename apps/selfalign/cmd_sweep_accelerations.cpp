@@ -99,16 +99,7 @@ void add_sweep_accelerations_command(CLI::App& sweep) {
       "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged; rows a2-major.");
   auto f = std::make_shared<AccelerationFlags>();
   f->common = add_sweep_flags(*sub);
-  sub->add_option("--a2-range", f->a2_range,
-                  "y2'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
-      ->type_name("LO:HI:N")
-      ->required()
-      ->group("Sweep");
-  sub->add_option("--a3-range", f->a3_range,
-                  "y3'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
-      ->type_name("LO:HI:N")
-      ->required()
-      ->group("Sweep");
+  add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->callback([f] { run_sweep_accelerations(*f); });
 }
 

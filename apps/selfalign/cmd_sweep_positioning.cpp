@@ -124,16 +124,7 @@ void add_sweep_positioning_command(CLI::App& sweep) {
       "accumulating_entries,max_periods_p99,max_periods_p999; rows a2-major.");
   auto f = std::make_shared<PositioningFlags>();
   f->common = add_sweep_flags(*sub);
-  sub->add_option("--a2-range", f->a2_range,
-                  "y2'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
-      ->type_name("LO:HI:N")
-      ->required()
-      ->group("Sweep");
-  sub->add_option("--a3-range", f->a3_range,
-                  "y3'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
-      ->type_name("LO:HI:N")
-      ->required()
-      ->group("Sweep");
+  add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->add_option("--entries", f->entries,
                   "steady-state entries x_0s per cell, >= 1. Default: " +
                       std::to_string(f->entries))

@@ -118,4 +118,20 @@ void write_sweep_outputs(const SweepPaths& paths, const std::string& csv,
   if (paths.summary_to_stdout) std::cout << summary_text << std::flush;
 }
 
+void add_acceleration_range_flags(CLI::App& command, std::string& a2_range,
+                                  std::string& a3_range) {
+  command
+      .add_option("--a2-range", a2_range,
+                  "y2'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
+      ->type_name("LO:HI:N")
+      ->required()
+      ->group("Sweep");
+  command
+      .add_option("--a3-range", a3_range,
+                  "y3'' grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m/s^2]")
+      ->type_name("LO:HI:N")
+      ->required()
+      ->group("Sweep");
+}
+
 }  // namespace selfalign::cli

@@ -51,6 +51,11 @@ struct SweepFlags {
 /// Adds the config-key flags (--out: the CSV) and --threads, --quiet, --log to `command`.
 std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command);
 
+/// The (y2'', y3'') grid flags of the acceleration-plane sweeps: required --a2-range and
+/// --a3-range (LO:HI:N), bound to the given strings.
+void add_acceleration_range_flags(CLI::App& command, std::string& a2_range,
+                                  std::string& a3_range);
+
 /// The three-phase parameters of the config [-] with their unit system (the sweeps read Δt, Δy,
 /// y2'', y3'' from them; --profile is ignored). A case-0 setting is not an error here.
 ProfileModel sweep_model(const SimulateConfig& config);
