@@ -101,43 +101,41 @@ def fig3(out_dir: str) -> Figure:
                   "not given, a Fig. 7-like shape with Δt = 2.5, Δy = 1.5 is used.")
 
 
-def _family_sweep(kind: str, values: np.ndarray, fixed: float, progress: Progress):
+_FAMILY_NOTE = "Scaled Fig. 7-like polynomial sequence (the paper's sequence is not given)."
+
+
+def _f_against(out_dir: str, number: str, column: str, values: np.ndarray, fixed: float,
+               progress: Progress) -> tuple[list[str], list[str], dict]:
+    """f of the scaled-shape family against Δt (column 'period') or Δy ('stroke')."""
     family = sa.ScaledShapeFamily.paper_like()
-    if kind == "period":
-        return sa.sweep_period(family, fixed, values, progress=progress)
-    return sa.sweep_stroke(family, fixed, values, progress=progress)
+    sweep = sa.sweep_period if column == "period" else sa.sweep_stroke
+    r = sweep(family, fixed, values, progress=progress)
+    symbol, other = ("Δt", f"Δy = {fixed:g}") if column == "period" else ("Δy", f"Δt = {fixed:g}")
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.semilogy(r[column], r["f"], "o-", ms=3)
+    ax.set_xlabel(f"{symbol} [-]")
+    ax.set_ylabel("f [-]")
+    ax.set_title(f"Fig. {number}: f against {symbol} ({other})")
+    name = f"fig{int(number):02d}"
+    data = _csv(out_dir, name, {column: r[column], "f": r["f"], "v_bar": r["v_bar"]})
+    return _save(fig, out_dir, name), [data], r
 
 
 def fig4(out_dir: str, progress: Progress = None) -> Figure:
     """Fig. 4: f against Δt at Δy = 0.02."""
-    periods = np.linspace(0.02, 0.2, 46)
-    r = _family_sweep("period", periods, 0.02, progress)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    ax.semilogy(r["period"], r["f"], "o-", ms=3)
-    ax.set_xlabel("Δt [-]")
-    ax.set_ylabel("f [-]")
-    ax.set_title("Fig. 4: f against Δt (Δy = 0.02)")
-    data = _csv(out_dir, "fig04", {"period": r["period"], "f": r["f"], "v_bar": r["v_bar"]})
+    files, data, r = _f_against(out_dir, "4", "period", np.linspace(0.02, 0.2, 46), 0.02, progress)
     return Figure("4", "Objective against excitation period",
                   "A large excitation frequency (small Δt) is beneficial: f grows with Δt "
-                  "(Sect. 4.4.1).", _save(fig, out_dir, "fig04"), [data],
-                  "Scaled Fig. 7-like polynomial sequence (the paper's sequence is not given).", r)
+                  "(Sect. 4.4.1).", files, data, _FAMILY_NOTE, r)
 
 
 def fig5(out_dir: str, progress: Progress = None) -> Figure:
     """Fig. 5: f against Δy at Δt = 0.05."""
-    strokes = np.linspace(0.002, 0.04, 39)
-    r = _family_sweep("stroke", strokes, 0.05, progress)
-    fig, ax = plt.subplots(figsize=(6, 4))
-    ax.semilogy(r["stroke"], r["f"], "o-", ms=3)
-    ax.set_xlabel("Δy [-]")
-    ax.set_ylabel("f [-]")
-    ax.set_title("Fig. 5: f against Δy (Δt = 0.05)")
-    data = _csv(out_dir, "fig05", {"stroke": r["stroke"], "f": r["f"], "v_bar": r["v_bar"]})
+    files, data, r = _f_against(out_dir, "5", "stroke", np.linspace(0.002, 0.04, 39), 0.05,
+                                progress)
     return Figure("5", "Objective against stroke",
-                  "A large stroke is beneficial: f falls as Δy grows (Sect. 4.4.1).",
-                  _save(fig, out_dir, "fig05"), [data],
-                  "Scaled Fig. 7-like polynomial sequence (the paper's sequence is not given).", r)
+                  "A large stroke is beneficial: f falls as Δy grows (Sect. 4.4.1).", files, data,
+                  _FAMILY_NOTE, r)
 
 
 def fig6(out_dir: str) -> Figure:
