@@ -148,6 +148,14 @@ std::size_t advance(const ExactSetup& setup, ExactState& state, double t_end, Ar
     const ArcEnd stop_end = to_switch ? ArcEnd::acceleration_switch : ArcEnd::horizon;
 
     while (t < t_stop) {  // one arc per pass
+      if constexpr (uniform) {
+        // The commonest arc of a uniform table: at rest and held for the rest of the segment.
+        if (v == 0 && !sink && sticks(A, m_uniform)) {
+          ++count;
+          t = t_stop;
+          break;
+        }
+      }
       ArcKind kind = ArcKind::stick;
       int sigma = 0;
       std::size_t pi = 0;
