@@ -13,7 +13,6 @@ namespace selfalign::cli {
 namespace {
 
 using nlohmann::json;
-using D = Dimension;
 
 struct AccelerationFlags {
   std::shared_ptr<SweepFlags> common;
@@ -70,23 +69,17 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
   const SimulateConfig config = read_config(*f.common->config);
   const SweepPaths paths = resolve_sweep_paths(config);
   const ProfileModel model = sweep_model(config);
-  const GridRange r2 = parse_grid_range("a2-range", f.a2_range);
-  const GridRange r3 = parse_grid_range("a3-range", f.a3_range);
-  const std::vector<double> a2 = positive_grid("a2-range", r2, f.common->log, "y2''");
-  const std::vector<double> a3 = positive_grid("a3-range", r3, f.common->log, "y3''");
-  std::vector<double> a2_model, a3_model;  // [-]
-  for (double v : a2) a2_model.push_back(model.to_model_units(D::acceleration, v));
-  for (double v : a3) a3_model.push_back(model.to_model_units(D::acceleration, v));
+  const AccelerationGrid g = acceleration_grid(model, f.a2_range, f.a3_range, f.common->log);
 
   const ThreePhaseParameters& p = *model.three_phase;
   std::vector<AccelerationCell> cells;
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
-    cells = sweep_accelerations(p.period, p.stroke, a2_model, a3_model,
+    cells = sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model,
                                 sweep_options(*f.common, *bar));
   }
-  write_sweep_outputs(paths, cells_csv(cells, a2, a3, model.output_units()),
-                      cells_summary(config, model, f, r2, r3, cells));
+  write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
+                      cells_summary(config, model, f, g.r2, g.r3, cells));
 }
 
 }  // namespace

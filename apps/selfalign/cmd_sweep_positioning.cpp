@@ -91,13 +91,7 @@ void run_sweep_positioning(const PositioningFlags& f) {
   const double c_mu = *given.c_mu;
   if (f.entries < 1) throw InvalidParameter("entries", f.entries, "must be >= 1");
   if (f.max_periods < 1) throw InvalidParameter("max-periods", f.max_periods, "must be >= 1");
-  const GridRange r2 = parse_grid_range("a2-range", f.a2_range);
-  const GridRange r3 = parse_grid_range("a3-range", f.a3_range);
-  const std::vector<double> a2 = positive_grid("a2-range", r2, f.common->log, "y2''");
-  const std::vector<double> a3 = positive_grid("a3-range", r3, f.common->log, "y3''");
-  std::vector<double> a2_model, a3_model;  // [-]
-  for (double v : a2) a2_model.push_back(model.to_model_units(D::acceleration, v));
-  for (double v : a3) a3_model.push_back(model.to_model_units(D::acceleration, v));
+  const AccelerationGrid g = acceleration_grid(model, f.a2_range, f.a3_range, f.common->log);
 
   PositioningOptions options;
   options.entries = f.entries;
@@ -106,11 +100,11 @@ void run_sweep_positioning(const PositioningFlags& f) {
   std::vector<PositioningCell> cells;
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
-    cells = positioning_surfaces(p.period, p.stroke, width, c_mu, a2_model, a3_model, options,
+    cells = positioning_surfaces(p.period, p.stroke, width, c_mu, g.a2_model, g.a3_model, options,
                                  sweep_options(*f.common, *bar));
   }
-  write_sweep_outputs(paths, cells_csv(cells, a2, a3, model.output_units()),
-                      cells_summary(config, model, f, r2, r3, cells));
+  write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
+                      cells_summary(config, model, f, g.r2, g.r3, cells));
 }
 
 }  // namespace

@@ -134,4 +134,16 @@ void add_acceleration_range_flags(CLI::App& command, std::string& a2_range,
       ->group("Sweep");
 }
 
+AccelerationGrid acceleration_grid(const ProfileModel& model, const std::string& a2_range,
+                                   const std::string& a3_range, bool log) {
+  AccelerationGrid g;
+  g.r2 = parse_grid_range("a2-range", a2_range);
+  g.r3 = parse_grid_range("a3-range", a3_range);
+  g.a2 = positive_grid("a2-range", g.r2, log, "y2''");
+  g.a3 = positive_grid("a3-range", g.r3, log, "y3''");
+  for (double v : g.a2) g.a2_model.push_back(model.to_model_units(Dimension::acceleration, v));
+  for (double v : g.a3) g.a3_model.push_back(model.to_model_units(Dimension::acceleration, v));
+  return g;
+}
+
 }  // namespace selfalign::cli

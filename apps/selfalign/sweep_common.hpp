@@ -51,6 +51,17 @@ struct SweepFlags {
 /// Adds the config-key flags (--out: the CSV) and --threads, --quiet, --log to `command`.
 std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command);
 
+/// A (y2'', y3'') grid as given (the run's units) and in model units [-].
+struct AccelerationGrid {
+  GridRange r2, r3;                      // as parsed
+  std::vector<double> a2, a3;            // as given (run's units)
+  std::vector<double> a2_model, a3_model;  // dimensionless
+};
+
+/// Parses --a2-range / --a3-range (log-spaced when `log`) and converts them to model units.
+AccelerationGrid acceleration_grid(const ProfileModel& model, const std::string& a2_range,
+                                   const std::string& a3_range, bool log);
+
 /// The (y2'', y3'') grid flags of the acceleration-plane sweeps: required --a2-range and
 /// --a3-range (LO:HI:N), bound to the given strings.
 void add_acceleration_range_flags(CLI::App& command, std::string& a2_range,
