@@ -1,0 +1,74 @@
+#pragma once
+/// \file process_design.hpp
+/// `selfalign design`: from SI actuator limits and an object to a recommended three-phase table
+/// profile that minimises the process time T_p (Sect. 2's first objective) subject to a
+/// positioning requirement (Sect. 7): accumulation (Δx_d = 0) or a given tolerance.
+///
+/// The search (deterministic, parallel over candidates): periods from 1/f_max to 1/f_min,
+/// strokes up to the actuator stroke, and (y2'', y3'') in (1, min(c_mu, a_max)] x
+/// (0, min(c_mu, a_max)] (y2'' > 1 moves the object; <= c_mu lets it stop for good, eq. 41),
+/// keeping profiles whose exact velocity extrema y'_ini and y'_ini - D respect v_max. Each
+/// candidate's steady state (v̄ > 0) and positioning accuracy (eq. 39 over N steady entries)
+/// give its feasibility and an estimate of T_p = (x_mu)/v̄ + settling; the best candidate's
+/// T_p, end position and band then come from an exact stopping run from rest.
+/// Dimensionless inside with L = object width (so w = 1); SI in and out.
+
+#include <string>
+
+#include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/analysis/stopping.hpp"
+#include "selfalign/analysis/sweep.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+namespace selfalign {
+
+/// A design request, in SI units.
+struct DesignRequest {
+  double mass = 1.0;               ///< object mass [kg] (reported; it cancels from eq. 6)
+  double width = 0.01;             ///< object width w~ [m], > 0
+  double mu = 0.3;                 ///< low-friction coefficient mu_1 [-], > 0
+  double c_mu = 2.5;               ///< mu_2/mu_1 [-], > 1
+  double gravity = 9.81;           ///< g~ [m/s^2]
+  double distance = 0.1;           ///< desired end position from the start position [m], > 0
+  double stroke_max = 0.002;       ///< actuator stroke limit [m], > 0
+  double frequency_min = 5;        ///< lowest table frequency [Hz], > 0
+  double frequency_max = 50;       ///< highest table frequency [Hz], >= frequency_min
+  double velocity_max = 0.2;       ///< |y'~| limit [m/s], > 0
+  double acceleration_max = 10;    ///< |y''~| limit [m/s^2], > 0
+  double tolerance = 0;            ///< allowed Δx_d~ [m]; 0: require accumulation (Δx_d = 0)
+  int acceleration_grid = 24;      ///< candidates per acceleration axis, >= 2
+  int period_grid = 6;             ///< candidate periods, >= 1
+  int stroke_grid = 3;             ///< candidate strokes (stroke_max, 2/3, 1/3 of it), >= 1
+  int entries = 40;                ///< steady entries per candidate (Sect. 7.1), >= 2
+};
+
+/// Throws InvalidParameter naming the first field out of range.
+void validate(const DesignRequest& request);
+
+struct DesignResult {
+  bool feasible = false;
+  std::string message;             ///< why not, naming the binding limit, when infeasible
+  // The recommended profile, SI:
+  double period = 0;               ///< Δt~ [s]
+  double stroke = 0;               ///< Δy~ [m]
+  double a2 = 0, a3 = 0;           ///< y2''~, y3''~ [m/s^2]
+  double t1 = 0, t2 = 0, t3 = 0;   ///< switch times [s]
+  double y_ini = 0, y_dot_ini = 0; ///< [m], [m/s]
+  double velocity_peak = 0;        ///< max |y'~| [m/s]
+  StickSlipCase motion_case = StickSlipCase::non_physical;
+  // Predictions, SI:
+  double v_bar = 0;                ///< steady average velocity [m/s]
+  double x_mu = 0;                 ///< where the high-friction region must start [m]
+  double end_position = 0;         ///< predicted end position x_d~ [m] (= distance)
+  double error_band = 0;           ///< half-width of the end-position band [m]
+  double process_time = 0;         ///< T_p~: time to come within the band for good [s]
+  StopKind stop = StopKind::not_stopped;
+  int candidates = 0, feasible_candidates = 0;
+  ThreePhaseParameters dimensionless{};  ///< the same profile in model units (L = width)
+  double x_mu_dimensionless = 0;
+};
+
+/// Runs the search. Infeasible requests return feasible = false with a message.
+DesignResult design_process(const DesignRequest& request, const SweepOptions& sweep = {});
+
+}  // namespace selfalign

@@ -1,0 +1,194 @@
+#include "selfalign/design/process_design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "../analysis/parallel_cells.hpp"
+#include "selfalign/analysis/positioning.hpp"
+#include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/units.hpp"
+
+namespace selfalign {
+
+void validate(const DesignRequest& q) {
+  require_positive("mass", q.mass);
+  require_positive("width", q.width);
+  require_positive("mu", q.mu);
+  require_greater("c_mu", q.c_mu, 1.0);
+  require_positive("g", q.gravity);
+  require_positive("distance", q.distance);
+  require_positive("stroke_max", q.stroke_max);
+  require_positive("frequency_min", q.frequency_min);
+  require_greater("frequency_max", q.frequency_max, q.frequency_min * (1 - 1e-15));
+  require_positive("velocity_max", q.velocity_max);
+  require_positive("acceleration_max", q.acceleration_max);
+  require_non_negative("tolerance", q.tolerance);
+  if (q.acceleration_grid < 2)
+    throw InvalidParameter("acceleration_grid", q.acceleration_grid, "must be >= 2");
+  if (q.period_grid < 1) throw InvalidParameter("period_grid", q.period_grid, "must be >= 1");
+  if (q.stroke_grid < 1) throw InvalidParameter("stroke_grid", q.stroke_grid, "must be >= 1");
+  if (q.entries < 2) throw InvalidParameter("entries", q.entries, "must be >= 2");
+}
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kFraction = 0.999;  // "arrived" for accumulation: p = 0.999 (Sect. 7.3)
+
+struct Candidate {
+  ThreePhaseParameters p;
+  bool evaluated = false, reaches = false, positioned = false;
+  double dx_d = kInf, x_mu = 0, estimate = kInf, v_bar = 0;
+  StickSlipCase motion_case = StickSlipCase::non_physical;
+};
+
+// Settling time of one entry: from crossing x_mu to the final stop (or p = 0.999).
+double settling(const StoppingRun& run) {
+  const double done = run.kind == StopKind::accumulation ? run.time_to_fraction[0]
+                                                         : run.process_time;
+  return done - run.entry_time;
+}
+
+}  // namespace
+
+DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
+  validate(q);
+  const Scales sc(q.width, q.mu, q.gravity);  // L = width, so w = 1 in model units
+  const double a_max = sc.acceleration_from_si(q.acceleration_max);
+  const double v_max = sc.velocity_from_si(q.velocity_max);
+  const double distance = sc.length_from_si(q.distance);
+  const double tolerance = sc.length_from_si(q.tolerance);
+  DesignResult r;
+  const double a_hi = std::min(q.c_mu, a_max);
+  if (a_hi <= 1) {
+    r.message = "acceleration_max = " + format_number(q.acceleration_max) +
+                " m/s^2 binds: the table must exceed mu g = " + format_number(sc.acceleration()) +
+                " m/s^2 to make the object slip";
+    return r;
+  }
+  // Candidate grid.
+  const std::vector<double> periods = log_grid(sc.time_from_si(1 / q.frequency_max),
+                                               sc.time_from_si(1 / q.frequency_min), q.period_grid);
+  const std::vector<double> a2s = linear_grid(1 + (a_hi - 1) / q.acceleration_grid, a_hi,
+                                              q.acceleration_grid);
+  const std::vector<double> a3s = linear_grid(a_hi / q.acceleration_grid, a_hi, q.acceleration_grid);
+  std::vector<Candidate> cands;
+  int non_physical = 0, too_fast = 0;
+  for (double period : periods)
+    for (int k = q.stroke_grid; k >= 1; --k) {
+      const double stroke = sc.length_from_si(q.stroke_max) * k / q.stroke_grid;
+      for (double a2 : a2s)
+        for (double a3 : a3s) {
+          const ThreePhaseParameters p{period, stroke, a2, a3};
+          const ThreePhaseSolution s = solve_three_phase(p);
+          if (!s.physical) {
+            ++non_physical;
+            continue;
+          }
+          const double D = a2 * (s.t2 - s.t1);  // velocity swing y'_max - y'_min (eq. 65)
+          if (std::max(s.yd_ini, D - s.yd_ini) > v_max) {
+            ++too_fast;
+            continue;
+          }
+          cands.push_back({p});
+        }
+    }
+  r.candidates = static_cast<int>(cands.size());
+  if (cands.empty()) {
+    r.message = "no three-phase profile fits the limits: " + std::to_string(non_physical) +
+                " candidates cannot reach the stroke (stroke_max, frequency_min and "
+                "acceleration_max bind: case 0), " + std::to_string(too_fast) +
+                " exceed velocity_max = " + format_number(q.velocity_max) + " m/s";
+    return r;
+  }
+
+  PositioningOptions po;
+  po.entries = q.entries;
+  po.stopping.max_periods = 300;
+  po.stopping.fractions = {kFraction};
+  po.stop_at_first_failure = true;
+  detail::parallel_cells(cands.size(), sweep, [&](std::size_t i) {
+    Candidate& c = cands[i];
+    c.evaluated = true;
+    const ThreePhaseProfile profile(c.p);
+    const PositioningAccuracy acc = positioning_accuracy(profile, 1.0, q.c_mu, po);
+    c.motion_case = acc.steady.motion_case;
+    c.v_bar = acc.steady.v_bar;
+    c.reaches = acc.reaches && acc.all_stopped;
+    if (!c.reaches) return;
+    c.dx_d = acc.dx_d;
+    c.positioned = tolerance == 0 ? acc.accumulates : acc.dx_d <= tolerance;
+    if (!c.positioned) return;
+    // x_d = x_mu + overshoot_min + Δx_d must be the requested distance.
+    c.x_mu = distance - (acc.overshoot_min + acc.dx_d);
+    if (c.x_mu <= 0) {
+      c.positioned = false;
+      return;
+    }
+    double settle = 0;
+    for (const StoppingRun& run : acc.runs) settle = std::max(settle, settling(run));
+    c.estimate = c.x_mu / c.v_bar + settle;
+  });
+
+  const Candidate* best = nullptr;
+  double best_dx_d = kInf;
+  int reaching = 0;
+  for (const Candidate& c : cands) {
+    reaching += c.reaches;
+    if (c.reaches) best_dx_d = std::min(best_dx_d, c.dx_d);
+    if (!c.positioned) continue;
+    ++r.feasible_candidates;
+    if (!best || c.estimate < best->estimate) best = &c;
+  }
+  if (!best) {
+    r.message = reaching == 0
+                    ? "no candidate moves the object forward and stops it (acceleration_max, "
+                      "velocity_max and c_mu bind)"
+                    : "the positioning requirement binds: no candidate " +
+                          std::string(tolerance == 0 ? "accumulates (Δx_d = 0)"
+                                                     : "reaches the tolerance") +
+                          "; the smallest Δx_d found is " +
+                          format_number(sc.length_to_si(best_dx_d)) + " m";
+    return r;
+  }
+
+  // The recommended design, and its exact stopping run from rest.
+  const ThreePhaseProfile profile(best->p);
+  const TwoRegionFriction friction(best->x_mu, 1.0, q.c_mu);
+  StoppingOptions so;
+  so.fractions = {kFraction};
+  const StoppingRun run = stopping_run(profile, friction, {0, 0, 0}, so);
+  const ThreePhaseSolution& s = profile.solution();
+  r.feasible = run.kind != StopKind::not_stopped;
+  r.message = r.feasible ? "ok" : "the recommended profile did not stop from rest";
+  r.dimensionless = best->p;
+  r.x_mu_dimensionless = best->x_mu;
+  r.period = sc.time_to_si(best->p.period);
+  r.stroke = sc.length_to_si(best->p.stroke);
+  r.a2 = sc.acceleration_to_si(best->p.a2);
+  r.a3 = sc.acceleration_to_si(best->p.a3);
+  r.t1 = sc.time_to_si(s.t1);
+  r.t2 = sc.time_to_si(s.t2);
+  r.t3 = sc.time_to_si(s.t3);
+  r.y_ini = sc.length_to_si(s.y_ini);
+  r.y_dot_ini = sc.velocity_to_si(s.yd_ini);
+  r.velocity_peak = sc.velocity_to_si(std::max(s.yd_ini, best->p.a2 * (s.t2 - s.t1) - s.yd_ini));
+  r.motion_case = best->motion_case;
+  r.v_bar = sc.velocity_to_si(best->v_bar);
+  r.x_mu = sc.length_to_si(best->x_mu);
+  r.stop = run.kind;
+  // Accumulation ends at x_stick,min in the limit; "arrived" is p = 0.999 of the way.
+  const double band = run.kind == StopKind::accumulation
+                          ? (1 - kFraction) * (run.x_stick_min - best->x_mu)
+                          : best->dx_d;
+  r.end_position = sc.length_to_si(run.end_position);
+  r.error_band = sc.length_to_si(std::max(band, best->dx_d));
+  r.process_time = sc.time_to_si(run.kind == StopKind::accumulation ? run.time_to_fraction[0]
+                                                                    : run.process_time);
+  return r;
+}
+
+}  // namespace selfalign

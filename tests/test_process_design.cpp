@@ -1,0 +1,88 @@
+// Tests for design/process_design.hpp: the recommended design, replayed through the general
+// simulate() front door, reaches the target in the predicted T_p and stays in the band.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "selfalign/design/process_design.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/simulate/simulate.hpp"
+#include "selfalign/units.hpp"
+
+using namespace selfalign;
+
+namespace {
+DesignRequest small_request() {
+  DesignRequest q;  // 1 cm object, 10 cm travel, 2 mm stroke, 5-50 Hz, 0.2 m/s, 10 m/s^2
+  q.acceleration_grid = 12;
+  q.period_grid = 3;
+  q.stroke_grid = 2;
+  q.entries = 20;
+  return q;
+}
+
+// First sample time from which the object stays within `band` of `target` until the end.
+double settle_time(const Trajectory& tr, double target, double band) {
+  double t = std::nan("");
+  for (std::size_t i = 0; i < tr.size(); ++i) {
+    const bool in = std::abs(tr.x[i] - target) <= band;
+    if (in && std::isnan(t)) t = tr.t[i];
+    if (!in) t = std::nan("");
+  }
+  return t;
+}
+}  // namespace
+
+TEST(ProcessDesign, ReplayReachesTheTargetInThePredictedTimeAndStaysInTheBand) {
+  for (double tolerance : {0.0, 2e-4}) {
+    DesignRequest q = small_request();
+    q.tolerance = tolerance;
+    const DesignResult d = design_process(q);
+    ASSERT_TRUE(d.feasible) << d.message;
+    EXPECT_LE(d.velocity_peak, q.velocity_max * (1 + 1e-12));
+    EXPECT_LE(std::max(d.a2, d.a3), q.acceleration_max * (1 + 1e-12));
+    EXPECT_LE(d.stroke, q.stroke_max * (1 + 1e-12));
+    EXPECT_GE(1 / d.period, q.frequency_min * (1 - 1e-12));
+    EXPECT_LE(1 / d.period, q.frequency_max * (1 + 1e-12));
+    if (tolerance == 0) EXPECT_EQ(d.stop, StopKind::accumulation);
+    // Replay in model units (L = width) through simulate(), sampled at Δt/200.
+    const Scales sc(q.width, q.mu, q.gravity);
+    const ThreePhaseProfile profile(d.dimensionless);
+    const TwoRegionFriction friction(d.x_mu_dimensionless, 1.0, q.c_mu);
+    SimulationOptions o;
+    o.duration = sc.time_from_si(d.process_time) + 20 * profile.period();
+    o.output_step = profile.period() / 200;
+    const SimulationResult run = simulate(profile, friction, {0, 0, 0}, o);
+    const double t_in = settle_time(run.trajectory, sc.length_from_si(d.end_position),
+                                    sc.length_from_si(d.error_band));
+    ASSERT_FALSE(std::isnan(t_in)) << "never settled in the band";
+    EXPECT_NEAR(t_in, sc.time_from_si(d.process_time), profile.period());  // within one period
+    // The end position is the requested distance, within the band (+ accumulation's limit).
+    EXPECT_NEAR(d.end_position, q.distance, d.error_band + 1e-12);
+  }
+}
+
+TEST(ProcessDesign, InfeasibleRequestsNameTheBindingLimit) {
+  DesignRequest q = small_request();
+  q.acceleration_max = 2.0;  // below mu g = 2.943 m/s^2
+  DesignResult d = design_process(q);
+  EXPECT_FALSE(d.feasible);
+  EXPECT_NE(d.message.find("acceleration_max"), std::string::npos) << d.message;
+  q = small_request();
+  q.velocity_max = 1e-4;
+  d = design_process(q);
+  EXPECT_FALSE(d.feasible);
+  EXPECT_NE(d.message.find("exceed velocity_max"), std::string::npos) << d.message;
+}
+
+TEST(ProcessDesign, MisuseThrows) {
+  DesignRequest q = small_request();
+  q.width = -1;
+  EXPECT_THROW(design_process(q), InvalidParameter);
+  q = small_request();
+  q.c_mu = 1.0;
+  EXPECT_THROW(design_process(q), InvalidParameter);
+  q = small_request();
+  q.distance = std::nan("");
+  EXPECT_THROW(design_process(q), InvalidParameter);
+}
