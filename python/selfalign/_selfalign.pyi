@@ -673,3 +673,98 @@ def positioning_surfaces(
     threads: int = 0,
     progress: Progress = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
+
+# ---- design ----------------------------------------------------------------------------------
+
+class DesignRequest:
+    mass: float
+    width: float
+    mu: float
+    c_mu: float
+    gravity: float
+    distance: float
+    stroke_max: float
+    frequency_min: float
+    frequency_max: float
+    velocity_max: float
+    acceleration_max: float
+    tolerance: float
+    acceleration_grid: int
+    period_grid: int
+    stroke_grid: int
+    entries: int
+    @overload
+    def __init__(self) -> None: ...
+    @overload
+    def __init__(
+        self,
+        *,
+        mass: float = 1.0,
+        width: float = 0.01,
+        mu: float = 0.3,
+        c_mu: float = 2.5,
+        gravity: float = 9.81,
+        distance: float = 0.1,
+        stroke_max: float = 0.002,
+        frequency_min: float = 5.0,
+        frequency_max: float = 50.0,
+        velocity_max: float = 0.2,
+        acceleration_max: float = 10.0,
+        tolerance: float = 0.0,
+        acceleration_grid: int = 24,
+        period_grid: int = 6,
+        stroke_grid: int = 3,
+        entries: int = 40,
+    ) -> None: ...
+
+class DesignResult:
+    @property
+    def feasible(self) -> bool: ...
+    @property
+    def message(self) -> str: ...
+    @property
+    def period(self) -> float: ...
+    @property
+    def stroke(self) -> float: ...
+    @property
+    def a2(self) -> float: ...
+    @property
+    def a3(self) -> float: ...
+    @property
+    def t1(self) -> float: ...
+    @property
+    def t2(self) -> float: ...
+    @property
+    def t3(self) -> float: ...
+    @property
+    def y_ini(self) -> float: ...
+    @property
+    def y_dot_ini(self) -> float: ...
+    @property
+    def velocity_peak(self) -> float: ...
+    @property
+    def motion_case(self) -> StickSlipCase: ...
+    @property
+    def v_bar(self) -> float: ...
+    @property
+    def x_mu(self) -> float: ...
+    @property
+    def end_position(self) -> float: ...
+    @property
+    def error_band(self) -> float: ...
+    @property
+    def process_time(self) -> float: ...
+    @property
+    def stop(self) -> StopKind: ...
+    @property
+    def candidates(self) -> int: ...
+    @property
+    def feasible_candidates(self) -> int: ...
+    @property
+    def dimensionless(self) -> ThreePhaseParameters: ...
+    @property
+    def x_mu_dimensionless(self) -> float: ...
+
+def design_process(
+    request: DesignRequest, *, threads: int = 0, progress: Progress = None
+) -> DesignResult: ...

@@ -21,4 +21,5 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_sweep(m);
   bind_stopping(m);
   bind_positioning(m);
+  bind_design(m);
 }

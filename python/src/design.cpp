@@ -1,0 +1,99 @@
+// selfalign design: from SI actuator limits to a recommended three-phase profile.
+#include "selfalign/design/process_design.hpp"
+
+#include "bindings.hpp"
+#include "progress.hpp"
+
+namespace selfalign::python {
+
+void bind_design(py::module_& m) {
+  const DesignRequest d;
+  py::class_<DesignRequest>(m, "DesignRequest", R"doc(
+A design request in SI units (design_process): the object (mass [kg], width [m], mu [-],
+c_mu [-], g [m/s^2]), the distance to travel [m], the actuator limits (stroke_max [m],
+frequency_min/frequency_max [Hz], velocity_max [m/s], acceleration_max [m/s^2]), the
+positioning requirement (tolerance [m]; 0 requires accumulation, Δx_d = 0) and the search
+resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc")
+      .def(py::init<>())
+      .def(py::init([](double mass, double width, double mu, double c_mu, double gravity,
+                       double distance, double stroke_max, double frequency_min,
+                       double frequency_max, double velocity_max, double acceleration_max,
+                       double tolerance, int acceleration_grid, int period_grid, int stroke_grid,
+                       int entries) {
+             return DesignRequest{mass, width, mu, c_mu, gravity, distance, stroke_max,
+                                  frequency_min, frequency_max, velocity_max, acceleration_max,
+                                  tolerance, acceleration_grid, period_grid, stroke_grid,
+                                  entries};
+           }),
+           py::kw_only(), py::arg("mass") = d.mass, py::arg("width") = d.width,
+           py::arg("mu") = d.mu, py::arg("c_mu") = d.c_mu, py::arg("gravity") = d.gravity,
+           py::arg("distance") = d.distance, py::arg("stroke_max") = d.stroke_max,
+           py::arg("frequency_min") = d.frequency_min, py::arg("frequency_max") = d.frequency_max,
+           py::arg("velocity_max") = d.velocity_max,
+           py::arg("acceleration_max") = d.acceleration_max, py::arg("tolerance") = d.tolerance,
+           py::arg("acceleration_grid") = d.acceleration_grid,
+           py::arg("period_grid") = d.period_grid, py::arg("stroke_grid") = d.stroke_grid,
+           py::arg("entries") = d.entries)
+      .def_readwrite("mass", &DesignRequest::mass, "object mass [kg]")
+      .def_readwrite("width", &DesignRequest::width, "object width [m]")
+      .def_readwrite("mu", &DesignRequest::mu, "low-friction coefficient mu_1 [-]")
+      .def_readwrite("c_mu", &DesignRequest::c_mu, "mu_2/mu_1 [-]")
+      .def_readwrite("gravity", &DesignRequest::gravity, "g [m/s^2]")
+      .def_readwrite("distance", &DesignRequest::distance, "end position from the start [m]")
+      .def_readwrite("stroke_max", &DesignRequest::stroke_max, "stroke limit [m]")
+      .def_readwrite("frequency_min", &DesignRequest::frequency_min, "[Hz]")
+      .def_readwrite("frequency_max", &DesignRequest::frequency_max, "[Hz]")
+      .def_readwrite("velocity_max", &DesignRequest::velocity_max, "|y'| limit [m/s]")
+      .def_readwrite("acceleration_max", &DesignRequest::acceleration_max, "|y''| limit [m/s^2]")
+      .def_readwrite("tolerance", &DesignRequest::tolerance, "allowed Δx_d [m]; 0: accumulation")
+      .def_readwrite("acceleration_grid", &DesignRequest::acceleration_grid, "per axis, >= 2")
+      .def_readwrite("period_grid", &DesignRequest::period_grid, "candidate periods, >= 1")
+      .def_readwrite("stroke_grid", &DesignRequest::stroke_grid, "candidate strokes, >= 1")
+      .def_readwrite("entries", &DesignRequest::entries, "steady entries per candidate, >= 2");
+
+  py::class_<DesignResult>(m, "DesignResult", R"doc(
+The recommended three-phase profile (SI: period [s], stroke [m], a2/a3 [m/s^2], t1..t3 [s],
+y_ini [m], y_dot_ini and velocity_peak [m/s]), its motion case, and the predictions: v_bar
+[m/s], x_mu (where the high-friction region starts) [m], end_position and error_band [m],
+process_time T_p [s], stop kind. feasible = False with a message naming the binding limit.)doc")
+      .def_readonly("feasible", &DesignResult::feasible, "a design was found")
+      .def_readonly("message", &DesignResult::message, "why not, naming the binding limit")
+      .def_readonly("period", &DesignResult::period, "Δt [s]")
+      .def_readonly("stroke", &DesignResult::stroke, "Δy [m]")
+      .def_readonly("a2", &DesignResult::a2, "y2'' [m/s^2]")
+      .def_readonly("a3", &DesignResult::a3, "y3'' [m/s^2]")
+      .def_readonly("t1", &DesignResult::t1, "[s]")
+      .def_readonly("t2", &DesignResult::t2, "[s]")
+      .def_readonly("t3", &DesignResult::t3, "[s]")
+      .def_readonly("y_ini", &DesignResult::y_ini, "[m]")
+      .def_readonly("y_dot_ini", &DesignResult::y_dot_ini, "[m/s]")
+      .def_readonly("velocity_peak", &DesignResult::velocity_peak, "max |y'| [m/s]")
+      .def_readonly("motion_case", &DesignResult::motion_case, "Table 1 case")
+      .def_readonly("v_bar", &DesignResult::v_bar, "steady average velocity [m/s]")
+      .def_readonly("x_mu", &DesignResult::x_mu, "start of the high-friction region [m]")
+      .def_readonly("end_position", &DesignResult::end_position, "predicted end position [m]")
+      .def_readonly("error_band", &DesignResult::error_band, "half-width of the band [m]")
+      .def_readonly("process_time", &DesignResult::process_time, "T_p [s]")
+      .def_readonly("stop", &DesignResult::stop, "how the object stops")
+      .def_readonly("candidates", &DesignResult::candidates, "profiles examined")
+      .def_readonly("feasible_candidates", &DesignResult::feasible_candidates,
+                    "profiles meeting the requirement")
+      .def_readonly("dimensionless", &DesignResult::dimensionless,
+                    "the profile in model units (L = width)")
+      .def_readonly("x_mu_dimensionless", &DesignResult::x_mu_dimensionless, "x_mu [-]");
+
+  m.def(
+      "design_process",
+      [](const DesignRequest& request, int threads, const py::object& progress_in) {
+        const PythonProgress progress(progress_in);
+        const SweepOptions sweep = sweep_options(threads, progress);
+        return progress.run([&] { return design_process(request, sweep); });
+      },
+      py::arg("request"), py::kw_only(), py::arg("threads") = 0,
+      py::arg("progress") = py::none(),
+      R"doc(Recommend the three-phase profile minimising the process time T_p subject to
+accumulation (tolerance = 0) or the tolerance, within the actuator limits (SI in and out).
+Returns a DesignResult; an infeasible request has feasible = False and a message.)doc");
+}
+
+}  // namespace selfalign::python

@@ -1,0 +1,44 @@
+"""design_process from Python: a feasible design meets the limits and its replay settles in
+the band at the predicted time (within one table period); infeasible requests explain why."""
+
+import numpy as np
+import pytest
+
+import selfalign as sa
+
+
+def small(**kw):
+    return sa.DesignRequest(acceleration_grid=10, period_grid=2, stroke_grid=1, entries=10, **kw)
+
+
+def test_design_meets_limits_and_replays():
+    req = small()
+    d = sa.design_process(req, threads=1)
+    assert d.feasible, d.message
+    assert d.velocity_peak <= req.velocity_max * (1 + 1e-12)
+    assert max(d.a2, d.a3) <= req.acceleration_max * (1 + 1e-12)
+    assert abs(d.end_position - req.distance) <= d.error_band + 1e-12
+    scales = sa.Scales(req.width, req.mu, req.gravity)
+    profile = sa.ThreePhaseProfile(d.dimensionless)
+    friction = sa.TwoRegionFriction(d.x_mu_dimensionless, 1.0, req.c_mu)
+    t_p = scales.time_from_si(d.process_time)
+    run = sa.simulate(profile, friction, sa.ObjectState(),
+                      sa.SimulationOptions(duration=t_p + 10 * profile.period,
+                                           output_step=profile.period / 200))
+    tr = run.trajectory
+    inside = np.abs(tr.x - scales.length_from_si(d.end_position)) <= scales.length_from_si(d.error_band)
+    outside = np.nonzero(~inside)[0]
+    settle = tr.t[outside[-1] + 1] if len(outside) else tr.t[0]
+    assert abs(settle - t_p) <= profile.period
+
+
+def test_infeasible_design_names_the_limit():
+    d = sa.design_process(small(acceleration_max=2.0))
+    assert not d.feasible
+    assert "acceleration_max" in d.message
+
+
+def test_design_misuse_raises():
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.design_process(small(width=-1.0))
+    assert e.value.name == "width"
