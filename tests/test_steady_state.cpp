@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -81,5 +83,36 @@ TEST(SteadyState, TimeSteppingPathAgreesWithExactToOrderH) {
     EXPECT_TRUE(stepped.converged);
     EXPECT_NEAR(stepped.v_bar, exact.v_bar, 2e-3) << a2 << ", " << a3;
     EXPECT_EQ(stepped.motion_case, exact.motion_case) << a2 << ", " << a3;
+  }
+}
+
+TEST(SteadyState, ManySegmentProfilesGiveAPhysicalFixedPoint) {
+  // Regression: smooth many-segment profiles (as the Fourier optimiser builds) once sent the
+  // secant iteration to v̄ ~ 1e15 while reporting convergence (a tolerance relative to the
+  // runaway |v|). Check: the result is physical (|x'_0s| within the velocity the table can
+  // impart in a period, (max|y''| + 1) Δt) and it is the fixed point of the period map over 20
+  // periods (by Sect. 6.2 the only one). These slip-slip responses contract slowly (λ2 near 1),
+  // so plain simulation from rest is no second method here.
+  for (unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u}) {
+    const int m = 256;
+    std::vector<double> d(m, 0.072 / m), a(m);
+    for (int i = 0; i < m; ++i) {
+      const double t = (i + 0.5) / m;
+      a[i] = 800 * std::sin(2 * M_PI * t + 0.37 * seed) + 300.0 * seed * std::sin(4 * M_PI * t) +
+             150 * std::cos(6 * M_PI * t + seed);
+    }
+    double mean = 0;
+    for (double v : a) mean += v / m;
+    for (double& v : a) v -= mean;  // the velocity returns (to rounding)
+    const auto profile = PiecewiseConstantProfile::from_accelerations(d, a);
+    const SteadyState s = steady_state(profile);
+    ASSERT_TRUE(s.converged) << "seed " << seed;
+    EXPECT_LE(std::abs(s.x_dot_0s), (profile.peak_acceleration() + 1) * 0.072) << "seed " << seed;
+    const UniformFriction friction;
+    const ExactSetup setup{profile, *friction.piecewise_affine()};
+    ExactState st = make_exact_state(setup, {0, 0, s.x_dot_0s});
+    advance_exact(setup, st, 20 * 0.072);
+    EXPECT_NEAR(st.object.xd, s.x_dot_0s, 1e-9) << "seed " << seed;
+    EXPECT_NEAR(st.object.x / (20 * 0.072), s.v_bar, 1e-9) << "seed " << seed;
   }
 }

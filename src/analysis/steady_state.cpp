@@ -74,25 +74,34 @@ SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& 
 
   // Secant iteration on g(v) = P(v) - v, started from rest: plain iterates first (they reach
   // the stick-determined fixed point exactly), then secant steps (affine slip-slip maps).
+  // Safeguards: the steady x'_0s cannot exceed the velocity the table can impart in a period,
+  // V = max|y''| Δt + Δt (friction included), so a secant step is taken only on a clearly
+  // contracting slope and only if it lands within 2V; tolerances are relative to at most V.
+  const double V = (profile.peak_acceleration() + 1) * P;
+  auto small = [&](double g, double v) { return std::abs(g) <= tol * (1 + std::min(std::abs(v), V)); };
   double v_prev = 0, g_prev = period_map(0, nullptr).xd - 0;
   double v = v_prev + g_prev;
   r.periods = 1;
-  bool done = std::abs(g_prev) <= tol;
+  bool done = small(g_prev, 0);
   if (done) v = 0;
   while (!done && r.periods < o.max_periods) {
     const double g = period_map(v, nullptr).xd - v;
     ++r.periods;
-    if (std::abs(g) <= tol * (1 + std::abs(v))) {
+    if (small(g, v)) {
       done = true;
       break;
     }
     double next = v + g;  // plain iterate
     const double slope = (g - g_prev) / (v - v_prev);
-    if (r.periods > 3 && std::isfinite(slope) && slope < 0) next = v - g / slope;  // secant
+    if (r.periods > 3 && std::isfinite(slope) && slope < -1e-3) {
+      const double secant = v - g / slope;
+      if (std::abs(secant) <= 2 * V) next = secant;
+    }
     v_prev = v;
     g_prev = g;
     v = next;
   }
+  done = done && std::abs(v) <= 2 * V;
   r.converged = done;
   r.x_dot_0s = v;
   MotionCensus census;
