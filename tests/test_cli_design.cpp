@@ -55,3 +55,22 @@ TEST(CliDesign, MisuseIsOneLineNamingTheParameter) {
 
 }  // namespace
 }  // namespace selfalign
+
+namespace selfalign {
+namespace {
+
+TEST(CliOptimize, ThreePhaseReportAndMisuse) {
+  testing::CliSandbox box;
+  const auto r = box.run({"optimize", "--family", "three-phase", "--json", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["results"].size(), 1u);
+  EXPECT_TRUE(j["results"][0]["feasible"].get<bool>());
+  EXPECT_LE(j["results"][0]["max_velocity"].get<double>(), 3.2 * (1 + 1e-12));
+  EXPECT_GT(j["results"][0]["v_bar"].get<double>(), 0.0);
+  testing::expect_clean_failure(box, box.run({"optimize", "--family", "spline", "--out", "o.json"}),
+                                {"family", "must be one of"});
+}
+
+}  // namespace
+}  // namespace selfalign

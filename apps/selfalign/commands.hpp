@@ -25,6 +25,7 @@ void add_accumulation_command(CLI::App& app);
 /// `selfalign sweep accelerations|period|stroke|positioning`: parameter studies
 /// (cmd_sweep*.cpp).
 void add_sweep_command(CLI::App& app);
+void add_optimize_command(CLI::App& app);
 void add_design_command(CLI::App& app);
 
 }  // namespace selfalign::cli

@@ -32,6 +32,7 @@ constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_accuracy_command,
     &selfalign::cli::add_accumulation_command,
     &selfalign::cli::add_sweep_command,
+    &selfalign::cli::add_optimize_command,
     &selfalign::cli::add_design_command,
 };
 

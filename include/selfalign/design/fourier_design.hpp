@@ -1,0 +1,55 @@
+#pragma once
+/// \file fourier_design.hpp
+/// Optimum of the order-N Fourier profile (Sect. 4.4.2, Fig. 6) under actuator limits.
+///
+/// Design variables: the 2N coefficients (A_1..A_N, B_1..B_N) in [-1, 1]; they are rescaled by
+/// a common factor so that the stroke is Δy exactly (the stroke is linear in the scale).
+/// Constraints over the whole period, from the profile's exact extrema (dense sampling of the
+/// derivative, each sign change refined by bisection to machine precision):
+///   max|y'| <= y'_max,  max|y''| <= y''_max.
+///
+/// Objective: FourierProfile is not piecewise constant, so steady_state() would time-step,
+/// which is O(h) accurate with an erratic constant (docs/time-stepping.md) and so noisy in the
+/// coefficients. Instead f is evaluated on the M-segment piecewise-constant approximation
+/// (fourier_approximation): nodes t_i = i Δt / M, accelerations
+///   a_i = (y'(t_{i+1}) - y'(t_i)) / (t_{i+1} - t_i),
+/// so the approximate table velocity is the piecewise-linear interpolant of y' and exact at the
+/// nodes (its mean is the trapezoid rule of y', exact for a trigonometric polynomial of order
+/// N < M, so the zero-mean velocity of the approximation equals y' at the nodes). The exact
+/// event-driven solver then makes f a smooth function of the coefficients; the approximation
+/// error is O((Δt/M)^2) in the table velocity.
+/// Optimiser: LD_SLSQP with central finite-difference gradients (OptimizeOptions::fd_step),
+/// deterministic multi-start: the Lanczos-smoothed Fourier series of the three-phase optimum,
+/// then seeded random starts with coefficients decaying as 1/k^2.
+
+#include <memory>
+
+#include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/design/optimize.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+
+namespace selfalign {
+
+/// The M-segment piecewise-constant approximation of any profile described above
+/// (segments >= 2; throws InvalidParameter otherwise).
+PiecewiseConstantProfile fourier_approximation(const TableProfile& profile, int segments);
+
+/// Steady state of the M-segment approximation (exact solver).
+SteadyState approximate_steady_state(const TableProfile& profile, int segments);
+
+/// max |y'| over the period of a Fourier profile (bisection-refined extrema).
+double max_abs_velocity(const FourierProfile& profile);
+
+/// Fourier coefficients (A, B) of order `order` of a piecewise-constant profile's y, with
+/// Lanczos sigma factors to damp the Gibbs overshoot of y''.
+void fourier_series_of(const PiecewiseConstantProfile& profile, int order,
+                       std::vector<double>& cos_coeffs, std::vector<double>& sin_coeffs);
+
+/// Optimises order N = options.order. When three_phase_start is given and feasible it seeds
+/// one start (else the three-phase optimum is computed first).
+OptimizationResult optimize_fourier(const ActuatorLimits& limits,
+                                    const OptimizeOptions& options = {},
+                                    const OptimizationResult* three_phase_start = nullptr);
+
+}  // namespace selfalign

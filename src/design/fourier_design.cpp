@@ -1,0 +1,294 @@
+#include "selfalign/design/fourier_design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "../profiles/periodic_extrema.hpp"
+#include "selfalign/design/local_search.hpp"
+#include "selfalign/design/piecewise_design.hpp"
+#include "selfalign/design/three_phase_design.hpp"
+#include "selfalign/error.hpp"
+
+namespace selfalign {
+
+namespace {
+
+constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
+constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimiser
+
+// Fast evaluation of a Fourier design x = (A_1..A_N, B_1..B_N) (unscaled): trigonometric
+// tables on the extrema grid and on the M approximation nodes, extrema refined by Newton on
+// the next derivative from every near-extreme grid point.
+class FourierEvaluator {
+ public:
+  FourierEvaluator(const ActuatorLimits& l, int order, int segments)
+      : l_(l), n_(order), m_(segments), w_(2 * std::numbers::pi / l.period) {
+    table(kSamplesPerHarmonic * n_, grid_cos_, grid_sin_);
+    table(m_, node_cos_, node_sin_);
+  }
+
+  // d-th derivative of y at t for coefficients x (unscaled).
+  double derivative(std::span<const double> x, int d, double t) const {
+    double s = 0;
+    const double shift = d * std::numbers::pi / 2;
+    for (int k = 1; k <= n_; ++k) {
+      const double kw = k * w_, ph = kw * t + shift;
+      s += std::pow(kw, d) * (x[k - 1] * std::cos(ph) + x[n_ + k - 1] * std::sin(ph));
+    }
+    return s;
+  }
+
+  // min and max of the d-th derivative over the period (d = 0, 1, 2).
+  detail::Extrema extrema(std::span<const double> x, int d) const {
+    const int s = kSamplesPerHarmonic * n_;
+    sampled(x, d, grid_cos_, grid_sin_, s, buf_);
+    const auto [lo_it, hi_it] = std::minmax_element(buf_.begin(), buf_.end());
+    detail::Extrema e{*lo_it, *hi_it};
+    const double margin = 0.05 * (e.max - e.min), h = l_.period / s;
+    for (int j = 0; j < s; ++j) {
+      const double v = buf_[static_cast<std::size_t>(j)];
+      const double prev = buf_[static_cast<std::size_t>((j + s - 1) % s)];
+      const double next = buf_[static_cast<std::size_t>((j + 1) % s)];
+      const bool is_max = v >= prev && v >= next && v >= e.max - margin;
+      const bool is_min = v <= prev && v <= next && v <= e.min + margin;
+      if (!is_max && !is_min) continue;
+      double t = j * h;  // Newton on the next derivative, kept within the neighbouring cells
+      for (int it = 0; it < 8; ++it) {
+        const double g1 = derivative(x, d + 1, t), g2 = derivative(x, d + 2, t);
+        if (g2 == 0) break;
+        t = std::clamp(t - g1 / g2, (j - 1) * h, (j + 1) * h);
+      }
+      const double r = derivative(x, d, t);
+      e.max = std::max(e.max, r);
+      e.min = std::min(e.min, r);
+    }
+    return e;
+  }
+
+  struct Point {
+    bool valid = false;
+    double scale = 0;  // common factor that makes the stroke Δy
+    double v_bar = 0, max_velocity = 0, max_acceleration = 0;
+  };
+
+  Point evaluate(std::span<const double> x) const {
+    Point p;
+    const detail::Extrema ey = extrema(x, 0);
+    if (!(ey.max - ey.min > 1e-300)) return p;
+    p.scale = l_.stroke / (ey.max - ey.min);
+    if (!std::isfinite(p.scale)) return p;
+    const detail::Extrema ev = extrema(x, 1), ea = extrema(x, 2);
+    p.max_velocity = p.scale * std::max(-ev.min, ev.max);
+    p.max_acceleration = p.scale * std::max(-ea.min, ea.max);
+    sampled(x, 1, node_cos_, node_sin_, m_, buf_);
+    const double h = l_.period / m_;
+    durations_.assign(static_cast<std::size_t>(m_), h);
+    accels_.resize(static_cast<std::size_t>(m_));
+    for (int i = 0; i < m_; ++i)  // eq. of fourier_design.hpp: node velocities exact
+      accels_[static_cast<std::size_t>(i)] =
+          p.scale * (buf_[static_cast<std::size_t>((i + 1) % m_)] - buf_[static_cast<std::size_t>(i)]) / h;
+    const auto profile =
+        PiecewiseConstantProfile::from_accelerations(durations_, accels_, "fourier-approximation");
+    p.v_bar = trusted_v_bar(steady_state(profile), max_abs_velocity(profile), l_.period);
+    p.valid = std::isfinite(p.v_bar);
+    return p;
+  }
+
+ private:
+  void table(int s, std::vector<double>& c, std::vector<double>& sn) const {
+    c.resize(static_cast<std::size_t>(s * n_));
+    sn.resize(c.size());
+    for (int j = 0; j < s; ++j)
+      for (int k = 1; k <= n_; ++k) {
+        const double ph = k * w_ * (l_.period * j / s);
+        c[static_cast<std::size_t>(j * n_ + k - 1)] = std::cos(ph);
+        sn[static_cast<std::size_t>(j * n_ + k - 1)] = std::sin(ph);
+      }
+  }
+
+  // d-th derivative on a tabulated grid of s points.
+  void sampled(std::span<const double> x, int d, const std::vector<double>& c,
+               const std::vector<double>& sn, int s, std::vector<double>& out) const {
+    out.assign(static_cast<std::size_t>(s), 0.0);
+    for (int j = 0; j < s; ++j) {
+      double v = 0;
+      for (int k = 1; k <= n_; ++k) {
+        const double kw = std::pow(k * w_, d);
+        const double a = x[k - 1], b = x[n_ + k - 1];
+        const double cc = c[static_cast<std::size_t>(j * n_ + k - 1)];
+        const double ss = sn[static_cast<std::size_t>(j * n_ + k - 1)];
+        // derivative d of a cos + b sin: rotate by d quarter turns
+        switch (d % 4) {
+          case 0: v += kw * (a * cc + b * ss); break;
+          case 1: v += kw * (-a * ss + b * cc); break;
+          case 2: v += kw * (-a * cc - b * ss); break;
+          default: v += kw * (a * ss - b * cc); break;
+        }
+      }
+      out[static_cast<std::size_t>(j)] = v;
+    }
+  }
+
+  ActuatorLimits l_;
+  int n_, m_;
+  double w_;
+  std::vector<double> grid_cos_, grid_sin_, node_cos_, node_sin_;
+  mutable std::vector<double> buf_, durations_, accels_;
+};
+
+// Scales a start so that max |x_i| = 0.5 (inside the [-1, 1] box).
+void normalise(std::vector<double>& x) {
+  double m = 0;
+  for (double v : x) m = std::max(m, std::abs(v));
+  if (m > 0)
+    for (double& v : x) v *= 0.5 / m;
+}
+
+}  // namespace
+
+PiecewiseConstantProfile fourier_approximation(const TableProfile& profile, int segments) {
+  if (segments < 2)
+    throw InvalidParameter("approximation_segments", static_cast<double>(segments),
+                           "must be >= 2");
+  const double dt = profile.period(), h = dt / segments;
+  std::vector<double> v(static_cast<std::size_t>(segments));
+  for (int i = 0; i < segments; ++i) v[static_cast<std::size_t>(i)] = profile.velocity(i * h);
+  std::vector<double> d(v.size(), h), a(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) a[i] = (v[(i + 1) % v.size()] - v[i]) / h;
+  return PiecewiseConstantProfile::from_accelerations(d, a, "fourier-approximation");
+}
+
+SteadyState approximate_steady_state(const TableProfile& profile, int segments) {
+  return steady_state(fourier_approximation(profile, segments));
+}
+
+double max_abs_velocity(const FourierProfile& profile) {
+  auto yd = [&profile](double t) { return profile.state(t).yd; };
+  auto ydd = [&profile](double t) { return profile.state(t).ydd; };
+  const detail::Extrema e =
+      detail::periodic_extrema(yd, ydd, profile.period(), 128 * profile.order());
+  return std::max(-e.min, e.max);
+}
+
+void fourier_series_of(const PiecewiseConstantProfile& profile, int order,
+                       std::vector<double>& cos_coeffs, std::vector<double>& sin_coeffs) {
+  const double dt = profile.period(), w = 2 * std::numbers::pi / dt;
+  const auto segs = profile.segments();
+  cos_coeffs.assign(static_cast<std::size_t>(order), 0.0);
+  sin_coeffs.assign(static_cast<std::size_t>(order), 0.0);
+  for (int k = 1; k <= order; ++k) {
+    const double kw = k * w;
+    double alpha = 0, beta = 0;  // Fourier coefficients of y''
+    for (std::size_t i = 0; i < segs.size(); ++i) {
+      const double ta = segs[i].begin, tb = i + 1 < segs.size() ? segs[i + 1].begin : dt;
+      alpha += segs[i].accel * (std::sin(kw * tb) - std::sin(kw * ta)) / kw;
+      beta += -segs[i].accel * (std::cos(kw * tb) - std::cos(kw * ta)) / kw;
+    }
+    const double x = k * std::numbers::pi / (order + 1);
+    const double sigma = std::sin(x) / x;  // Lanczos factor against Gibbs overshoot
+    cos_coeffs[static_cast<std::size_t>(k - 1)] = -sigma * (2 / dt) * alpha / (kw * kw);
+    sin_coeffs[static_cast<std::size_t>(k - 1)] = -sigma * (2 / dt) * beta / (kw * kw);
+  }
+}
+
+OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptions& o,
+                                    const OptimizationResult* three_phase_start) {
+  validate(l);
+  validate(o);
+  OptimizationResult r;
+  r.family = "fourier";
+  r.limits = l;
+  const int n = o.order;
+  const FourierEvaluator evaluator(l, n, o.approximation_segments);
+
+  LocalSearchProblem problem;
+  problem.lower.assign(static_cast<std::size_t>(2 * n), -1.0);
+  problem.upper.assign(static_cast<std::size_t>(2 * n), 1.0);
+  problem.constraint_names = {"max_velocity", "max_acceleration"};
+  problem.gradient_based = true;
+  problem.fd_step = o.fd_step;
+  problem.max_evaluations = o.max_evaluations;
+  problem.feasibility_tol = kFeasibilityTol;
+  problem.relative_tol = 1e-9;
+  problem.evaluate = [&evaluator, &l](std::span<const double> x) {
+    DesignEvaluation e;
+    const FourierEvaluator::Point p = evaluator.evaluate(x);
+    if (!p.valid) {
+      e.objective = design_objective(-1.0, l.period, l.stroke);
+      e.constraints = {1.0, 1.0};
+      return e;
+    }
+    e.objective = design_objective(p.v_bar, l.period, l.stroke);
+    e.constraints = {p.max_velocity / l.max_velocity - 1.0,
+                     p.max_acceleration / l.max_acceleration - 1.0};
+    return e;
+  };
+
+  std::vector<std::vector<double>> starts;
+  OptimizationResult three;
+  if (three_phase_start && three_phase_start->feasible) {
+    three = *three_phase_start;
+  } else {
+    OptimizeOptions q = o;
+    q.progress = nullptr;
+    three = optimize_three_phase(l, q);
+    r.evaluations += three.evaluations;
+  }
+  if (three.feasible) {
+    std::vector<double> a, b;
+    fourier_series_of(*rebuild_profile(three)->piecewise_constant(), n, a, b);
+    a.insert(a.end(), b.begin(), b.end());
+    normalise(a);
+    starts.push_back(std::move(a));
+  }
+  std::mt19937 rng(o.seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  while (static_cast<int>(starts.size()) < o.starts) {
+    std::vector<double> x(static_cast<std::size_t>(2 * n));
+    for (int k = 1; k <= n; ++k) {
+      x[static_cast<std::size_t>(k - 1)] = u(rng) / (k * k);
+      x[static_cast<std::size_t>(n + k - 1)] = u(rng) / (k * k);
+    }
+    normalise(x);
+    // Mirror (y -> -y, hence v̄ -> -v̄) a start that drives the object backwards.
+    if (problem.evaluate(x).objective >= 1e6)
+      for (double& v : x) v = -v;
+    ++r.evaluations;
+    starts.push_back(std::move(x));
+  }
+
+  const LocalSearchResult best = local_search(problem, starts, o.progress);
+  r.evaluations += best.evaluations;
+  r.starts = best.runs;
+  if (!best.feasible) {
+    r.message = "no feasible order-" + std::to_string(n) + " Fourier profile: " + best.binding +
+                " is binding (least violation " + format_number(best.violation) + " relative)";
+    return r;
+  }
+  const FourierEvaluator::Point p = evaluator.evaluate(best.x);
+  const auto nn = static_cast<long>(n);
+  std::vector<double> a(best.x.begin(), best.x.begin() + nn), b(best.x.begin() + nn, best.x.end());
+  for (double& v : a) v *= p.scale;
+  for (double& v : b) v *= p.scale;
+  const FourierProfile profile(l.period, a, b);
+  r.parameters = a;
+  r.parameters.insert(r.parameters.end(), b.begin(), b.end());
+  r.v_bar = p.v_bar;
+  r.f = objective_f(p.v_bar);
+  r.max_velocity = max_abs_velocity(profile);
+  r.max_acceleration = profile.peak_acceleration();
+  const double slack = 1 + 1e-9;
+  r.feasible = p.v_bar > 0 && r.max_velocity <= l.max_velocity * slack &&
+               r.max_acceleration <= l.max_acceleration * slack;
+  r.message = r.feasible ? "order-" + std::to_string(n) + " optimum by LD_SLSQP (central FD " +
+                               "gradients) from " + std::to_string(best.runs) +
+                               " starts; f on the " + std::to_string(o.approximation_segments) +
+                               "-segment approximation"
+                         : "no order-" + std::to_string(n) +
+                               " Fourier profile moves the object forward within the limits";
+  return r;
+}
+
+}  // namespace selfalign

@@ -1,0 +1,73 @@
+#include "selfalign/design/optimize.hpp"
+
+#include "selfalign/design/fourier_design.hpp"
+#include "selfalign/design/piecewise_design.hpp"
+#include "selfalign/design/three_phase_design.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+namespace selfalign {
+
+namespace {
+void require_at_least(const std::string& name, int value, int bound) {
+  if (value < bound)
+    throw InvalidParameter(name, static_cast<double>(value), "must be >= " + std::to_string(bound));
+}
+}  // namespace
+
+void validate(const ActuatorLimits& l) {
+  require_positive("period", l.period);
+  require_positive("stroke", l.stroke);
+  require_positive("max_velocity", l.max_velocity);
+  require_positive("max_acceleration", l.max_acceleration);
+}
+
+void validate(const OptimizeOptions& o) {
+  require_at_least("order", o.order, 1);
+  require_at_least("segments", o.segments, 2);
+  require_at_least("approximation_segments", o.approximation_segments, 8);
+  require_at_least("starts", o.starts, 1);
+  require_at_least("max_evaluations", o.max_evaluations, 1);
+  require_at_least("grid", o.grid, 2);
+  require_at_least("polish", o.polish, 1);
+  require_positive("fd_step", o.fd_step);
+}
+
+std::unique_ptr<TableProfile> rebuild_profile(const OptimizationResult& r) {
+  if (!r.feasible)
+    throw InvalidParameter("result", "infeasible", "rebuild needs a feasible optimum");
+  const auto& x = r.parameters;
+  if (r.family == "three-phase" && x.size() == 2)
+    return std::make_unique<ThreePhaseProfile>(
+        ThreePhaseParameters{r.limits.period, r.limits.stroke, x[0], x[1]});
+  if (r.family == "piecewise-constant" && x.size() >= 4 && x.size() % 2 == 0) {
+    const std::size_t k = x.size() / 2;
+    return std::make_unique<PiecewiseConstantProfile>(PiecewiseConstantProfile::from_accelerations(
+        std::span<const double>(x.data(), k), std::span<const double>(x.data() + k, k),
+        "piecewise-constant"));
+  }
+  if (r.family == "fourier" && x.size() >= 2 && x.size() % 2 == 0) {
+    const std::size_t n = x.size() / 2;
+    return std::make_unique<FourierProfile>(
+        r.limits.period, std::vector<double>(x.begin(), x.begin() + static_cast<long>(n)),
+        std::vector<double>(x.begin() + static_cast<long>(n), x.end()));
+  }
+  throw InvalidParameter("family", r.family,
+                         "one of three-phase (2 parameters), piecewise-constant (2K), fourier (2N)");
+}
+
+std::vector<OptimizationResult> compare_families(const ActuatorLimits& limits,
+                                                 const OptimizeOptions& options) {
+  validate(limits);
+  validate(options);
+  std::vector<OptimizationResult> rows;
+  rows.reserve(3);
+  rows.push_back(optimize_three_phase(limits, options));
+  rows.push_back(optimize_piecewise_constant(limits, options, &rows[0]));
+  rows.push_back(optimize_fourier(limits, options, &rows[0]));
+  return rows;
+}
+
+}  // namespace selfalign

@@ -1,0 +1,169 @@
+#include "selfalign/design/piecewise_design.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/design/local_search.hpp"
+#include "selfalign/design/three_phase_design.hpp"
+#include "selfalign/error.hpp"
+
+namespace selfalign {
+
+namespace {
+
+constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
+
+// Design variables of a three-phase optimum as a K-segment profile (K >= 3): its segments,
+// the longest split in halves until there are K.
+std::vector<double> embed_three_phase(const OptimizationResult& three, int k) {
+  const auto profile = rebuild_profile(three);
+  const auto segs = profile->piecewise_constant()->segments();
+  std::vector<double> d, a;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const double end = i + 1 < segs.size() ? segs[i + 1].begin : profile->period();
+    d.push_back(end - segs[i].begin);
+    a.push_back(segs[i].accel);
+  }
+  while (static_cast<int>(d.size()) < k) {
+    const auto i = static_cast<std::size_t>(std::max_element(d.begin(), d.end()) - d.begin());
+    d[i] *= 0.5;
+    d.insert(d.begin() + static_cast<long>(i), d[i]);
+    a.insert(a.begin() + static_cast<long>(i), a[i]);
+  }
+  if (static_cast<int>(d.size()) > k) return {};
+  double amax = 0;
+  for (double v : a) amax = std::max(amax, std::abs(v));
+  std::vector<double> x;
+  for (double v : d) x.push_back(v / profile->period());
+  for (double v : a) x.push_back(v / amax);
+  return x;
+}
+
+}  // namespace
+
+bool piecewise_design_profile(const ActuatorLimits& l, std::span<const double> x,
+                              std::vector<double>& durations, std::vector<double>& accels) {
+  const std::size_t k = x.size() / 2;
+  const double wsum = std::accumulate(x.begin(), x.begin() + static_cast<long>(k), 0.0);
+  if (!(wsum > 0)) return false;
+  durations.resize(k);
+  accels.resize(k);
+  double mean = 0, amax = 0;
+  for (std::size_t i = 0; i < k; ++i) {
+    durations[i] = l.period * x[i] / wsum;
+    mean += x[k + i] * durations[i];
+  }
+  mean /= std::accumulate(durations.begin(), durations.end(), 0.0);
+  for (std::size_t i = 0; i < k; ++i) {
+    accels[i] = x[k + i] - mean;  // sum a_i d_i = 0: y' periodic
+    amax = std::max(amax, std::abs(accels[i]));
+  }
+  if (!(amax > 1e-9)) return false;
+  for (double& a : accels) a /= amax;
+  // The stroke is linear in a common acceleration scale at fixed durations.
+  const double s = PiecewiseConstantProfile::from_accelerations(durations, accels).stroke();
+  if (!(s > 0)) return false;
+  for (double& a : accels) a *= l.stroke / s;
+  return true;
+}
+
+double max_abs_velocity(const PiecewiseConstantProfile& profile) {
+  double m = 0;  // y' is piecewise linear and periodic: its extrema are at segment starts
+  for (const AccelerationSegment& s : profile.segments()) m = std::max(m, std::abs(s.yd));
+  return m;
+}
+
+OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const OptimizeOptions& o,
+                                               const OptimizationResult* three_phase_start) {
+  validate(l);
+  validate(o);
+  OptimizationResult r;
+  r.family = "piecewise-constant";
+  r.limits = l;
+  const int k = o.segments;
+  const auto n = static_cast<std::size_t>(2 * k);
+
+  LocalSearchProblem problem;
+  problem.lower.assign(n, -1.0);
+  problem.upper.assign(n, 1.0);
+  std::fill(problem.lower.begin(), problem.lower.begin() + k, 0.0);
+  problem.constraint_names = {"max_velocity", "max_acceleration"};
+  problem.max_evaluations = o.max_evaluations;
+  problem.feasibility_tol = kFeasibilityTol;
+  problem.evaluate = [&l, d = std::vector<double>(), a = std::vector<double>()](
+                         std::span<const double> x) mutable {
+    DesignEvaluation e;
+    if (!piecewise_design_profile(l, x, d, a)) {
+      e.objective = design_objective(-1.0, l.period, l.stroke);
+      e.constraints = {1.0, 1.0};
+      return e;
+    }
+    const auto profile = PiecewiseConstantProfile::from_accelerations(d, a, "piecewise-constant");
+    e.objective = design_objective(
+        trusted_v_bar(steady_state(profile), max_abs_velocity(profile), l.period), l.period,
+        l.stroke);
+    e.constraints = {max_abs_velocity(profile) / l.max_velocity - 1.0,
+                     profile.peak_acceleration() / l.max_acceleration - 1.0};
+    return e;
+  };
+
+  std::vector<std::vector<double>> starts;
+  OptimizationResult three;
+  if (k >= 3) {
+    if (three_phase_start && three_phase_start->feasible) {
+      three = *three_phase_start;
+    } else {
+      OptimizeOptions q = o;
+      q.progress = nullptr;
+      three = optimize_three_phase(l, q);
+      r.evaluations += three.evaluations;
+    }
+    if (three.feasible) {
+      std::vector<double> x = embed_three_phase(three, k);
+      if (!x.empty()) starts.push_back(std::move(x));
+    }
+  }
+  std::mt19937 rng(o.seed);
+  std::uniform_real_distribution<double> uw(0.1, 1.0), ub(-1.0, 1.0);
+  while (static_cast<int>(starts.size()) < o.starts) {
+    std::vector<double> x(n);
+    for (int i = 0; i < k; ++i) x[static_cast<std::size_t>(i)] = uw(rng);
+    for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i) x[i] = ub(rng);
+    // Mirror (y -> -y, hence v̄ -> -v̄) a start that drives the object backwards.
+    if (problem.evaluate(x).objective >= 1e6)
+      for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i) x[i] = -x[i];
+    ++r.evaluations;
+    starts.push_back(std::move(x));
+  }
+
+  const LocalSearchResult best = local_search(problem, starts, o.progress);
+  r.evaluations += best.evaluations;
+  r.starts = best.runs;
+  if (!best.feasible) {
+    r.message = "no feasible " + std::to_string(k) + "-segment profile: " + best.binding +
+                " is binding (least violation " + format_number(best.violation) + " relative)";
+    return r;
+  }
+  std::vector<double> d, a;
+  piecewise_design_profile(l, best.x, d, a);
+  const auto profile = PiecewiseConstantProfile::from_accelerations(d, a, "piecewise-constant");
+  const SteadyState st = steady_state(profile);
+  r.parameters = d;
+  r.parameters.insert(r.parameters.end(), a.begin(), a.end());
+  r.v_bar = st.v_bar;
+  r.f = st.f;
+  r.max_velocity = max_abs_velocity(profile);
+  r.max_acceleration = profile.peak_acceleration();
+  r.feasible = trusted_v_bar(st, r.max_velocity, l.period) > 0;
+  r.message = r.feasible ? std::to_string(k) + "-segment optimum by LN_COBYLA from " +
+                               std::to_string(best.runs) + " starts" +
+                               (three.feasible ? " (one the three-phase optimum)" : "")
+                         : "no " + std::to_string(k) +
+                               "-segment profile moves the object forward within the limits";
+  return r;
+}
+
+}  // namespace selfalign
