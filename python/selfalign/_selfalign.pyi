@@ -768,3 +768,76 @@ class DesignResult:
 def design_process(
     request: DesignRequest, *, threads: int = 0, progress: Progress = None
 ) -> DesignResult: ...
+
+# ---- profile optimisation --------------------------------------------------------------------
+
+class ActuatorLimits:
+    period: float
+    stroke: float
+    max_velocity: float
+    max_acceleration: float
+    def __init__(
+        self,
+        *,
+        period: float = 0.072,
+        stroke: float = 0.021,
+        max_velocity: float = 3.2,
+        max_acceleration: float = 1275.0,
+    ) -> None: ...
+
+class OptimizeOptions:
+    order: int
+    segments: int
+    starts: int
+    def __init__(
+        self,
+        *,
+        order: int = 12,
+        segments: int = 4,
+        approximation_segments: int = 256,
+        starts: int = 8,
+        max_evaluations: int = 3000,
+        grid: int = 48,
+        polish: int = 3,
+        seed: int = 1,
+        fd_step: float = 1e-6,
+        progress: Optional[Callable[[int, int], None]] = None,
+    ) -> None: ...
+
+class OptimizationResult:
+    @property
+    def feasible(self) -> bool: ...
+    @property
+    def f(self) -> float: ...
+    @property
+    def v_bar(self) -> float: ...
+    @property
+    def family(self) -> str: ...
+    @property
+    def parameters(self) -> list[float]: ...
+    @property
+    def limits(self) -> ActuatorLimits: ...
+    @property
+    def max_velocity(self) -> float: ...
+    @property
+    def max_acceleration(self) -> float: ...
+    @property
+    def evaluations(self) -> int: ...
+    @property
+    def starts(self) -> int: ...
+    @property
+    def message(self) -> str: ...
+
+def optimize_three_phase(
+    limits: ActuatorLimits, options: OptimizeOptions = ...
+) -> OptimizationResult: ...
+def optimize_piecewise_constant(
+    limits: ActuatorLimits, options: OptimizeOptions = ...
+) -> OptimizationResult: ...
+def optimize_fourier(
+    limits: ActuatorLimits, options: OptimizeOptions = ...
+) -> OptimizationResult: ...
+def compare_families(
+    limits: ActuatorLimits, options: OptimizeOptions = ...
+) -> list[OptimizationResult]: ...
+def rebuild_profile(result: OptimizationResult) -> TableProfile: ...

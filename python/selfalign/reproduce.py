@@ -48,6 +48,8 @@ def _claims_from(figs: dict[str, figures.Figure]) -> list[claims_module.Claim]:
             table.append(fn(raw["5"]))
         elif fn is claims_module.accumulation_periods and raw.get("17") is not None:
             table.append(fn(raw["17"]))
+        elif fn is claims_module.fourier_optimum and raw.get("6") is not None:
+            table.append(fn(raw["6"]["result"]))
         elif fn is claims_module.cases_a_priori and (raw.get("10") or raw.get("11")):
             table.append(fn([raw[k] for k in ("10", "11") if raw.get(k) is not None]))
         else:

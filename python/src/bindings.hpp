@@ -24,6 +24,7 @@ void bind_convergence(py::module_& m);   // velocity_convergence
 void bind_sweep(py::module_& m);         // grids, families, sweeps
 void bind_stopping(py::module_& m);      // stick positions, stopping runs
 void bind_positioning(py::module_& m);   // positioning accuracy and surfaces
+void bind_optimize(py::module_& m);      // profile optimisation (Sect. 4.4.2)
 void bind_design(py::module_& m);        // design_process: SI limits -> recommended profile
 
 }  // namespace selfalign::python

@@ -21,5 +21,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_sweep(m);
   bind_stopping(m);
   bind_positioning(m);
+  bind_optimize(m);
   bind_design(m);
 }

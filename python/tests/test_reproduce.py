@@ -21,10 +21,9 @@ def test_reproduce_writes_every_figure_and_the_report(tmp_path):
         for c in table:
             assert c.name in text
     assert not list(tmp_path.glob("*.tmp"))
-    # The paper's claims hold (the Fig. 6 optimum is pending its own issue).
+    # Every claim of the paper holds.
     statuses = {c.name: c.status for c in table}
-    assert all(s == "PASS" for n, s in statuses.items() if n != "Fig. 6 Fourier optimum"), statuses
-    assert statuses["Fig. 6 Fourier optimum"] == "PENDING"
+    assert all(s == "PASS" for s in statuses.values()), statuses
 
 
 def test_breaking_the_floquet_code_turns_its_claim_to_fail(monkeypatch):
