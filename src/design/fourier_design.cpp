@@ -253,7 +253,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
     }
     normalise(x);
     // Mirror (y -> -y, hence v̄ -> -v̄) a start that drives the object backwards.
-    if (problem.evaluate(x).objective >= 1e6)
+    if (is_backward_penalty(problem.evaluate(x).objective))
       for (double& v : x) v = -v;
     ++r.evaluations;
     starts.push_back(std::move(x));
@@ -263,8 +263,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   r.evaluations += best.evaluations;
   r.starts = best.runs;
   if (!best.feasible) {
-    r.message = "no feasible order-" + std::to_string(n) + " Fourier profile: " + best.binding +
-                " is binding (least violation " + format_number(best.violation) + " relative)";
+    r.message = infeasible_message("order-" + std::to_string(n) + " Fourier profile", best);
     return r;
   }
   const FourierEvaluator::Point p = evaluator.evaluate(best.x);

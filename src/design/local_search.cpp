@@ -8,6 +8,7 @@
 #include <nlopt.hpp>
 
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/error.hpp"
 
 namespace selfalign {
 
@@ -160,12 +161,17 @@ double trusted_v_bar(const SteadyState& state, double max_table_velocity, double
 }
 
 double design_objective(double v_bar, double period, double stroke) {
-  if (!std::isfinite(v_bar)) return 1e6 * 2.0;
+  if (!std::isfinite(v_bar)) return kBackwardPenalty * 2.0;
   if (v_bar > 0) {
     const double f = objective_f(v_bar);
     if (std::isfinite(f)) return f;
   }
-  return 1e6 * (1.0 + std::abs(v_bar) * period / stroke);
+  return kBackwardPenalty * (1.0 + std::abs(v_bar) * period / stroke);
+}
+
+std::string infeasible_message(const std::string& what, const LocalSearchResult& result) {
+  return "no feasible " + what + ": " + result.binding + " is binding (least violation " +
+         format_number(result.violation) + " relative)";
 }
 
 void merge_best(LocalSearchResult& a, const LocalSearchResult& b) {

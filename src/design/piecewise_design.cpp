@@ -133,7 +133,7 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
     for (int i = 0; i < k; ++i) x[static_cast<std::size_t>(i)] = uw(rng);
     for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i) x[i] = ub(rng);
     // Mirror (y -> -y, hence v̄ -> -v̄) a start that drives the object backwards.
-    if (problem.evaluate(x).objective >= 1e6)
+    if (is_backward_penalty(problem.evaluate(x).objective))
       for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i) x[i] = -x[i];
     ++r.evaluations;
     starts.push_back(std::move(x));
@@ -143,8 +143,7 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
   r.evaluations += best.evaluations;
   r.starts = best.runs;
   if (!best.feasible) {
-    r.message = "no feasible " + std::to_string(k) + "-segment profile: " + best.binding +
-                " is binding (least violation " + format_number(best.violation) + " relative)";
+    r.message = infeasible_message(std::to_string(k) + "-segment profile", best);
     return r;
   }
   std::vector<double> d, a;

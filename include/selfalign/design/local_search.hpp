@@ -48,6 +48,14 @@ struct LocalSearchResult {
   int runs = 0;                  ///< starts run (restarts included in their start)
 };
 
+/// The scale of the finite penalty design_objective gives profiles that do not move the object
+/// forward; every forward-moving f lies far below it.
+inline constexpr double kBackwardPenalty = 1e6;
+
+/// Whether J (from design_objective) is the penalty of a profile that does not move the object
+/// forward: the families mirror such starts (y -> -y, hence v̄ -> -v̄).
+inline bool is_backward_penalty(double objective) { return objective >= kBackwardPenalty; }
+
 /// The objective J every family hands to local_search: f = 1/(c v̄^2) of eq. (11) when v̄ > 0,
 /// else the finite penalty 1e6 (1 + |v̄| Δt / Δy), which grows with the backward speed so the
 /// optimiser keeps going (and is far above any f of a forward-moving profile).
@@ -64,6 +72,9 @@ double trusted_v_bar(const SteadyState& state, double max_table_velocity, double
 LocalSearchResult local_search(const LocalSearchProblem& problem,
                                const std::vector<std::vector<double>>& starts,
                                const std::function<void(int, int)>& progress = {});
+
+/// "no feasible <what>: <binding> is binding (least violation <v> relative)" for a failed search.
+std::string infeasible_message(const std::string& what, const LocalSearchResult& result);
 
 /// Merges b into a: keeps the better (feasible first, then lower objective, then smaller
 /// violation); evaluations and runs add up.
