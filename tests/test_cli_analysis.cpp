@@ -318,7 +318,7 @@ TEST(CliSweep, AccelerationCsvIsIdenticalForAnyThreadCount) {
 
   const std::vector<std::string> rows = lines(csv);
   ASSERT_EQ(rows.size(), 401u);
-  EXPECT_EQ(rows[0], "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged");
+  EXPECT_EQ(rows[0], "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status");
   EXPECT_EQ(csv_field(rows[1], 0), 0.1);  // row-major, a2 outer
   EXPECT_EQ(csv_field(rows[2], 0), 0.1);
   EXPECT_NEAR(csv_field(rows[2], 1), 0.1 + 2.9 / 19, kClosedForm);  // evenly spaced
@@ -340,9 +340,9 @@ TEST(CliSweep, NonFiniteValuesAreNanAndInfInCsv) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<std::string> rows = lines(r.out);
   ASSERT_EQ(rows.size(), 10u) << r.out;
-  EXPECT_EQ(rows[1], "0.1,0.1,0,0,nan,nan,nan,0");
-  EXPECT_EQ(rows[5], "0.5,0.5,5,5,0,inf,0,1");
-  EXPECT_EQ(rows[9], "0.9,0.9,5,5,0,inf,0,1");
+  EXPECT_EQ(rows[1], "0.1,0.1,0,0,nan,nan,nan,0,ok");
+  EXPECT_EQ(rows[5], "0.5,0.5,5,5,0,inf,0,1,ok");
+  EXPECT_EQ(rows[9], "0.9,0.9,5,5,0,inf,0,1,ok");
 }
 
 TEST(CliSweep, PeriodAndStrokeStudies) {
@@ -351,8 +351,8 @@ TEST(CliSweep, PeriodAndStrokeStudies) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::string> rows = lines(r.out);
   ASSERT_EQ(rows.size(), 5u);
-  EXPECT_EQ(rows[0], "period,stroke,physical,case,v_bar,f");
-  EXPECT_EQ(rows[1], "0.5,0.084,0,0,nan,nan");  // 1/3 + 1/0.9 > 0.25/(8 · 0.084): case 0
+  EXPECT_EQ(rows[0], "period,stroke,physical,case,v_bar,f,status");
+  EXPECT_EQ(rows[1], "0.5,0.084,0,0,nan,nan,ok");  // 1/3 + 1/0.9 > 0.25/(8 · 0.084): case 0
   EXPECT_EQ(csv_field(rows[4], 0), 2.0);
   EXPECT_EQ(csv_text(rows[4], 2), "1");
 

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <memory>
+#include <string>
 
 #include "selfalign/analysis/sweep.hpp"
 #include "selfalign/error.hpp"
@@ -24,7 +26,15 @@ TEST(Sweep, IdenticalBytesWithOneAndTwoThreads) {
   const auto a = sweep_accelerations(1.0, 0.084, g, g, one);
   const auto b = sweep_accelerations(1.0, 0.084, g, g, two);
   ASSERT_EQ(a.size(), b.size());
-  EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size() * sizeof(AccelerationCell)), 0);
+  for (std::size_t k = 0; k < a.size(); ++k) {  // bit for bit, field by field
+    EXPECT_EQ(std::memcmp(&a[k].v_bar, &b[k].v_bar, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&a[k].f, &b[k].f, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&a[k].x_dot_0s, &b[k].x_dot_0s, sizeof(double)), 0);
+    EXPECT_EQ(a[k].predicted, b[k].predicted);
+    EXPECT_EQ(a[k].observed, b[k].observed);
+    EXPECT_EQ(a[k].converged, b[k].converged);
+    EXPECT_EQ(a[k].failure, b[k].failure);
+  }
   EXPECT_GT(calls, 0u);
   EXPECT_EQ(last, g.size() * g.size());
   EXPECT_EQ(a[0].a2, 0.1);  // row-major, a2 outer
@@ -75,4 +85,59 @@ TEST(Sweep, ScaledFourierFamilyScalesTheStrokeAndUsesTimeStepping) {
   const auto pts = sweep_period(family, 0.021, {0.072}, o);
   EXPECT_TRUE(pts[0].physical);
   EXPECT_TRUE(std::isfinite(pts[0].v_bar));
+}
+
+// Issue 9, F01: one cell that cannot be computed never aborts a study; it carries its own
+// failure and NaN numbers, and every other cell is computed as usual.
+namespace {
+class FailsAtOnePeriod final : public ProfileFamily {
+ public:
+  explicit FailsAtOnePeriod(double bad) : bad_(bad) {}
+  std::unique_ptr<TableProfile> make(double period, double stroke) const override {
+    if (period == bad_) throw InvalidParameter("period", period, "refused by this test family");
+    return ThreePhaseFamily(2.3, 1.3).make(period, stroke);
+  }
+  std::string name() const override { return "fails-at-one-period"; }
+
+ private:
+  double bad_;
+};
+}  // namespace
+
+TEST(Sweep, AFailingCellGetsItsOwnStatusAndTheOthersAreComputed) {
+  const std::vector<double> periods{1.0, 1.1, 1.2};  // all physical for (2.3, 1.3), Δy = 0.084
+  for (int threads : {1, 2}) {
+    SweepOptions o;
+    o.threads = threads;
+    const auto points = sweep_period(FailsAtOnePeriod(1.1), 0.084, periods, o);
+    ASSERT_EQ(points.size(), 3u);
+    EXPECT_NE(points[1].failure.find("refused by this test family"), std::string::npos);
+    EXPECT_TRUE(std::isnan(points[1].v_bar));
+    EXPECT_TRUE(std::isnan(points[1].f));
+    // The neighbours are the plain three-phase results (second route: the family directly).
+    const auto plain = sweep_period(ThreePhaseFamily(2.3, 1.3), 0.084, periods, o);
+    for (std::size_t k : {0u, 2u}) {
+      EXPECT_TRUE(points[k].failure.empty());
+      EXPECT_TRUE(std::isfinite(points[k].v_bar));
+      EXPECT_EQ(points[k].v_bar, plain[k].v_bar);
+    }
+  }
+}
+
+// Issue 9, D02/D15: a worker count beyond the cores is capped (oneTBB crashed on 1e9 and
+// warned on stderr for more workers than cores); negative counts are misuse.
+TEST(Sweep, WorkerThreadsAreCappedAtTheCores) {
+  const int cores = worker_threads(0);
+  EXPECT_GE(cores, 1);
+  EXPECT_EQ(worker_threads(1), 1);
+  EXPECT_EQ(worker_threads(1'000'000'000), cores);
+  EXPECT_THROW(worker_threads(-1), InvalidParameter);
+  SweepOptions o;
+  o.threads = 1'000'000'000;
+  const auto cells = sweep_accelerations(1.0, 0.084, {2.3}, {1.3}, o);
+  ASSERT_EQ(cells.size(), 1u);
+  EXPECT_TRUE(cells[0].failure.empty());
+  SweepOptions one;
+  one.threads = 1;
+  EXPECT_EQ(cells[0].v_bar, sweep_accelerations(1.0, 0.084, {2.3}, {1.3}, one)[0].v_bar);
 }

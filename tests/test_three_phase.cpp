@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -134,4 +135,54 @@ TEST(ThreePhaseProfile, RejectsMisuse) {
     EXPECT_EQ(e.name(), "a2, a3");
     EXPECT_NE(std::string(e.what()).find("period^2/(8 stroke)"), std::string::npos);
   }
+}
+
+// Issue 9, F01: physical profiles far from the paper's scales were rejected ("net velocity
+// change 2.1e-14 must be 0") because the segment durations were differences of absolute times.
+// Every setting that the closed-form criterion (docs/three-phase-profile.md: physical iff
+// 1/a2 + 1/a3 <= Δt^2/(8Δy)) calls physical must build, over six decades of a2/a3 and extreme
+// periods and strokes, and the built profile must return to its initial velocity.
+TEST(ThreePhaseProfile, EveryPhysicalSettingBuildsOverExtremeScales) {
+  struct Scale {
+    double period, stroke;
+  };
+  const Scale scales[] = {{1.0, 0.084},   {0.3975711110065985, 5.5655136158781754e-05},
+                          {1.0, 1e-10},   {1e5, 0.084},
+                          {1e-4, 0.084},  {1.0, 1e-5}};
+  int built = 0;
+  for (const Scale& sc : scales) {
+    for (int i = 0; i <= 24; ++i) {
+      for (int j = 0; j <= 24; ++j) {
+        // a2, a3 log-spaced over [1e-6, 1e6] relative to the scale's critical acceleration
+        // a_c = 16 Δy/Δt^2 (where the equal-acceleration profile becomes physical).
+        const double a_c = 16 * sc.stroke / (sc.period * sc.period);
+        const ThreePhaseParameters p{sc.period, sc.stroke, a_c * std::pow(10.0, -6 + 0.5 * i),
+                                     a_c * std::pow(10.0, -6 + 0.5 * j)};
+        const double s = 1 / p.a2 + 1 / p.a3;
+        if (!(s <= p.period * p.period / (8 * p.stroke))) continue;  // case 0 (closed form)
+        SCOPED_TRACE(testing::Message() << "period " << p.period << " stroke " << p.stroke
+                                        << " a2 " << p.a2 << " a3 " << p.a3);
+        std::optional<ThreePhaseProfile> profile;
+        ASSERT_NO_THROW(profile.emplace(p));
+        ++built;
+        // The velocity swing D = u Δt / s, written out from the docs (not from the library):
+        // the table loses D at -a2 and regains it at +a3, so its velocity returns.
+        const double G = std::sqrt(2 * s * p.stroke) / p.period;
+        const double u = 2 * G / (1 + std::sqrt(1 - 2 * G));
+        const double D = u * p.period / s;
+        const auto segs = profile->piecewise_constant()->segments();
+        double dv = 0, dt = 0;
+        for (const AccelerationSegment& seg : segs) {
+          dv += seg.accel * seg.duration;
+          dt += seg.duration;
+        }
+        // Rounding of three products of size D: a few ulps of D.
+        constexpr double kVelocityReturnTol = 1e-14;
+        EXPECT_LE(std::abs(dv), kVelocityReturnTol * D);
+        EXPECT_NEAR(dt, p.period, 1e-14 * p.period);  // the durations fill the period
+        EXPECT_NEAR(segs.back().duration * p.a3, D, 1e-14 * D);
+      }
+    }
+  }
+  EXPECT_GT(built, 1000);
 }

@@ -19,18 +19,18 @@ struct AccelerationFlags {
   std::string a2_range, a3_range;
 };
 
-// Header "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged"; a2, a3 as on the grid (run
+// Header "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status"; a2, a3 as on the grid (run
 // units), row-major with a2 outer, as the library orders the cells.
 std::string cells_csv(const std::vector<AccelerationCell>& cells, const std::vector<double>& a2,
                       const std::vector<double>& a3, const OutputUnits& u) {
-  std::string csv = "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged\n";
+  std::string csv = "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status\n";
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const AccelerationCell& c = cells[k];
     csv += csv_number(a2[k / a3.size()]) + ',' + csv_number(a3[k % a3.size()]) + ',' +
            std::to_string(static_cast<int>(c.predicted)) + ',' +
            std::to_string(static_cast<int>(c.observed)) + ',' + csv_number(u.velocity(c.v_bar)) +
            ',' + csv_number(c.f) + ',' + csv_number(u.velocity(c.x_dot_0s)) + ',' +
-           (c.converged ? "1" : "0") + '\n';
+           (c.converged ? "1" : "0") + ',' + cell_status(c.failure) + '\n';
   }
   return csv;
 }
@@ -62,6 +62,10 @@ json cells_summary(const SimulateConfig& config, const ProfileModel& model,
   j["cases_a_priori"] = case_counts(predicted);
   j["a_priori_disagreements"] = disagreements;
   j["not_converged"] = not_converged;
+  j["failures"] = failures_json(cells, [&](const AccelerationCell& c) {
+    return json{{"a2", model.from_model_units(Dimension::acceleration, c.a2)},
+                {"a3", model.from_model_units(Dimension::acceleration, c.a3)}};
+  });
   return j;
 }
 
@@ -89,7 +93,8 @@ void add_sweep_accelerations_command(CLI::App& sweep) {
       "accelerations",
       "f, v_bar and the motion case (a priori and simulated) over a grid of the three-phase "
       "profile's (y2'', y3'') at the config's period and stroke (Figs. 10, 11). CSV "
-      "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged; rows a2-major.");
+      "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status; rows a2-major; a cell "
+      "that cannot be computed has status failed (reason in the summary).");
   auto f = std::make_shared<AccelerationFlags>();
   f->common = add_sweep_flags(*sub);
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);

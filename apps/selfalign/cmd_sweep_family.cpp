@@ -32,18 +32,19 @@ std::unique_ptr<ProfileFamily> make_family(const std::string& name, const Profil
   throw InvalidParameter("family", name, "must be one of: three-phase, scaled-shape");
 }
 
-// Header "period,stroke,physical,case,v_bar,f": the swept value as on the grid, the fixed one
+// Header "period,stroke,physical,case,v_bar,f,status": the swept value as on the grid, the fixed one
 // as given (run units).
 std::string points_csv(const std::vector<FamilyPoint>& points, const std::vector<double>& values,
                        double fixed, SweptParameter swept, const OutputUnits& u) {
-  std::string csv = "period,stroke,physical,case,v_bar,f\n";
+  std::string csv = "period,stroke,physical,case,v_bar,f,status\n";
   for (std::size_t k = 0; k < points.size(); ++k) {
     const FamilyPoint& pt = points[k];
     const bool by_period = swept == SweptParameter::period;
     csv += csv_number(by_period ? values[k] : fixed) + ',' +
            csv_number(by_period ? fixed : values[k]) + ',' + (pt.physical ? "1" : "0") + ',' +
            std::to_string(static_cast<int>(pt.observed)) + ',' +
-           csv_number(u.velocity(pt.v_bar)) + ',' + csv_number(pt.f) + '\n';
+           csv_number(u.velocity(pt.v_bar)) + ',' + csv_number(pt.f) + ',' +
+           cell_status(pt.failure) + '\n';
   }
   return csv;
 }
@@ -91,6 +92,10 @@ void run_sweep_family(const FamilyFlags& f) {
   j["cells"] = points.size();
   j["cases"] = case_counts(cases);
   j["non_physical"] = non_physical;
+  j["failures"] = failures_json(points, [&](const FamilyPoint& pt) {
+    return json{{"period", model.from_model_units(D::time, pt.period)},
+                {"stroke", model.from_model_units(D::length, pt.stroke)}};
+  });
   write_sweep_outputs(paths, points_csv(points, values, fixed, f.swept, model.output_units()),
                       j);
 }
@@ -102,9 +107,9 @@ void add_sweep_family_command(CLI::App& sweep, SweptParameter swept) {
   CLI::App* sub = sweep.add_subcommand(
       by_period ? "period" : "stroke",
       by_period ? "f and v_bar of a profile family against the period Δt at the config's "
-                  "stroke (Fig. 4). CSV period,stroke,physical,case,v_bar,f."
+                  "stroke (Fig. 4). CSV period,stroke,physical,case,v_bar,f,status."
                 : "f and v_bar of a profile family against the stroke Δy at the config's "
-                  "period (Fig. 5). CSV period,stroke,physical,case,v_bar,f.");
+                  "period (Fig. 5). CSV period,stroke,physical,case,v_bar,f,status.");
   auto f = std::make_shared<FamilyFlags>();
   f->swept = swept;
   f->common = add_sweep_flags(*sub);

@@ -65,7 +65,8 @@ std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command) {
       command, {{"out", "CSV file of the results (default: standard output)"},
                 {"summary", "summary JSON file, - for stdout (default: <out without extension>"
                             ".summary.json when out is given, else none)"}});
-  command.add_option("--threads", flags->threads, "worker threads, >= 0; 0: all cores")
+  command.add_option("--threads", flags->threads,
+                     "worker threads, >= 0; 0: all cores (more are capped at the cores)")
       ->type_name("INT")
       ->group("Sweep");
   command.add_flag("--quiet", flags->quiet, "no progress bar (drawn only when stderr is a "

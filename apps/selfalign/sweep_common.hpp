@@ -40,6 +40,31 @@ nlohmann::json grid_json(const GridRange& range);
 /// Number of results per Table 1 case, {"0": n0, ..., "5": n5}.
 nlohmann::json case_counts(const std::vector<StickSlipCase>& cases);
 
+/// The CSV `status` column of a cell: "ok", or "failed" when it could not be computed (its
+/// numbers are then nan and the summary's "failures" says why).
+inline const char* cell_status(const std::string& failure) {
+  return failure.empty() ? "ok" : "failed";
+}
+
+/// The summary's account of cells that could not be computed: {"count": n, "first": [up to
+/// kShownFailures of {..where(cell).., "failure": message}]}. One failing cell never aborts a
+/// sweep; this is where it is reported.
+template <class Cell, class Where>
+nlohmann::json failures_json(const std::vector<Cell>& cells, const Where& where) {
+  constexpr std::size_t kShownFailures = 10;  // enough to diagnose, short enough to read
+  nlohmann::json first = nlohmann::json::array();
+  std::size_t count = 0;
+  for (const Cell& c : cells) {
+    if (c.failure.empty()) continue;
+    if (count++ < kShownFailures) {
+      nlohmann::json j = where(c);
+      j["failure"] = c.failure;
+      first.push_back(std::move(j));
+    }
+  }
+  return {{"count", count}, {"first", std::move(first)}};
+}
+
 /// Flags common to every sweep.
 struct SweepFlags {
   std::shared_ptr<ConfigFlags> config;

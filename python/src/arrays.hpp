@@ -47,6 +47,18 @@ void def_array(PyClass& cls, const char* name, std::vector<T> Class::*member, co
       doc);
 }
 
+/// The cells' `failure` messages as a NumPy array of str (dtype object) of the given shape:
+/// '' where the cell was computed, else why it could not be (its numbers are NaN).
+template <class Cell>
+py::array failure_array(const std::vector<Cell>& cells, const std::vector<py::ssize_t>& shape) {
+  py::list messages;
+  for (const Cell& c : cells) messages.append(py::str(c.failure));
+  py::object numpy = py::module_::import("numpy");
+  py::tuple dims(shape.size());
+  for (std::size_t i = 0; i < shape.size(); ++i) dims[i] = shape[i];
+  return numpy.attr("array")(messages, py::arg("dtype") = "object").attr("reshape")(dims);
+}
+
 /// Is x a Python int or float (or a subclass, e.g. numpy.float64)?
 inline bool is_scalar(const py::handle& x) {
   return py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x);

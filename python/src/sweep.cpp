@@ -13,7 +13,8 @@ namespace selfalign::python {
 namespace {
 
 constexpr const char* kSweepArgs = R"doc(
-Cells are computed in parallel on `threads` workers (0: all cores), each into its own slot, so
+Cells are computed in parallel on `threads` workers (0: all cores; more than the cores are
+capped at the cores), each into its own slot, so
 the result is identical for any thread count. `progress`, if given, is called as
 progress(done, total) as cells complete (from worker threads, one call at a time, holding the
 GIL); an exception it raises stops the sweep and is re-raised. The GIL is released otherwise.)doc";
@@ -35,6 +36,7 @@ py::dict family_points(std::vector<FamilyPoint>&& points) {
   py::dict d;
   d["period"] = period, d["stroke"] = stroke, d["physical"] = physical;
   d["observed"] = observed, d["v_bar"] = v_bar, d["f"] = f;
+  d["failure"] = failure_array(points, {n});
   return d;
 }
 
@@ -108,6 +110,7 @@ void bind_sweep(py::module_& m) {
         d["a2"] = to_array(std::vector(a2)), d["a3"] = to_array(std::vector(a3));
         d["predicted"] = predicted, d["observed"] = observed, d["v_bar"] = v_bar, d["f"] = f;
         d["x_dot_0s"] = x_dot_0s, d["converged"] = converged;
+        d["failure"] = failure_array(cells, shape);
         return d;
       },
       py::arg("period"), py::arg("stroke"), py::arg("a2"), py::arg("a3"), py::kw_only(),
@@ -118,7 +121,9 @@ f and the motion case of the three-phase profile over the grid a2 × a3 at fixed
 (Figs. 10, 11). Returns a dict of arrays shaped (len(a2), len(a3)) (cell [i, j] is a2[i],
 a3[j]): 'predicted', 'observed' (int32 StickSlipCase values: a priori Fig. 8 rules and the
 simulated steady period), 'v_bar' (eq. 10), 'f' (eq. 11; +inf for v̄ = 0), 'x_dot_0s'
-(float64, NaN for case 0), 'converged' (bool); plus the 1-D grids 'a2' and 'a3'.
+(float64, NaN for case 0), 'converged' (bool), 'failure' (str: '' for a computed cell, else
+why it could not be computed; its numbers are then NaN — one cell never aborts the sweep);
+plus the 1-D grids 'a2' and 'a3'.
 Raises InvalidParameter on bad inputs.)doc") +
        kSweepArgs)
           .c_str());
@@ -141,7 +146,8 @@ Raises InvalidParameter on bad inputs.)doc") +
       (std::string(R"doc(
 f against Δt at fixed Δy (Fig. 4). Returns a dict of 1-D arrays, one entry per period:
 'period', 'stroke', 'v_bar' (eq. 10), 'f' (eq. 11) (float64; NaN where the family has no
-member), 'physical' (bool), 'observed' (int32 StickSlipCase values).)doc") +
+member), 'physical' (bool), 'observed' (int32 StickSlipCase values), 'failure' (str: '' for a
+computed point, else why it could not be computed; v_bar and f are then NaN).)doc") +
        kSweepArgs)
           .c_str());
   m.def(

@@ -169,3 +169,21 @@ def test_scaled_fourier_family_scales_the_stroke():
     assert member.period == 2.0
     # Same harmonic content: coefficient ratios are kept.
     assert member.cos_coeffs[1] / member.sin_coeffs[0] == pytest.approx(0.3)
+
+
+def test_more_threads_than_cores_are_capped_not_a_crash():
+    # Issue 9, D02: threads=10**9 crashed oneTBB (segfault); it is capped at the cores.
+    one = sa.sweep_accelerations(PERIOD, STROKE, A2, A3, threads=1)
+    many = sa.sweep_accelerations(PERIOD, STROKE, A2, A3, threads=10**9)
+    assert_same_arrays(one, many)
+    with pytest.raises(sa.InvalidParameter, match="threads"):
+        sa.sweep_accelerations(PERIOD, STROKE, A2, A3, threads=-1)
+
+
+def test_every_cell_reports_its_failure_status():
+    # Issue 9, F01: a cell that cannot be computed gets its own status; here all can.
+    r = sa.sweep_accelerations(PERIOD, STROKE, A2, A3)
+    assert r["failure"].shape == (len(A2), len(A3))
+    assert all(m == "" for m in r["failure"].ravel())
+    p = sa.sweep_period(sa.ThreePhaseFamily(2.3, 1.3), STROKE, [0.5, 1.0])
+    assert list(p["failure"]) == ["", ""]

@@ -8,17 +8,20 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <mutex>
+#include <string>
 
 #include "selfalign/analysis/sweep.hpp"
 #include "selfalign/error.hpp"
 
 namespace selfalign::detail {
 
-// Runs body(i) for i in [0, n) on options.threads workers, reporting progress.
-template <class Body>
-void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body) {
-  if (o.threads < 0) throw InvalidParameter("threads", o.threads, "must be >= 0 (0: all cores)");
+// Runs body(i) for i in [0, n) on options.threads workers, reporting progress. A cell whose
+// body throws does not abort the study: fail(i, message) records it in the cell's own slot.
+template <class Body, class Fail>
+void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body, const Fail& fail) {
+  const int threads = worker_threads(o.threads);
   std::atomic<std::size_t> done{0};
   std::mutex progress_mutex;
   std::size_t reported = 0;  // under progress_mutex: reports never go backwards
@@ -26,7 +29,13 @@ void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body) {
   auto run = [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t i = r.begin(); i != r.end(); ++i) body(i);
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          try {
+                            body(i);
+                          } catch (const std::exception& e) {
+                            fail(i, std::string(e.what()));
+                          }
+                        }
                         const std::size_t now = done += r.size();
                         if (o.progress) {
                           std::lock_guard lock(progress_mutex);
@@ -35,12 +44,24 @@ void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body) {
                         }
                       });
   };
-  if (o.threads == 0) {
-    run();
-  } else {
-    tbb::task_arena arena(o.threads);
-    arena.execute(run);
-  }
+  tbb::task_arena arena(threads);
+  arena.execute(run);
+}
+
+// The same for studies whose cells cannot fail on their own (the first failure is rethrown).
+template <class Body>
+void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body) {
+  std::mutex first_mutex;
+  std::exception_ptr first;
+  parallel_cells(n, o, [&](std::size_t i) {
+    try {
+      body(i);
+    } catch (...) {
+      std::lock_guard lock(first_mutex);
+      if (!first) first = std::current_exception();
+    }
+  }, [](std::size_t, const std::string&) {});
+  if (first) std::rethrow_exception(first);
 }
 
 }  // namespace selfalign::detail

@@ -1,5 +1,8 @@
 #include "selfalign/analysis/sweep.hpp"
 
+#include <tbb/info.h>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -28,6 +31,12 @@ std::vector<double> log_grid(double lo, double hi, int n) {
     g.back() = hi;
   }
   return g;
+}
+
+int worker_threads(int requested) {
+  if (requested < 0) throw InvalidParameter("threads", requested, "must be >= 0 (0: all cores)");
+  const int cores = std::max(1, tbb::info::default_concurrency());
+  return requested == 0 ? cores : std::min(requested, cores);
 }
 
 namespace {
@@ -62,6 +71,14 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
     c.f = s.f;
     c.x_dot_0s = s.x_dot_0s;
     c.converged = s.converged;
+  }, [&](std::size_t k, const std::string& why) {
+    AccelerationCell& c = cells[k];
+    c.a2 = a2[k / a3.size()];
+    c.a3 = a3[k % a3.size()];
+    c.observed = StickSlipCase::non_physical;
+    c.v_bar = c.f = c.x_dot_0s = kNaN;
+    c.converged = false;
+    c.failure = why;
   });
   return cells;
 }
@@ -90,10 +107,9 @@ std::unique_ptr<TableProfile> ScaledShapeFamily::make(double period, double stro
   const double accel_scale = stroke / shape_.stroke() / (time_scale * time_scale);
   const auto segs = shape_.segments();
   std::vector<double> durations, accels;
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const double end = i + 1 < segs.size() ? segs[i + 1].begin : shape_.period();
-    durations.push_back((end - segs[i].begin) * time_scale);
-    accels.push_back(segs[i].accel * accel_scale);
+  for (const AccelerationSegment& s : segs) {
+    durations.push_back(s.duration * time_scale);
+    accels.push_back(s.accel * accel_scale);
   }
   return std::make_unique<PiecewiseConstantProfile>(
       PiecewiseConstantProfile::from_accelerations(durations, accels, "scaled-shape"));
@@ -133,6 +149,11 @@ std::vector<FamilyPoint> sweep_family(const ProfileFamily& family,
     pt.observed = s.motion_case;
     pt.v_bar = s.v_bar;
     pt.f = s.f;
+  }, [&](std::size_t k, const std::string& why) {
+    FamilyPoint& pt = out[k];
+    pt.observed = StickSlipCase::non_physical;
+    pt.v_bar = pt.f = kNaN;
+    pt.failure = why;
   });
   return out;
 }

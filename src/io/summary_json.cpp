@@ -37,10 +37,9 @@ json profile_json(const TableProfile& p, const OutputUnits& u) {
   } else if (const PiecewiseConstantProfile* pc = p.piecewise_constant()) {
     json durations = json::array(), accelerations = json::array();
     const auto segments = pc->segments();
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-      const double end = i + 1 < segments.size() ? segments[i + 1].begin : pc->period();
-      durations.push_back(u.time(end - segments[i].begin));
-      accelerations.push_back(u.acceleration(segments[i].accel));
+    for (const AccelerationSegment& s : segments) {
+      durations.push_back(u.time(s.duration));
+      accelerations.push_back(u.acceleration(s.accel));
     }
     j["durations"] = durations;
     j["accelerations"] = accelerations;

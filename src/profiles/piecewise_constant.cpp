@@ -20,7 +20,7 @@ PiecewiseConstantProfile PiecewiseConstantProfile::from_accelerations(
     const double d = require_non_negative("segment duration", durations[i]);
     const double a = require_finite("segment acceleration", accels[i]);
     if (d == 0.0) continue;
-    p.segments_.push_back({t, a, y, yd});
+    p.segments_.push_back({t, d, a, y, yd});
     mean += yd * d + 0.5 * a * d * d;  // integral of y' over the segment, with yd(0) = 0
     y += yd * d + 0.5 * a * d * d;
     yd += a * d;
@@ -40,7 +40,7 @@ PiecewiseConstantProfile PiecewiseConstantProfile::from_accelerations(
     AccelerationSegment& s = p.segments_[i];
     s.yd += yd0;
     s.y += yd0 * s.begin;
-    const double d = (i + 1 < p.segments_.size() ? p.segments_[i + 1].begin : p.period_) - s.begin;
+    const double d = s.duration;
     const double y_end = s.y + s.yd * d + 0.5 * s.accel * d * d;
     y_min = std::min({y_min, s.y, y_end});
     y_max = std::max({y_max, s.y, y_end});

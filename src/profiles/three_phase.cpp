@@ -27,6 +27,7 @@ ThreePhaseSolution solve_three_phase(const ThreePhaseParameters& p) {
   const double D = u * dt / s;              // y'_max - y'_min, eq. (65)
   r.physical = true;
   r.t1 = (1.0 - u) * dt;
+  r.velocity_swing = D;
   r.t2 = r.t1 + D / p.a2;
   r.t3 = dt;                                   // eq. (62)
   r.yd_ini = 0.5 * u * u * dt / s;             // zero-mean velocity, eq. (64)
@@ -44,7 +45,10 @@ PiecewiseConstantProfile three_phase_shape(const ThreePhaseParameters& p,
         "a2, a3", format_number(p.a2) + ", " + format_number(p.a3),
         "non-physical profile (case 0): need 1/a2 + 1/a3 <= period^2/(8 stroke) = " +
             format_number(r.inverse_accel_limit) + ", got " + format_number(r.inverse_accel_sum));
-  const double durations[3] = {r.t1, r.t2 - r.t1, r.t3 - r.t2};
+  // Durations straight from the closed form (docs/three-phase-profile.md), never as
+  // differences of the absolute times t1, t2, t3: t3 - t2 = D/y3'' can be 1e-4 of Δt, and its
+  // difference would carry Δt's rounding into the net velocity change -y2''(t2-t1) + y3''(t3-t2).
+  const double durations[3] = {r.t1, r.velocity_swing / p.a2, r.velocity_swing / p.a3};
   const double accels[3] = {0.0, -p.a2, p.a3};
   return PiecewiseConstantProfile::from_accelerations(durations, accels, "three-phase");
 }

@@ -29,10 +29,16 @@ std::vector<double> log_grid(double lo, double hi, int n);
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
 
 struct SweepOptions {
-  int threads = 0;              ///< worker threads; 0: all cores
+  int threads = 0;              ///< worker threads, >= 0; 0: all cores (see worker_threads)
   ProgressCallback progress;    ///< optional
   SteadyStateOptions steady;    ///< per-cell steady-state search
 };
+
+/// The number of workers a study runs on for `requested` threads: all the cores available to
+/// this process (oneTBB's default concurrency, which honours the affinity mask) for 0, else
+/// min(requested, cores): asking for more workers than cores gives no speed-up and only
+/// oversubscribes. Throws InvalidParameter("threads", ...) for requested < 0.
+int worker_threads(int requested);
 
 /// One cell of a (y2'', y3'') study of the three-phase profile.
 struct AccelerationCell {
@@ -43,6 +49,9 @@ struct AccelerationCell {
   double f = 0;        ///< eq. (11) [-]; +inf for v̄ = 0, NaN for case 0
   double x_dot_0s = 0; ///< steady-state x' at t0 [-]; NaN for case 0
   bool converged = false;
+  /// Empty when the cell was computed; otherwise why it could not be (its numbers are NaN).
+  /// One failing cell never aborts the study.
+  std::string failure;
 };
 
 /// f and case over the grid a2 × a3 at fixed (Δt, Δy); row-major: cell (i, j) is at
@@ -109,6 +118,8 @@ struct FamilyPoint {
   bool physical = false;                                 ///< false: the family has no member
   StickSlipCase observed = StickSlipCase::non_physical;  ///< a posteriori case
   double v_bar = 0, f = 0;                               ///< eqs. (10), (11) [-]
+  /// Empty when the point was computed; otherwise why it could not be (v̄ and f are NaN).
+  std::string failure;
 };
 
 /// f against Δt at fixed Δy (Fig. 4).

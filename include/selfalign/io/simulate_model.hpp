@@ -62,6 +62,10 @@ struct ProfileModel {
   double to_model_units(Dimension d, double value) const {
     return units == UnitSystem::si ? to_dimensionless(d, value, scales) : value;
   }
+  /// A dimensionless value of dimension `d` in the run's unit system.
+  double from_model_units(Dimension d, double value) const {
+    return units == UnitSystem::si ? to_si(d, value, scales) : value;
+  }
 };
 
 /// What build_profile_model does with a three-phase request that has no solution (case 0).

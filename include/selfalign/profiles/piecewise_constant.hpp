@@ -14,10 +14,11 @@ namespace selfalign {
 
 /// One constant-acceleration interval of a period, with the table state at its start [-].
 struct AccelerationSegment {
-  double begin;  ///< start time within the period, 0 <= begin < Δt [-]
-  double accel;  ///< table acceleration y'' on the segment [-]
-  double y;      ///< y at the segment start [-]
-  double yd;     ///< y' at the segment start [-]
+  double begin;     ///< start time within the period, 0 <= begin < Δt [-]
+  double duration;  ///< length of the segment as given (not a difference of begin times) [-]
+  double accel;     ///< table acceleration y'' on the segment [-]
+  double y;         ///< y at the segment start [-]
+  double yd;        ///< y' at the segment start [-]
 };
 
 class PiecewiseConstantProfile final : public TableProfile {

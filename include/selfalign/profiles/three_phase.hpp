@@ -37,6 +37,7 @@ struct ThreePhaseSolution {
   double t1 = 0, t2 = 0, t3 = 0;  ///< switch times [-] (t0 = 0)
   double y_ini = 0;               ///< y(t0) [-]
   double yd_ini = 0;              ///< y'(t0) = y' on [t0, t1] [-], >= 0
+  double velocity_swing = 0;      ///< D = y'_max - y'_min = y2'' (t2 - t1) = y3'' (t3 - t2) [-]
   double t_yd0_1 = 0;             ///< time of y' = 0 in [t1, t2] (table at its maximum y) [-]
   double t_yd0_2 = 0;             ///< time of y' = 0 in [t2, t3] (table at y = 0) [-]
   double inverse_accel_sum = 0;   ///< s = 1/y2'' + 1/y3'' [-]
