@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <string>
 
 namespace selfalign {
 
@@ -13,8 +14,24 @@ std::string format_number(double value) {
   return ec == std::errc{} ? std::string(buffer, end) : std::string("?");
 }
 
+namespace {
+// what() is one short line: a long value is shown by its head and tail (a 10 MB value echoed
+// back helps nobody; the tail keeps a path's file name), and line breaks become spaces.
+std::string one_line(std::string text, std::size_t max_size) {
+  if (text.size() > max_size)
+    text = text.substr(0, max_size / 2) + "..." + text.substr(text.size() - max_size / 2) + " (" +
+           std::to_string(text.size()) + " characters)";
+  for (char& c : text)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  return text;
+}
+constexpr std::size_t kShownValue = 100;
+constexpr std::size_t kShownText = 240;
+}  // namespace
+
 InvalidParameter::InvalidParameter(std::string name, std::string value, std::string allowed)
-    : std::invalid_argument("invalid " + name + " = " + value + ": " + allowed),
+    : std::invalid_argument("invalid " + one_line(name, kShownValue) + " = " +
+                            one_line(value, kShownValue) + ": " + one_line(allowed, kShownText)),
       name_(std::move(name)),
       value_(std::move(value)),
       allowed_(std::move(allowed)) {}
@@ -34,6 +51,12 @@ double require_positive(const std::string& name, double value) {
 
 double require_non_negative(const std::string& name, double value) {
   if (!(std::isfinite(value) && value >= 0)) throw InvalidParameter(name, value, "must be >= 0");
+  return value;
+}
+
+double require_moderate(const std::string& name, double value) {
+  if (!(std::abs(value) <= kMaxMagnitude))
+    throw InvalidParameter(name, value, "must be a finite number with |value| <= 1e50");
   return value;
 }
 

@@ -36,7 +36,9 @@ ConvergenceOptions convergence_options(const SimulateConfig& resolved, const Pro
   if (f.v1_option->count() > 0) o.v1 = model.to_model_units(D::velocity, f.v1);
   if (f.v2_option->count() > 0) o.v2 = model.to_model_units(D::velocity, f.v2);
   o.t0 = model.to_model_units(D::time, *resolved.t0);
-  o.duration = require_positive("periods", *resolved.periods) * model.profile->period();
+  const double periods = require_positive("periods", *resolved.periods);
+  if (periods > 1e6) throw InvalidParameter("periods", periods, "must be in (0, 1e6] for converge");
+  o.duration = periods * model.profile->period();
   o.samples_per_period = f.samples_per_period;
   return o;
 }
@@ -86,11 +88,11 @@ void run_converge(const ConfigFlags& flags, const ConvergeFlags& f) {
 
   const std::string summary =
       convergence_json(model, *resolved.periods, options, r, paths).dump(2) + "\n";
-  AtomicFileSet files;
-  if (paths.trajectory) files.add(*paths.trajectory, convergence_csv(r, model.output_units()));
-  if (!paths.summary_to_stdout()) files.add(paths.summary, summary);
+  AtomicFileSet files;  // "-" is standard output, written after the files
+  if (paths.trajectory)
+    files.add(*paths.trajectory, convergence_csv(r, model.output_units()), "out");
+  if (paths.summary) files.add(*paths.summary, summary, "summary");
   files.commit();
-  if (paths.summary_to_stdout()) std::cout << summary << std::flush;
 }
 
 }  // namespace
@@ -121,7 +123,8 @@ void add_converge_command(CLI::App& app) {
                      ->type_name("NUMBER")
                      ->group("Initial state");
   sub->add_option("--samples-per-period", f->samples_per_period,
-                  "uniform samples per table period in the CSV (events are added), >= 1. "
+                  "uniform samples per table period in the CSV (events are added), in [1, 1e6], "
+                  "at most 1e7 over the run. "
                   "Default: " + std::to_string(f->samples_per_period))
       ->type_name("INT")
       ->group("Output");

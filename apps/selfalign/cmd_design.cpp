@@ -3,6 +3,7 @@
 // tolerance (design/process_design.hpp). Reports the profile, v̄, T_p, the end position and its
 // band, the motion case, and writes the profile sampled for a motion controller.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -80,13 +81,17 @@ std::string design_table(const json& j) {
 }
 
 void run_design(const DesignFlags& f) {
+  if (f.out) require_output_path("out", *f.out);
+  if (f.profile_csv) require_output_path("profile-csv", *f.profile_csv);
+  if (f.out && f.profile_csv && *f.out == *f.profile_csv)
+    throw InvalidParameter("profile-csv", *f.profile_csv, "must differ from --out");
   const DesignResult d = design_process(f.request);
   if (!d.feasible) throw std::runtime_error("design infeasible: " + d.message);
   const json report = design_json(f.request, d);
   if (f.profile_csv) {
     AtomicFileSet files;
-    files.add(*f.profile_csv, profile_csv(f.request, d, f.sample_rate));
-    if (f.out) files.add(*f.out, report.dump(2) + "\n");
+    files.add(*f.profile_csv, profile_csv(f.request, d, f.sample_rate), "profile-csv");
+    if (f.out) files.add(*f.out, report.dump(2) + "\n", "out");
     files.commit();
     if (!f.out) deliver_report(report, design_table(report), f.as_json, std::nullopt);
     return;
@@ -123,21 +128,31 @@ void add_design_command(CLI::App& app) {
   num("--tolerance", q.tolerance,
       "allowed positioning error Δx_d [m]; 0 requires accumulation (Δx_d = 0).");
   sub->add_option("--acceleration-grid", q.acceleration_grid,
-                  "candidates per acceleration axis, >= 2")->group("Search");
-  sub->add_option("--period-grid", q.period_grid, "candidate periods, >= 1")->group("Search");
-  sub->add_option("--stroke-grid", q.stroke_grid, "candidate strokes, >= 1")->group("Search");
-  sub->add_option("--entries", q.entries, "steady entries per candidate (Sect. 7.1), >= 2")
+                  "candidates per acceleration axis, in [2, 200]")->group("Search");
+  sub->add_option("--period-grid", q.period_grid, "candidate periods, in [1, 100]")
+      ->group("Search");
+  sub->add_option("--stroke-grid", q.stroke_grid, "candidate strokes, in [1, 20]")
+      ->group("Search");
+  sub->add_option("--entries", q.entries,
+                  "steady entries per candidate (Sect. 7.1), in [2, 1000]")
       ->group("Search");
   sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");
-  sub->add_option("--out", f->out, "write the JSON report to FILE")->group("Output");
+  sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE")->group("Output");
   sub->add_option("--profile-csv", f->profile_csv,
                   "write one period of the profile, sampled at --sample-rate, to FILE")
+      ->type_name("FILE")
       ->group("Output");
-  sub->add_option("--sample-rate", f->sample_rate, "profile CSV sample rate [Hz], > 0")
+  sub->add_option("--sample-rate", f->sample_rate,
+                  "profile CSV sample rate [Hz], > 0, at most 1e7 rows a period "
+                  "(sample-rate / frequency-min <= 1e7)")
       ->group("Output");
   sub->callback([f] {
-    if (!(f->sample_rate > 0))
-      throw InvalidParameter("sample-rate", f->sample_rate, "must be > 0");
+    // One period has sample_rate / frequency rows; the slowest allowed frequency bounds it.
+    constexpr double kMaxRows = 1e7;
+    const double f_min = f->request.frequency_min;  // design_process checks it itself
+    if (!(f->sample_rate > 0) || (f_min > 0 && !(f->sample_rate <= kMaxRows * f_min)))
+      throw InvalidParameter("sample-rate", f->sample_rate,
+                             "must be in (0, 1e7 x frequency-min]: one period at most 1e7 rows");
     run_design(*f);
   });
 }

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "config_flags.hpp"
 #include "report.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/analysis/floquet.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/simulate_model.hpp"
@@ -93,9 +94,10 @@ std::string floquet_table(const json& j, UnitSystem units) {
 
 void run_floquet(const ConfigFlags& flags, const FloquetFlags& f) {
   const SimulateConfig config = read_config(flags);
+  if (config.out) require_output_path("out", *config.out, config.samples.value_or(""), "--samples");
   const ProfileModel model = build_profile_model(config);  // case 0: InvalidParameter
   FloquetOptions options;
-  options.fd_step = require_positive("fd-step", f.fd_step);
+  options.fd_step = require_in_half_open("fd-step", f.fd_step, 0.0, 0.1);
   const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(model.profile.get());
   const FloquetAnalysis analysis = three_phase ? floquet_multipliers(*three_phase, options)
                                                : floquet_multipliers(*model.profile, options);

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/design/optimize.hpp"
 #include "selfalign/design/piecewise_design.hpp"
@@ -46,8 +47,24 @@ json result_json(const OptimizationResult& r) {
           {"message", r.message}};
 }
 
+// The library's names of the limits and options, as the flags that set them.
+InvalidParameter with_flag_names(const InvalidParameter& e) {
+  static const std::pair<const char*, const char*> kFlags[] = {
+      {"max_velocity", "velocity-max"}, {"max_acceleration", "acceleration-max"},
+      {"max_evaluations", "max-evaluations"}};
+  for (const auto& [library, flag] : kFlags)
+    if (e.name() == library) return InvalidParameter(flag, e.value(), e.allowed());
+  return e;
+}
+
 void run_optimize(OptimizeFlags& f) {
-  validate(f.limits);
+  try {
+    validate(f.limits);
+    validate(f.options);
+  } catch (const InvalidParameter& e) {
+    throw with_flag_names(e);
+  }
+  if (f.out) require_output_path("out", *f.out);
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   f.options.progress = [&bar](int done, int total) {
     bar.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
@@ -92,15 +109,15 @@ void add_optimize_command(CLI::App& app) {
   sub->add_option("--velocity-max", f->limits.max_velocity, "|y'| limit [-]. Default: 3.2");
   sub->add_option("--acceleration-max", f->limits.max_acceleration,
                   "|y''| limit [-]. Default: 1275");
-  sub->add_option("--order", f->options.order, "Fourier order N, >= 1. Default: 12");
-  sub->add_option("--segments", f->options.segments, "K of piecewise-constant, >= 2. Default: 4");
-  sub->add_option("--starts", f->options.starts, "multi-starts, >= 1. Default: 8");
+  sub->add_option("--order", f->options.order, "Fourier order N, in [1, 100]. Default: 12");
+  sub->add_option("--segments", f->options.segments, "K of piecewise-constant, in [2, 64]. Default: 4");
+  sub->add_option("--starts", f->options.starts, "multi-starts, in [1, 1000]. Default: 8");
   sub->add_option("--max-evaluations", f->options.max_evaluations,
-                  "objective evaluations per local run, >= 1");
+                  "objective evaluations per local run, in [1, 1e6]");
   sub->add_option("--seed", f->options.seed, "seed of the deterministic random starts");
   sub->add_flag("--json", f->as_json, "print the report as JSON");
   sub->add_flag("--quiet", f->quiet, "no progress bar");
-  sub->add_option("--out", f->out, "write the JSON report to FILE");
+  sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
   sub->callback([f] { run_optimize(*f); });
 }
 

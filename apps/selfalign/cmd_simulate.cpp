@@ -21,17 +21,18 @@ void run_simulate(const ConfigFlags& flags) {
   const SimulateConfig config = read_config(flags);
   const OutputPaths paths = resolve_output_paths(config);
   const SimulateModel model = build_simulate_model(config);
-  const SimulationResult result =
-      simulate(*model.profile, *model.friction, model.initial, model.options);
+  SimulationOptions options = model.options;
+  options.record = paths.trajectory.has_value();  // samples only when a CSV is written (P01)
+  const SimulationResult result = simulate(*model.profile, *model.friction, model.initial, options);
 
   const std::string summary =
       simulate_summary_json(model, result, paths.trajectory).dump(2) + "\n";
-  AtomicFileSet files;
+  AtomicFileSet files;  // "-" is standard output, written after the files
   if (paths.trajectory)
-    files.add(*paths.trajectory, format_trajectory_csv(result.trajectory, model.output_units()));
-  if (!paths.summary_to_stdout()) files.add(paths.summary, summary);
+    files.add(*paths.trajectory, format_trajectory_csv(result.trajectory, model.output_units()),
+              "out");
+  if (paths.summary) files.add(*paths.summary, summary, "summary");
   files.commit();
-  if (paths.summary_to_stdout()) std::cout << summary << std::flush;
 }
 
 }  // namespace

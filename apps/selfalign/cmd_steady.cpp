@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "config_flags.hpp"
 #include "report.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/io/simulate_model.hpp"
@@ -97,6 +98,7 @@ std::string steady_table(const json& j, UnitSystem units) {
 
 void run_steady(const ConfigFlags& flags, bool as_json) {
   const SimulateConfig config = read_config(flags);
+  if (config.out) require_output_path("out", *config.out, config.samples.value_or(""), "--samples");
   const ProfileModel model = build_profile_model(config, NonPhysicalProfile::allow);
   std::optional<SteadyState> steady;
   if (model.profile) steady = steady_state(*model.profile);

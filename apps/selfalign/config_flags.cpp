@@ -33,7 +33,7 @@ const KeyFlag* find_override(const std::vector<KeyFlag>& overrides, std::string_
 std::shared_ptr<ConfigFlags> add_config_flags(CLI::App& command,
                                               const std::vector<KeyFlag>& overrides) {
   auto flags = std::make_shared<ConfigFlags>();
-  command
+  flags->config_option = command
       .add_option("--config", flags->config_file,
                   "JSON (.json) or TOML (.toml) file of config keys (docs/config.md); flags "
                   "override its values")
@@ -56,7 +56,8 @@ std::shared_ptr<ConfigFlags> add_config_flags(CLI::App& command,
 
 SimulateConfig read_config(const ConfigFlags& flags) {
   SimulateConfig config;
-  if (!flags.config_file.empty()) config = load_simulate_config(flags.config_file);
+  if (flags.config_option && flags.config_option->count() > 0)
+    config = load_simulate_config(flags.config_file);  // "" is refused there, not ignored
   const auto keys = simulate_config_keys();
   SimulateConfig overrides;
   for (std::size_t i = 0; i < keys.size(); ++i)

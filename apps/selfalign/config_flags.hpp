@@ -17,6 +17,7 @@ namespace selfalign::cli {
 /// The flags' values as typed, filled in by CLI11 during parsing.
 struct ConfigFlags {
   std::string config_file;
+  CLI::Option* config_option = nullptr;  // --config
   std::vector<std::string> values;    // one per simulate_config_keys() entry
   std::vector<CLI::Option*> options;  // the matching flags; nullptr: not offered for this command
 };

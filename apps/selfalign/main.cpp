@@ -1,6 +1,7 @@
 // selfalign: the command-line front door. Parses, dispatches to a subcommand, reports errors
 // as exactly one line "selfalign: error: <message>" on stderr with exit code 2.
 
+#include <charconv>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -8,18 +9,57 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "selfalign/io/atomic_file.hpp"
 
 namespace {
 
 constexpr int kUsageError = 2;  // exit code for every error: bad input, bad config, I/O
+constexpr std::size_t kMaxErrorLine = 300;  // one short line, whatever a parser echoes
 
-// The one-line error report: newlines (from a parser's message) become spaces.
+// The one-line error report: newlines (from a parser's message) become spaces, and a message
+// that echoes a huge value is cut.
 int report_error(const std::string& message) {
   std::string line = message;
   for (char& c : line)
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  if (line.size() > kMaxErrorLine) line = line.substr(0, kMaxErrorLine) + "...";
   std::cerr << "selfalign: error: " << line << '\n';
   return kUsageError;
+}
+
+// Values CLI11 would accept silently: "" (read as 0 by a number option, or as "no file"), and
+// for FILE options a value that is another flag (`--out= --json` made a file named --json).
+const CLI::Validator kNotEmpty(
+    [](std::string& value) { return value.empty() ? std::string("must not be empty") : ""; },
+    "", "NotEmpty");
+const CLI::Validator kNotAFlag(
+    [](std::string& value) {
+      return value.size() > 1 && value[0] == '-'
+                 ? "'" + value + "' looks like a flag, not a file (write ./" + value + ")"
+                 : std::string();
+    },
+    "", "NotAFlag");
+
+// A number beyond the range of a double (1e-999, 1e999) that CLI11 would round to 0 or inf.
+const CLI::Validator kRepresentable(
+    [](std::string& value) {
+      double v = 0;
+      const char* begin = value.data() + (!value.empty() && value[0] == '+');
+      const auto [end, ec] = std::from_chars(begin, value.data() + value.size(), v);
+      return ec == std::errc::result_out_of_range && end == value.data() + value.size()
+                 ? "'" + value + "' is beyond the range of a double"
+                 : std::string();
+    },
+    "", "Representable");
+
+void guard_values(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    if (option->get_type_size() == 0) continue;  // a flag takes no value
+    option->check(kNotEmpty);
+    option->check(kRepresentable);
+    if (option->get_type_name() == "FILE") option->check(kNotAFlag);
+  }
+  for (CLI::App* sub : app.get_subcommands({})) guard_values(*sub);
 }
 
 // Subcommands, in help order. A new subcommand adds its cmd_<name>.cpp and one line here.
@@ -46,6 +86,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("selfalign ") + SELFALIGN_VERSION);
   app.require_subcommand(1);
   for (auto add : kCommands) add(app);
+  guard_values(app);
+  selfalign::remove_temporaries_on_signals();  // Ctrl-C leaves no half-written *.tmp-* behind
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {  // --help, --version: print and exit 0

@@ -47,8 +47,7 @@ void deliver_report(const nlohmann::json& report, const std::string& table, bool
                     const std::optional<std::string>& out) {
   const std::string text = report.dump(2) + "\n";
   if (out) {
-    if (out->empty()) throw InvalidParameter("out", "\"\"", "must be a file path");
-    write_file_atomically(*out, text);
+    write_file_atomically(*out, text, "out");  // "-": standard output
     return;
   }
   std::cout << (as_json ? text : table) << std::flush;
@@ -61,7 +60,13 @@ ReportPaths resolve_report_paths(const SimulateConfig& config, bool as_json) {
   if (as_json && config.summary && !resolved.summary_to_stdout())
     throw InvalidParameter("summary", *config.summary,
                            "cannot be combined with --json (which prints the report)");
-  if (!as_json && !resolved.summary_to_stdout()) paths.report = resolved.summary;
+  const bool csv_to_stdout = paths.csv && *paths.csv == "-";
+  if (csv_to_stdout && as_json)
+    throw InvalidParameter("json", "given",
+                           "cannot share standard output with out = -; give --summary FILE");
+  if (!resolved.summary) paths.report_written = false;  // out = "-": the CSV has stdout
+  if (!as_json && resolved.summary && !resolved.summary_to_stdout())
+    paths.report = resolved.summary;
   paths.report_as_json = as_json || config.summary.has_value();
   return paths;
 }
@@ -70,11 +75,12 @@ void deliver_csv_and_report(const ReportPaths& paths, const std::string& csv,
                             nlohmann::json report, const std::string& table) {
   report["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
   const std::string text = report.dump(2) + "\n";
-  AtomicFileSet files;
-  if (paths.csv) files.add(*paths.csv, csv);
-  if (paths.report) files.add(*paths.report, text);
+  AtomicFileSet files;  // "-" is standard output, written after the files
+  if (paths.csv) files.add(*paths.csv, csv, "out");
+  if (paths.report) files.add(*paths.report, text, "summary");
   files.commit();
-  if (!paths.report) std::cout << (paths.report_as_json ? text : table) << std::flush;
+  if (!paths.report && paths.report_written)
+    std::cout << (paths.report_as_json ? text : table) << std::flush;
 }
 
 }  // namespace selfalign::cli

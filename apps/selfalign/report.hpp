@@ -39,9 +39,10 @@ class TextTable {
 /// A JSON value as table text: numbers round-trip, null as "-", strings unquoted.
 std::string table_text(const nlohmann::json& value);
 
-/// Delivers a JSON report: to the file `out` when given (atomically; nothing printed), else to
-/// stdout as JSON (as_json) or as the human-readable `table`. Throws InvalidParameter for an
-/// empty path or a file that cannot be written.
+/// Delivers a JSON report: to the file `out` when given (atomically; nothing printed; "-" is
+/// standard output), else to stdout as JSON (as_json) or as the human-readable `table`. Throws
+/// InvalidParameter for an empty path, a directory, an input file or a file that cannot be
+/// written.
 void deliver_report(const nlohmann::json& report, const std::string& table, bool as_json,
                     const std::optional<std::string>& out);
 
@@ -50,9 +51,10 @@ void deliver_report(const nlohmann::json& report, const std::string& table, bool
 /// .summary.json beside the CSV, or to stdout: as JSON with --json or --summary -, as the
 /// table when neither out nor summary is given.
 struct ReportPaths {
-  std::optional<std::string> csv;     ///< none: no CSV
-  std::optional<std::string> report;  ///< none: standard output
+  std::optional<std::string> csv;     ///< none: no CSV; "-": standard output
+  std::optional<std::string> report;  ///< none: standard output (when report_written)
   bool report_as_json = false;        ///< on standard output: JSON (else the table)
+  bool report_written = true;         ///< false: no report (out = "-" took standard output)
 };
 
 /// Resolves and checks the paths before any work is done (resolve_output_paths). --json with

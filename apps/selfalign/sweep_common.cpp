@@ -10,7 +10,8 @@
 namespace selfalign::cli {
 namespace {
 
-const char kRangeForm[] = "must be LO:HI:N with numbers LO, HI and a whole number N >= 1";
+const char kRangeForm[] = "must be LO:HI:N with numbers LO, HI and a whole number N in [1, 1e7]";
+constexpr int kMaxGridPoints = 10'000'000;  // linear_grid's limit
 
 // The whole of `text` as a number of type T (C locale).
 template <class T>
@@ -33,7 +34,7 @@ GridRange parse_grid_range(const std::string& name, const std::string& text) {
   const std::string_view all(text);
   if (!parse_whole(all.substr(0, first), r.lo) ||
       !parse_whole(all.substr(first + 1, second - first - 1), r.hi) ||
-      !parse_whole(all.substr(second + 1), r.n) || r.n < 1)
+      !parse_whole(all.substr(second + 1), r.n) || r.n < 1 || r.n > kMaxGridPoints)
     throw InvalidParameter(name, text, kRangeForm);
   return r;
 }
@@ -140,6 +141,9 @@ AccelerationGrid acceleration_grid(const ProfileModel& model, const std::string&
   AccelerationGrid g;
   g.r2 = parse_grid_range("a2-range", a2_range);
   g.r3 = parse_grid_range("a3-range", a3_range);
+  if (static_cast<double>(g.r2.n) * g.r3.n > kMaxGridPoints)
+    throw InvalidParameter("a2-range, a3-range", a2_range + ", " + a3_range,
+                           "the grid has N2 x N3 cells, at most 1e7");
   g.a2 = positive_grid("a2-range", g.r2, log, "y2''");
   g.a3 = positive_grid("a3-range", g.r3, log, "y3''");
   for (double v : g.a2) g.a2_model.push_back(model.to_model_units(Dimension::acceleration, v));

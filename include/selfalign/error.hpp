@@ -10,8 +10,10 @@
 
 namespace selfalign {
 
-/// A parameter outside its allowed range. what() is one line:
-/// "invalid <name> = <value>: <allowed>", e.g. "invalid width = -1: must be > 0".
+/// A parameter outside its allowed range. what() is one short line:
+/// "invalid <name> = <value>: <allowed>", e.g. "invalid width = -1: must be > 0"; a value longer
+/// than 100 characters is shown by its head and tail, and line breaks become spaces. value()
+/// keeps it whole.
 class InvalidParameter : public std::invalid_argument {
  public:
   InvalidParameter(std::string name, std::string value, std::string allowed);
@@ -36,6 +38,12 @@ double require_non_negative(const std::string& name, double value);
 double require_finite(const std::string& name, double value);
 /// Throws InvalidParameter unless value is finite and > bound ("must be > bound").
 double require_greater(const std::string& name, double value, double bound);
+/// The largest magnitude selfalign accepts for a free-valued input (a velocity, a position, a
+/// config number): dimensionless quantities of this model are O(1e-6 .. 1e6), and 1e50 keeps
+/// products of several such quantities (energies, y = a t^2/2, (k w)^2 A) finite.
+inline constexpr double kMaxMagnitude = 1e50;
+/// Throws InvalidParameter unless value is finite and |value| <= kMaxMagnitude.
+double require_moderate(const std::string& name, double value);
 /// Throws InvalidParameter unless value is finite and lo < value <= hi.
 double require_in_half_open(const std::string& name, double value, double lo, double hi);
 

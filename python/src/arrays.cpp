@@ -15,6 +15,16 @@ std::vector<double> to_vector(const py::handle& values, const char* name) {
   return {a.data(), a.data() + a.size()};
 }
 
+double scalar_value(const py::handle& x, const char* name) {
+  const double v = PyFloat_AsDouble(x.ptr());
+  if (v == -1.0 && PyErr_Occurred()) {  // e.g. 2**2000: OverflowError in Python's conversion
+    PyErr_Clear();
+    throw InvalidParameter(name, py::str(x).cast<std::string>(),
+                           "must be a number a float can hold (|x| <= 1.8e308)");
+  }
+  return v;
+}
+
 py::array make_readonly(py::array a) {
   a.attr("setflags")(py::arg("write") = false);
   return a;

@@ -5,6 +5,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include "selfalign/error.hpp"
+
+#include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -64,17 +68,25 @@ inline bool is_scalar(const py::handle& x) {
   return py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x);
 }
 
+/// A Python int/float as a double; InvalidParameter(name) for an int too large for a float.
+double scalar_value(const py::handle& x, const char* name);
+
 /// f(x) elementwise: a Python scalar for a Python int/float, else an ndarray of x's shape
-/// with element type R.
+/// with element type R. Every element must be finite: NaN or inf raises InvalidParameter
+/// naming `name` (NaN in, NaN out would hide a mistake upstream).
 template <class R, class F>
-py::object map_elementwise(const py::handle& x, const F& f) {
-  if (is_scalar(x)) return py::cast(static_cast<R>(f(x.cast<double>())));
+py::object map_elementwise(const py::handle& x, const F& f, const char* name = "x") {
+  auto checked = [&](double v) {
+    if (!std::isfinite(v)) throw InvalidParameter(name, v, "must be a finite number");
+    return static_cast<R>(f(v));
+  };
+  if (is_scalar(x)) return py::cast(checked(scalar_value(x, name)));
   const auto in = DoubleArray::ensure(x);
-  if (!in) throw py::type_error("expected a float or an array-like of floats");
+  if (!in) throw py::type_error(std::string(name) + ": expected a float or an array-like of floats");
   py::array_t<R> out(std::vector<py::ssize_t>(in.shape(), in.shape() + in.ndim()));
   const double* src = in.data();
   R* dst = out.mutable_data();
-  for (py::ssize_t i = 0; i < in.size(); ++i) dst[i] = static_cast<R>(f(src[i]));
+  for (py::ssize_t i = 0; i < in.size(); ++i) dst[i] = checked(src[i]);
   return out;
 }
 

@@ -39,7 +39,7 @@ Abstract: use UniformFriction or TwoRegionFriction.)doc")
       .def(
           "bound",
           [](const FrictionMap& f, const py::object& x) {
-            return map_elementwise<double>(x, [&](double v) { return f.bound(v); });
+            return map_elementwise<double>(x, [&](double v) { return f.bound(v); }, "x");
           },
           py::arg("x"),
           "Friction bound m(x) [-] at dimensionless position(s) x [-] (float or ndarray).")

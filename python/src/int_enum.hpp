@@ -8,9 +8,11 @@
 #include <pybind11/pybind11.h>
 
 #include <initializer_list>
+#include <string>
 #include <utility>
 
 #include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/error.hpp"
 #include "selfalign/simulate/arc.hpp"
 
 namespace selfalign::python {
@@ -34,6 +36,21 @@ void bind_int_enum(pybind11::module_& m, const char* name, const char* doc,
   cls.attr("__doc__") = doc;
   m.attr(name) = cls;
   IntEnumClass<Enum>::type = cls.release().ptr();
+}
+
+/// Makes Enum(int) of a pybind11 enum_ refuse values that are not members (pybind11 accepts
+/// any int and shows it as 'Enum.???'): a checked constructor placed before pybind11's own.
+/// The members are 0 .. count - 1.
+template <class Enum>
+void refuse_unknown_values(pybind11::enum_<Enum>& e, const char* name, int count) {
+  namespace py = pybind11;
+  e.def(py::init([name, count](int value) {
+          if (value < 0 || value >= count)
+            throw InvalidParameter(name, static_cast<double>(value),
+                                   "must be one of the members 0.." + std::to_string(count - 1));
+          return static_cast<Enum>(value);
+        }),
+        py::arg("value"), py::prepend());
 }
 
 }  // namespace selfalign::python

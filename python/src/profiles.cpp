@@ -16,8 +16,12 @@ namespace {
 
 // (y, y', y'') at every t: floats for a float, arrays of t's shape for an array-like.
 py::tuple sample(const TableProfile& profile, const py::object& t) {
+  auto state = [&](double v) {
+    if (!std::isfinite(v)) throw InvalidParameter("t", v, "must be a finite number");
+    return profile.state(v);
+  };
   if (is_scalar(t)) {
-    const TableState s = profile.state(t.cast<double>());
+    const TableState s = state(scalar_value(t, "t"));
     return py::make_tuple(s.y, s.yd, s.ydd);
   }
   const auto in = DoubleArray::ensure(t);
@@ -27,7 +31,7 @@ py::tuple sample(const TableProfile& profile, const py::object& t) {
   const double* src = in.data();
   double *py = y.mutable_data(), *pyd = yd.mutable_data(), *pydd = ydd.mutable_data();
   for (py::ssize_t i = 0; i < in.size(); ++i) {
-    const TableState s = profile.state(src[i]);
+    const TableState s = state(src[i]);
     py[i] = s.y;
     pyd[i] = s.yd;
     pydd[i] = s.ydd;
@@ -84,12 +88,17 @@ velocity has zero mean, and min y = 0 (Sect. 4.4.3, constraint 1), so the stroke
       .def_property_readonly("stroke", &TableProfile::stroke, "Δy = max y - min y [-]")
       .def_property_readonly("kind", &TableProfile::kind,
                              "short family name ('three-phase', 'fourier', ...)")
-      .def("state", &TableProfile::state, py::arg("t"),
+      .def(
+          "state",
+          [](const TableProfile& p, double t) {
+            return p.state(require_finite("t", t));
+          },
+          py::arg("t"),
            "y, y', y'' at one time t [-] (any real t: periodic extension; y'' right-continuous).")
       .def(
           "velocity",
           [](const TableProfile& p, const py::object& t) {
-            return map_elementwise<double>(t, [&](double v) { return p.velocity(v); });
+            return map_elementwise<double>(t, [&](double v) { return p.velocity(v); }, "t");
           },
           py::arg("t"), "y'(t) [-] at time(s) t (float or ndarray).")
       .def("sample", &sample, py::arg("t"), R"doc(
@@ -158,13 +167,15 @@ cos_coeffs: A_1..A_N [-]; sin_coeffs: B_1..B_N [-] (the shorter is padded with z
 }
 
 void bind_sampled(py::module_& m) {
-  py::enum_<Interpolation>(m, "Interpolation",
-                           "How sampled accelerations are interpolated; also accepted as the "
-                           "strings 'constant' and 'linear'.")
+  py::enum_<Interpolation> interpolation(m, "Interpolation",
+                                         "How sampled accelerations are interpolated; also "
+                                         "accepted as the strings 'constant' and 'linear'.");
+  interpolation
       .value("constant", Interpolation::constant,
              "y'' = y''_i on [t_i, t_{i+1}) (piecewise constant: the exact solver applies)")
       .value("linear", Interpolation::linear, "y'' linear between samples (piecewise-cubic y)")
       .def(py::init(&parse_interpolation), py::arg("text"));
+  refuse_unknown_values(interpolation, "Interpolation", 2);
   py::implicitly_convertible<py::str, Interpolation>();
 
   py::class_<AccelerationSamples>(m, "AccelerationSamples",

@@ -57,13 +57,16 @@ and stick (bool). The arrays are views into the result (kept alive by it); copy 
 }
 
 void bind_method(py::module_& m) {
-  py::enum_<Method>(m, "Method",
-                    "Solver choice; also accepted as the strings 'exact' and 'time-stepping'.")
+  py::enum_<Method> method(m, "Method",
+                           "Solver choice; also accepted as the strings 'exact' and "
+                           "'time-stepping'.");
+  method
       .value("exact", Method::exact,
              "event-driven closed form: piecewise-constant y'', piecewise-affine m(x)")
       .value("time_stepping", Method::time_stepping,
              "Moreau time-stepping (Sect. 4.1): any profile and friction map")
       .def(py::init(&parse_method), py::arg("text"));
+  refuse_unknown_values(method, "Method", 2);
   py::implicitly_convertible<py::str, Method>();
 }
 

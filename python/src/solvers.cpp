@@ -8,6 +8,7 @@
 #include "repr.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/simulate.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign::python {
@@ -33,6 +34,9 @@ struct ArcColumns final : ArcSink {
   std::vector<std::int8_t> kind, direction, end;
   std::vector<std::int64_t> segment, piece;
   void on_arc(const Arc& a) override {
+    if (static_cast<double>(t0.size()) >= kMaxRecordedSamples)  // sized before it grows
+      throw InvalidParameter("duration", a.t1,
+                             "the run has more than 1e7 arcs to return: shorten duration");
     t0.push_back(a.t0), t1.push_back(a.t1), x0.push_back(a.x0), xd0.push_back(a.xd0);
     x1.push_back(a.x1), xd1.push_back(a.xd1), table_accel.push_back(a.table_accel);
     bound0.push_back(a.bound0), slope.push_back(a.slope), alpha.push_back(a.alpha);
@@ -84,9 +88,10 @@ What ended an arc (an enum.IntEnum).
   py::class_<ExactState>(m, "ExactState",
                          "Mutable state of the exact solver: the object state plus where it is "
                          "in the profile. Make it with make_exact_state.")
-      .def_readwrite("object", &ExactState::object, "t, x, x' [-]")
-      .def_readwrite("segment", &ExactState::segment, "current acceleration segment")
-      .def_readwrite("period_index", &ExactState::period_index, "floor(t / Δt)")
+      .def_readonly("object", &ExactState::object,
+                    "t, x, x' [-] (read-only: make a new state with make_exact_state)")
+      .def_readonly("segment", &ExactState::segment, "current acceleration segment (read-only)")
+      .def_readonly("period_index", &ExactState::period_index, "floor(t / Δt) (read-only)")
       .def("__repr__", [](const ExactState& s) {
         return Repr("ExactState")("t", s.object.t)("x", s.object.x)("xd", s.object.xd)(
                    "segment", static_cast<long long>(s.segment))("period_index", s.period_index)
@@ -105,6 +110,9 @@ What ended an arc (an enum.IntEnum).
       [](const TableProfile& profile, const FrictionMap& friction, ExactState& state,
          double t_end) {
         require_finite("t_end", t_end);
+        if (t_end > state.object.t)
+          require_simulatable_duration("t_end - state.object.t", t_end - state.object.t,
+                                       profile.period());
         return advance_exact(exact_setup(profile, friction), state, t_end);
       },
       py::arg("profile"), py::arg("friction"), py::arg("state"), py::arg("t_end"),
@@ -118,7 +126,7 @@ constant or a friction map that is not piecewise affine.)doc");
       "exact_arcs",
       [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& initial,
          double duration) {
-        require_positive("duration", duration);
+        require_simulatable_duration("duration", duration, profile.period());
         const ExactSetup setup = exact_setup(profile, friction);
         ArcColumns arcs;
         {
@@ -182,7 +190,8 @@ void bind_time_stepping(py::module_& m) {
       [](const TableProfile& profile, const FrictionMap& friction,
          const TimeSteppingOptions& options, TimeSteppingState& state, long long steps) {
         validate(options);
-        if (steps < 0) throw InvalidParameter("steps", static_cast<double>(steps), "must be >= 0");
+        if (steps < 0 || static_cast<double>(steps) > kMaxTimeSteps)
+          throw InvalidParameter("steps", static_cast<double>(steps), "must be in [0, 1e9]");
         advance_time_stepping(profile, friction, options, state, steps);
       },
       py::arg("profile"), py::arg("friction"), py::arg("options"), py::arg("state"),
@@ -192,7 +201,7 @@ Advances `state` in place by `steps` Moreau steps (Sect. 4.1). One step t_k -> t
   x'_{k+1} = x'_k - (y'(t_{k+1}) - y'(t_k)) - h m(x_M) s,   s ∈ Sign(x'_{k+1})
   x_{k+1}  = x_k + h ((1 - theta) x'_k + theta x'_{k+1})
 solved in closed form (a projection: stick iff |v*| <= h m(x_M)). Any profile and friction
-map. Raises InvalidParameter on bad options or steps < 0.)doc");
+map. Raises InvalidParameter on bad options or steps outside [0, 1e9].)doc");
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ void def_conversion(PyClass& cls, const char* name, double (Scales::*f)(double) 
   cls.def(
       name,
       [f](const Scales& s, const py::object& v) {
-        return map_elementwise<double>(v, [&](double x) { return (s.*f)(x); });
+        return map_elementwise<double>(v, [&](double x) { return (s.*f)(x); }, "value");
       },
       py::arg("value"), doc);
 }

@@ -34,12 +34,22 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Conv
   if (!pwc)
     throw InvalidParameter("profile", profile.kind(),
                            "convergence needs a piecewise-constant table acceleration");
-  require_finite("v1", o.v1);
-  require_finite("v2", o.v2);
-  require_finite("t0", o.t0);
+  require_moderate("v1", o.v1);
+  require_moderate("v2", o.v2);
+  require_moderate("t0", o.t0);
+  // Every arc and sample is kept: at most 1e6 periods and 1e7 samples (~1 GB).
+  constexpr double kMaxPeriods = 1e6, kMaxSamples = 1e7;
+  const double P = profile.period();
   require_positive("duration", o.duration);
-  if (o.samples_per_period < 1)
-    throw InvalidParameter("samples_per_period", o.samples_per_period, "must be >= 1");
+  if (!(o.duration <= kMaxPeriods * P))
+    throw InvalidParameter("duration", o.duration,
+                           "must be <= 1e6 table periods (" + format_number(kMaxPeriods * P) + ")");
+  if (o.samples_per_period < 1 || o.samples_per_period > 1'000'000)
+    throw InvalidParameter("samples_per_period", o.samples_per_period, "must be in [1, 1e6]");
+  if (!(std::ceil(o.duration / P) * o.samples_per_period <= kMaxSamples))
+    throw InvalidParameter("samples_per_period", o.samples_per_period,
+                           "gives more than 1e7 samples over the run (periods x "
+                           "samples_per_period <= 1e7)");
 
   const UniformFriction friction(1.0);
   const ExactSetup setup{*pwc, *friction.piecewise_affine()};

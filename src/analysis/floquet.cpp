@@ -23,6 +23,8 @@ Monodromy make_monodromy(const Eigen::Matrix2d& matrix) {
 }
 
 double slip_slip_multiplier(double a2, double a3) {
+  require_positive("a2", a2);
+  require_positive("a3", a3);
   return ((a2 - 1) * (a3 - 1)) / ((a2 + 1) * (a3 + 1));  // eq. (33)
 }
 
@@ -83,7 +85,8 @@ Eigen::Matrix2d saltation(const Arc& a, const Arc& next) {
 }  // namespace
 
 FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FloquetOptions& o) {
-  require_positive("fd_step", o.fd_step);
+  // Beyond 0.1 (a tenth of the length scale) a central difference approximates no derivative.
+  require_in_half_open("fd_step", o.fd_step, 0.0, 0.1);
   const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
   if (!pwc)
     throw InvalidParameter("profile", profile.kind(),

@@ -15,9 +15,13 @@ namespace selfalign {
 std::vector<double> linear_grid(double lo, double hi, int n) {
   require_finite("grid lower end", lo);
   require_finite("grid upper end", hi);
-  if (n < 1) throw InvalidParameter("grid size", n, "must be >= 1");
+  constexpr int kMaxGrid = 10'000'000;  // 80 MB of values; a study of 1e7 cells takes hours
+  if (n < 1 || n > kMaxGrid) throw InvalidParameter("grid size", n, "must be in [1, 1e7]");
   std::vector<double> g(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) g[static_cast<std::size_t>(i)] = n == 1 ? lo : lo + (hi - lo) * i / (n - 1);
+  // std::lerp: exact ends, monotone, and no overflow of hi - lo for ends near ±1.8e308.
+  for (int i = 0; i < n; ++i)
+    g[static_cast<std::size_t>(i)] =
+        n == 1 ? lo : std::lerp(lo, hi, static_cast<double>(i) / static_cast<double>(n - 1));
   return g;
 }
 
@@ -42,6 +46,7 @@ int worker_threads(int requested) {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kMaxCells = 1e7;  // ~1 GB of results; hours of work
 
 }  // namespace
 
@@ -53,6 +58,9 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
   require_positive("stroke", stroke);
   for (double v : a2) require_positive("a2", v);
   for (double v : a3) require_positive("a3", v);
+  if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) > kMaxCells)
+    throw InvalidParameter("cells", static_cast<double>(a2.size()) * static_cast<double>(a3.size()),
+                           "len(a2) x len(a3) must be <= 1e7");
   std::vector<AccelerationCell> cells(a2.size() * a3.size());
   detail::parallel_cells(cells.size(), o, [&](std::size_t k) {
     AccelerationCell& c = cells[k];
@@ -134,6 +142,8 @@ namespace {
 std::vector<FamilyPoint> sweep_family(const ProfileFamily& family,
                                       const std::vector<std::pair<double, double>>& points,
                                       const SweepOptions& o) {
+  if (static_cast<double>(points.size()) > kMaxCells)
+    throw InvalidParameter("cells", static_cast<double>(points.size()), "must be <= 1e7");
   std::vector<FamilyPoint> out(points.size());
   detail::parallel_cells(points.size(), o, [&](std::size_t k) {
     FamilyPoint& pt = out[k];

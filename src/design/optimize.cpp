@@ -11,9 +11,10 @@
 namespace selfalign {
 
 namespace {
-void require_at_least(const std::string& name, int value, int bound) {
-  if (value < bound)
-    throw InvalidParameter(name, static_cast<double>(value), "must be >= " + std::to_string(bound));
+void require_in(const std::string& name, int value, int lo, int hi) {
+  if (value < lo || value > hi)
+    throw InvalidParameter(name, static_cast<double>(value),
+                           "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 }  // namespace
 
@@ -25,13 +26,15 @@ void validate(const ActuatorLimits& l) {
 }
 
 void validate(const OptimizeOptions& o) {
-  require_at_least("order", o.order, 1);
-  require_at_least("segments", o.segments, 2);
-  require_at_least("approximation_segments", o.approximation_segments, 8);
-  require_at_least("starts", o.starts, 1);
-  require_at_least("max_evaluations", o.max_evaluations, 1);
-  require_at_least("grid", o.grid, 2);
-  require_at_least("polish", o.polish, 1);
+  // Upper bounds keep one call within minutes and its memory small (the paper's Fig. 6 uses
+  // order 12; order 100 already has 200 design variables).
+  require_in("order", o.order, 1, 100);
+  require_in("segments", o.segments, 2, 64);
+  require_in("approximation_segments", o.approximation_segments, 8, 4096);
+  require_in("starts", o.starts, 1, 1000);
+  require_in("max_evaluations", o.max_evaluations, 1, 1'000'000);
+  require_in("grid", o.grid, 2, 2000);
+  require_in("polish", o.polish, 1, 1000);
   require_positive("fd_step", o.fd_step);
 }
 

@@ -26,11 +26,14 @@ void validate(const DesignRequest& q) {
   require_positive("velocity_max", q.velocity_max);
   require_positive("acceleration_max", q.acceleration_max);
   require_non_negative("tolerance", q.tolerance);
-  if (q.acceleration_grid < 2)
-    throw InvalidParameter("acceleration_grid", q.acceleration_grid, "must be >= 2");
-  if (q.period_grid < 1) throw InvalidParameter("period_grid", q.period_grid, "must be >= 1");
-  if (q.stroke_grid < 1) throw InvalidParameter("stroke_grid", q.stroke_grid, "must be >= 1");
-  if (q.entries < 2) throw InvalidParameter("entries", q.entries, "must be >= 2");
+  if (q.acceleration_grid < 2 || q.acceleration_grid > 200)
+    throw InvalidParameter("acceleration_grid", q.acceleration_grid, "must be in [2, 200]");
+  if (q.period_grid < 1 || q.period_grid > 100)
+    throw InvalidParameter("period_grid", q.period_grid, "must be in [1, 100]");
+  if (q.stroke_grid < 1 || q.stroke_grid > 20)
+    throw InvalidParameter("stroke_grid", q.stroke_grid, "must be in [1, 20]");
+  if (q.entries < 2 || q.entries > 1000)
+    throw InvalidParameter("entries", q.entries, "must be in [2, 1000]");
 }
 
 namespace {

@@ -1,11 +1,18 @@
 #include "selfalign/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
+#include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
 #include <random>
 
 #include "selfalign/error.hpp"
@@ -13,87 +20,292 @@
 namespace selfalign {
 namespace {
 
-[[noreturn]] void fail(const std::string& path, const std::string& what, int error) {
-  throw InvalidParameter("output file", path, what + ": " + std::strerror(error));
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const std::string& name, const std::string& path, const std::string& what,
+                       int error) {
+  throw InvalidParameter(name, path, what + ": " + std::strerror(error));
 }
 
+// ---- the inputs this process has read ----------------------------------------------------
+
+struct InputFile {
+  std::string absolute;  // lexically normal absolute path (links resolved where they exist)
+  dev_t device = 0;
+  ino_t inode = 0;
+  bool exists = false;
+  std::string flag;
+};
+
+std::mutex& inputs_mutex() {
+  static std::mutex m;
+  return m;
+}
+std::vector<InputFile>& inputs() {
+  static std::vector<InputFile> v;
+  return v;
+}
+
+std::string absolute_path(const std::string& path) {
+  std::error_code ec;
+  fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
+  if (ec) p = fs::absolute(path).lexically_normal();
+  return p.string();
+}
+
+InputFile identify(const std::string& path) {
+  InputFile f;
+  f.absolute = absolute_path(path);
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    f.exists = true;
+    f.device = st.st_dev;
+    f.inode = st.st_ino;
+  }
+  return f;
+}
+
+bool same_file(const InputFile& a, const InputFile& b) {
+  if (a.exists && b.exists) return a.device == b.device && a.inode == b.inode;
+  return a.absolute == b.absolute;
+}
+
+// The file a path finally names: symbolic links followed (also dangling ones, whose target is
+// then created), at most 40 hops as the kernel allows.
+std::string resolve_links(std::string path) {
+  for (int hop = 0; hop < 40; ++hop) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return path;
+    std::array<char, 4096> buffer{};
+    const ssize_t n = ::readlink(path.c_str(), buffer.data(), buffer.size() - 1);
+    if (n <= 0) return path;
+    const fs::path target(std::string(buffer.data(), static_cast<std::size_t>(n)));
+    path = target.is_absolute() ? target.string() : (fs::path(path).parent_path() / target).string();
+  }
+  return path;
+}
+
+// ---- temporaries, for removal on a signal ------------------------------------------------
+
+constexpr std::size_t kSlots = 64;         // live temporaries at once (a run writes a few)
+constexpr std::size_t kPathCapacity = 4096;
+std::array<std::atomic<bool>, kSlots> g_slot_used{};
+std::array<std::array<char, kPathCapacity>, kSlots> g_slot_path{};
+
+void track(const std::string& temporary) {
+  if (temporary.size() >= kPathCapacity) return;  // not removable on a signal; still on error
+  for (std::size_t i = 0; i < kSlots; ++i) {
+    if (g_slot_used[i].load()) continue;
+    std::memcpy(g_slot_path[i].data(), temporary.c_str(), temporary.size() + 1);
+    bool expected = false;
+    if (g_slot_used[i].compare_exchange_strong(expected, true)) return;
+  }
+}
+
+void untrack(const std::string& temporary) {
+  for (std::size_t i = 0; i < kSlots; ++i)
+    if (g_slot_used[i].load() && temporary == g_slot_path[i].data()) g_slot_used[i].store(false);
+}
+
+extern "C" void remove_temporaries_and_reraise(int signal) {
+  for (std::size_t i = 0; i < kSlots; ++i)
+    if (g_slot_used[i].load()) ::unlink(g_slot_path[i].data());  // async-signal-safe
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+// ---- writing ---------------------------------------------------------------------------------
+
 // Creates "<path>.tmp-XXXXXX" exclusively, mode 0666 & ~umask (like an ordinary new file;
-// mkstemp would give 0600). Returns the descriptor and sets `name`.
-int create_temporary(const std::string& path, std::string& name) {
+// mkstemp would give 0600). Returns the descriptor and sets `temporary`.
+int create_temporary(const std::string& name, const std::string& path, std::string& temporary) {
   static constexpr char kAlphabet[] = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
   std::random_device entropy;
   std::mt19937_64 random(entropy());
   std::uniform_int_distribution<std::size_t> pick(0, sizeof kAlphabet - 2);
   for (int attempt = 0; attempt < 100; ++attempt) {
-    name = path + ".tmp-";
-    for (int i = 0; i < 6; ++i) name += kAlphabet[pick(random)];
-    const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    temporary = path + ".tmp-";
+    for (int i = 0; i < 6; ++i) temporary += kAlphabet[pick(random)];
+    track(temporary);  // before it exists: a signal in between unlinks nothing
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd >= 0) return fd;
-    if (errno != EEXIST) fail(path, "cannot create a temporary file beside it", errno);
+    const int error = errno;
+    untrack(temporary);
+    if (error != EEXIST) fail(name, path, "cannot create a temporary file beside it", error);
   }
-  fail(path, "cannot create a temporary file beside it", EEXIST);
+  fail(name, path, "cannot create a temporary file beside it", EEXIST);
 }
 
-void write_all(int fd, std::string_view content, const std::string& path,
-               const std::string& temporary) {
+// Writes all of content to fd; returns 0 or the errno of the failure. Closes fd.
+int write_and_close(int fd, std::string_view content, bool sync) {
   const char* data = content.data();
   std::size_t left = content.size();
+  int error = 0;
   while (left > 0) {
     const ssize_t n = ::write(fd, data, left);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      const int error = n < 0 ? errno : EIO;
-      ::close(fd);
-      std::remove(temporary.c_str());
-      fail(path, "cannot write", error);
+      error = n < 0 ? errno : EIO;
+      break;
     }
     data += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 && errno != EINVAL) {  // EINVAL: the file system cannot sync (fine)
-    const int error = errno;
-    ::close(fd);
-    std::remove(temporary.c_str());
-    fail(path, "cannot flush", error);
-  }
-  if (::close(fd) != 0) {
-    const int error = errno;
-    std::remove(temporary.c_str());
-    fail(path, "cannot close", error);
-  }
+  if (!error && sync && ::fsync(fd) != 0 && errno != EINVAL) error = errno;  // EINVAL: cannot
+  if (::close(fd) != 0 && !error) error = errno;
+  return error;
+}
+
+void remove_temporary(const std::string& temporary) {
+  std::remove(temporary.c_str());
+  untrack(temporary);
+}
+
+bool is_stream(const struct stat& st) {
+  return S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ||
+         S_ISSOCK(st.st_mode);
 }
 
 }  // namespace
 
-AtomicFileSet::~AtomicFileSet() {
-  for (const Pending& p : pending_) std::remove(p.temporary.c_str());
+void register_input_file(const std::string& path, const std::string& flag) {
+  InputFile f = identify(path);
+  f.flag = flag;
+  std::lock_guard lock(inputs_mutex());
+  inputs().push_back(std::move(f));
 }
 
-void AtomicFileSet::add(const std::string& path, std::string_view content) {
+std::optional<std::string> input_file_flag(const std::string& path) {
+  const InputFile f = identify(path);
+  std::lock_guard lock(inputs_mutex());
+  for (const InputFile& in : inputs())
+    if (same_file(f, in)) return in.flag;
+  return std::nullopt;
+}
+
+void require_output_path(const std::string& name, const std::string& path,
+                         const std::string& other_input, const std::string& other_input_flag) {
+  if (path.empty()) throw InvalidParameter(name, "\"\"", "must be a file path");
+  if (path == "-") return;
+  const std::string target = resolve_links(path);
+  struct stat st {};
+  if (::stat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InvalidParameter(name, path, "is a directory; give a file path");
+  std::optional<std::string> flag = input_file_flag(path);
+  if (!flag && !other_input.empty() && same_file(identify(path), identify(other_input)))
+    flag = other_input_flag;
+  if (flag)
+    throw InvalidParameter(name, path,
+                           "is the input file given as " + *flag + "; choose another path");
+}
+
+AtomicFileSet::~AtomicFileSet() {
   for (const Pending& p : pending_)
-    if (p.target == path)
-      throw InvalidParameter("output file", path, "must not be written twice in one run");
-  std::string temporary;
-  const int fd = create_temporary(path, temporary);
-  write_all(fd, content, path, temporary);
-  pending_.push_back({path, std::move(temporary)});
+    if (!p.temporary.empty()) remove_temporary(p.temporary);
+}
+
+void AtomicFileSet::add(const std::string& path, std::string_view content,
+                        const std::string& name) {
+  require_output_path(name, path);
+  Pending p;
+  p.name = name;
+  if (path == "-") {
+    p.to_stdout = true;
+    p.target = path;
+  } else {
+    p.target = resolve_links(path);
+  }
+  for (const Pending& q : pending_)
+    if (q.target == p.target || (q.to_stdout && p.to_stdout))
+      throw InvalidParameter(name, path, "must not be written twice in one run");
+  struct stat st {};
+  p.existed = !p.to_stdout && ::stat(p.target.c_str(), &st) == 0;
+  if (p.to_stdout || (p.existed && is_stream(st))) {
+    p.stream = !p.to_stdout;
+    p.content = std::string(content);  // written at commit: never replace a FIFO or device
+    pending_.push_back(std::move(p));
+    return;
+  }
+  const int fd = create_temporary(name, p.target, p.temporary);
+  if (p.existed) ::fchmod(fd, st.st_mode & 07777);  // a replaced file keeps its mode
+  if (const int error = write_and_close(fd, content, true)) {
+    remove_temporary(p.temporary);
+    fail(name, path, "cannot write", error);
+  }
+  pending_.push_back(std::move(p));
 }
 
 void AtomicFileSet::commit() {
-  while (!pending_.empty()) {
-    const Pending& p = pending_.front();
+  // FIFOs and devices are opened first, so that one that cannot be written (a FIFO nobody
+  // reads: ENXIO rather than blocking for ever) stops the commit before any file is replaced.
+  std::vector<int> streams(pending_.size(), -1);
+  auto close_streams = [&streams] {
+    for (int fd : streams)
+      if (fd >= 0) ::close(fd);
+  };
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    if (!pending_[i].stream) continue;
+    const int fd = ::open(pending_[i].target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+      const int error = errno;
+      close_streams();
+      fail(pending_[i].name, pending_[i].target,
+           error == ENXIO ? "is a FIFO with no reader" : "cannot open it for writing", error);
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);  // then write blocking
+    streams[i] = fd;
+  }
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    Pending& p = pending_[i];
+    if (p.temporary.empty()) continue;
     if (std::rename(p.temporary.c_str(), p.target.c_str()) != 0) {
       const int error = errno;
-      fail(p.target, "cannot rename the temporary " + p.temporary + " onto it", error);
+      for (std::size_t j = 0; j < pending_.size(); ++j) {
+        Pending& q = pending_[j];
+        if (j < i && !q.stream && !q.to_stdout && !q.existed)
+          std::remove(q.target.c_str());  // undo what this set created
+        if (!q.temporary.empty()) remove_temporary(q.temporary);
+        q.temporary.clear();
+      }
+      const std::string name = p.name, target = p.target;
+      close_streams();
+      pending_.clear();
+      fail(name, target, "cannot replace it", error);
     }
-    pending_.erase(pending_.begin());
+    untrack(p.temporary);
+    p.temporary.clear();
   }
+  for (std::size_t i = 0; i < pending_.size(); ++i) {
+    if (streams[i] < 0) continue;
+    const int error = write_and_close(streams[i], pending_[i].content, false);
+    streams[i] = -1;
+    if (error) {
+      close_streams();
+      fail(pending_[i].name, pending_[i].target, "cannot write", error);
+    }
+  }
+  for (const Pending& p : pending_)
+    if (p.to_stdout) std::cout << p.content << std::flush;
+  pending_.clear();
 }
 
-void write_file_atomically(const std::string& path, std::string_view content) {
+void write_file_atomically(const std::string& path, std::string_view content,
+                           const std::string& name) {
   AtomicFileSet files;
-  files.add(path, content);
+  files.add(path, content, name);
   files.commit();
+}
+
+void remove_temporaries_on_signals() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    for (int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+      struct sigaction action {};
+      action.sa_handler = remove_temporaries_and_reraise;
+      sigemptyset(&action.sa_mask);
+      ::sigaction(signal, &action, nullptr);
+    }
+  });
 }
 
 }  // namespace selfalign

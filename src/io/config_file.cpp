@@ -8,6 +8,7 @@
 
 #include "config_reader.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/simulate_config.hpp"
 
 namespace selfalign {
@@ -17,7 +18,7 @@ const ConfigKey& require_config_key(std::string_view name, const std::string& fi
   const ConfigKey* key = find_simulate_config_key(name);
   if (!key)
     throw InvalidParameter("config key", std::string(name),
-                           "unknown key in " + file + "; allowed: " + simulate_config_key_list());
+                           unknown_config_key_hint(name) + " (in " + file + ")");
   return *key;
 }
 
@@ -41,9 +42,18 @@ void throw_malformed(const std::string& file, const std::string& message) {
 }  // namespace detail
 
 SimulateConfig load_simulate_config(const std::string& path) {
+  if (path.empty()) throw InvalidParameter("config file", "\"\"", "must name a .json or .toml file");
   const std::string extension = std::filesystem::path(path).extension().string();
   if (extension != ".json" && extension != ".toml")
     throw InvalidParameter("config file", path, "must end in .json or .toml");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InvalidParameter("config file", path, "is a directory; give a .json or .toml file");
+  constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;  // a config is a few hundred bytes
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxConfigBytes)
+    throw InvalidParameter("config file", path, "is larger than 16 MB; a config is a flat set of keys");
+  register_input_file(path, "--config");  // no output may replace it
   std::ifstream in(path, std::ios::binary);
   if (!in) detail::throw_malformed(path, std::string("cannot be read: ") + std::strerror(errno));
   std::ostringstream text;

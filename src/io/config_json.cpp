@@ -7,11 +7,28 @@
 namespace selfalign::detail {
 
 SimulateConfig parse_json_config(const std::string& text, const std::string& file) {
+  // A config is one object of keys whose values are scalars or arrays of numbers: depth <= 2.
+  // Deeper documents are refused while parsing (a 60 000-deep one overflowed the stack when its
+  // value was formatted for the error message).
+  constexpr int kMaxDepth = 2;
+  const nlohmann::json::parser_callback_t flat_only =
+      [&file](int depth, nlohmann::json::parse_event_t event, nlohmann::json&) {
+        if (depth >= kMaxDepth && (event == nlohmann::json::parse_event_t::object_start ||
+                                   event == nlohmann::json::parse_event_t::array_start))
+          throw_malformed(file, "nests too deeply: a config is one object of keys whose values "
+                                "are numbers, strings or arrays of numbers");
+        return true;
+      };
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw_malformed(file, e.what());
+    doc = nlohmann::json::parse(text, flat_only);
+  } catch (const nlohmann::json::exception& e) {
+    // "[json.exception.parse_error.101] parse error at line 1, column 2: ..." -> from "parse".
+    std::string message = e.what();
+    if (const auto close = message.find("] "); message.rfind("[json.exception", 0) == 0 &&
+                                               close != std::string::npos)
+      message.erase(0, close + 2);
+    throw_malformed(file, message);
   }
   if (!doc.is_object()) throw_malformed(file, "must contain one JSON object of keys");
   SimulateConfig config;

@@ -4,9 +4,11 @@
 #include "selfalign/io/simulate_config.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <filesystem>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/unit_system.hpp"
 #include "selfalign/units.hpp"
 
@@ -108,7 +110,7 @@ void set_simulate_config_value(SimulateConfig& config, std::string_view name,
   const ConfigKey* key = find_simulate_config_key(name);
   if (!key)
     throw InvalidParameter("config key", std::string(name),
-                           "unknown key; allowed: " + simulate_config_key_list());
+                           unknown_config_key_hint(name));
   if (auto* text_field = std::get_if<TextField>(&key->field)) {
     config.**text_field = text;
   } else if (auto* number_field = std::get_if<NumberField>(&key->field)) {
@@ -157,7 +159,25 @@ SimulateConfig to_dimensionless(const SimulateConfig& config, const Scales& scal
   return convert_config(config, scales, false);
 }
 
+namespace {
+// No number of a config is beyond ±1e50 (error.hpp, kMaxMagnitude): such a value is a typo or a
+// probe, and it would overflow the motion it describes. NaN is left to the checks that name the
+// allowed range of each key.
+void require_moderate_numbers(const SimulateConfig& c) {
+  auto check = [](std::string_view name, double v) {
+    if (std::abs(v) > kMaxMagnitude)
+      throw InvalidParameter(std::string(name), v, "must be a finite number with |value| <= 1e50");
+  };
+  for (const ConfigKey& key : simulate_config_keys()) {
+    if (const auto* f = std::get_if<NumberField>(&key.field); f && (c.**f)) check(key.name, *(c.**f));
+    if (const auto* f = std::get_if<NumberListField>(&key.field); f && (c.**f))
+      for (double v : *(c.**f)) check(key.name, v);
+  }
+}
+}  // namespace
+
 SimulateConfig resolve_simulate_config(const SimulateConfig& config) {
+  require_moderate_numbers(config);
   const SimulateConfig defaults = simulate_config_defaults();
   const SimulateConfig given = merge(defaults, config);  // dimensionless defaults under config
   if (parse_unit_system(*given.units) == UnitSystem::dimensionless) return given;
@@ -168,24 +188,30 @@ SimulateConfig resolve_simulate_config(const SimulateConfig& config) {
 
 OutputPaths resolve_output_paths(const SimulateConfig& config) {
   OutputPaths paths;
+  const std::string samples = config.samples.value_or("");
   if (config.out) {
-    if (config.out->empty()) throw InvalidParameter("out", "\"\"", "must be a file path");
+    require_output_path("out", *config.out, samples, "--samples");
     paths.trajectory = *config.out;
   }
   if (config.summary) {
     if (config.summary->empty())
       throw InvalidParameter("summary", "\"\"", "must be a file path or - (stdout)");
     paths.summary = *config.summary;
-  } else if (config.out) {
-    paths.summary = std::filesystem::path(*config.out).replace_extension(".summary.json").string();
-  } else {
+  } else if (!config.out) {
     paths.summary = kStdout;
-  }
+  } else if (*config.out != kStdout) {
+    paths.summary = std::filesystem::path(*config.out).replace_extension(".summary.json").string();
+  }  // out = "-": the CSV takes standard output; no summary unless one is named
+  if (!paths.summary) return paths;
+  require_output_path("summary", *paths.summary, samples, "--samples");
+  if (paths.trajectory && *paths.trajectory == kStdout && paths.summary_to_stdout())
+    throw InvalidParameter("summary", kStdout,
+                           "cannot share standard output with out = -; give --summary FILE");
   namespace fs = std::filesystem;
   if (paths.trajectory && !paths.summary_to_stdout() &&
-      fs::absolute(paths.summary).lexically_normal() ==
+      fs::absolute(*paths.summary).lexically_normal() ==
           fs::absolute(*paths.trajectory).lexically_normal())
-    throw InvalidParameter("summary", paths.summary, "must differ from out");
+    throw InvalidParameter("summary", *paths.summary, "must differ from out");
   return paths;
 }
 

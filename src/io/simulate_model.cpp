@@ -1,6 +1,7 @@
 #include "selfalign/io/simulate_model.hpp"
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_constant.hpp"
 #include "selfalign/profiles/sampled.hpp"
@@ -15,6 +16,7 @@ AccelerationSamples load_samples(const SimulateConfig& c, UnitSystem units, cons
   if (!c.samples)
     throw InvalidParameter("samples", "none", "must name a CSV file of 't,ydd' rows when "
                                               "profile = samples");
+  register_input_file(*c.samples, "--samples");  // no output may replace it
   AccelerationSamples s = read_acceleration_samples(*c.samples);
   if (units == UnitSystem::si) {
     for (double& t : s.t) t = scales.time_from_si(t);
@@ -41,9 +43,15 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem u
   }
   if (kind == "fourier")
     return std::make_unique<FourierProfile>(*c.period, *c.fourier_cos, *c.fourier_sin);
-  if (kind == "samples")
-    return make_sampled_profile(load_samples(c, units, scales),
-                                parse_interpolation(*c.interpolation));
+  if (kind == "samples") {
+    const Interpolation interpolation = parse_interpolation(*c.interpolation);
+    const AccelerationSamples samples = load_samples(c, units, scales);
+    try {
+      return make_sampled_profile(samples, interpolation);
+    } catch (const InvalidParameter& e) {  // name the file the user gave, not an internal
+      throw InvalidParameter("samples", *c.samples, e.name() + " " + e.value() + ": " + e.allowed());
+    }
+  }
   throw InvalidParameter("profile", kind,
                          "must be one of: three-phase, quadratic-sequence, fourier, samples");
 }
@@ -58,6 +66,8 @@ std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c) {
 
 void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.periods = require_positive("periods", *c.periods);
+  if (!(m.periods <= kMaxSimulatedPeriods))
+    throw InvalidParameter("periods", m.periods, "must be in (0, 1e8]");
   m.options.method = parse_method(*c.method);
   validate(TimeSteppingOptions{*c.step, *c.theta});  // checked for both methods: misuse is misuse
   m.options.step = *c.step;

@@ -1,5 +1,6 @@
 #include "selfalign/profiles/fourier.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -8,12 +9,48 @@
 
 namespace selfalign {
 
+namespace {
+constexpr std::size_t kMaxOrder = 1000;  // N; construction is O(N^2), a step O(N)
+// The rotation recurrence below is re-seeded with cos/sin every kResync harmonics: its rounding
+// grows like k eps between seeds, so it stays below 16 eps relative.
+constexpr std::size_t kResync = 16;
+}  // namespace
+
+std::array<double, 4> FourierProfile::derivatives(double t) const {
+  // Phase in [0, Δt) first: cos(k w t) of a large t would lose the digits of t's integer part.
+  const double ph = t - period_ * std::floor(t / period_);
+  const double w = 2 * std::numbers::pi / period_, theta = w * ph;
+  const double c1 = std::cos(theta), s1 = std::sin(theta);
+  std::array<double, 4> d{offset_, 0.0, 0.0, 0.0};  // y and its first three derivatives
+  double c = c1, s = s1;
+  for (std::size_t k = 0; k < cos_.size(); ++k) {
+    if (k > 0 && k % kResync == 0) {
+      c = std::cos(static_cast<double>(k + 1) * theta);
+      s = std::sin(static_cast<double>(k + 1) * theta);
+    }
+    const double kw = static_cast<double>(k + 1) * w;
+    const double even = cos_[k] * c + sin_[k] * s;  // the y-like and y'-like combinations
+    const double odd = -cos_[k] * s + sin_[k] * c;
+    d[0] += even;
+    d[1] += kw * odd;
+    d[2] -= kw * kw * even;
+    d[3] -= kw * kw * kw * odd;
+    const double c_next = c * c1 - s * s1;  // (k+2) theta from (k+1) theta
+    s = s * c1 + c * s1;
+    c = c_next;
+  }
+  return d;
+}
+
 FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
                                std::vector<double> sin_coeffs)
     : period_(require_positive("period", period)),
       cos_(std::move(cos_coeffs)),
       sin_(std::move(sin_coeffs)) {
   const std::size_t n = std::max(cos_.size(), sin_.size());
+  if (n > kMaxOrder)
+    throw InvalidParameter("fourier order", static_cast<double>(n),
+                           "must be <= 1000 (coefficients in fourier_cos / fourier_sin)");
   cos_.resize(n, 0.0);
   sin_.resize(n, 0.0);
   bool any = false;
@@ -26,36 +63,25 @@ FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
     throw InvalidParameter("fourier coefficients", "all zero",
                            "need at least one nonzero coefficient (order >= 1)");
   const int samples = 128 * static_cast<int>(n);
-  auto y = [this](double t) { return state(t).y; };
-  auto yd = [this](double t) { return state(t).yd; };
-  auto ydd = [this](double t) { return state(t).ydd; };
-  const double w = 2 * std::numbers::pi / period_;
-  auto yddd = [this, w](double t) {  // third derivative, for the extrema of y''
-    double s = 0;
-    for (std::size_t k = 0; k < cos_.size(); ++k) {
-      const double kw = (k + 1) * w;
-      s += kw * kw * kw * (cos_[k] * std::sin(kw * t) - sin_[k] * std::cos(kw * t));
-    }
-    return s;
-  };
+  auto y = [this](double t) { return derivatives(t)[0]; };
+  auto yd = [this](double t) { return derivatives(t)[1]; };
+  auto ydd = [this](double t) { return derivatives(t)[2]; };
+  auto yddd = [this](double t) { return derivatives(t)[3]; };
   const detail::Extrema ey = detail::periodic_extrema(y, yd, period_, samples);
   offset_ = -ey.min;
   stroke_ = ey.max - ey.min;
   const detail::Extrema ea = detail::periodic_extrema(ydd, yddd, period_, samples);
   peak_ = std::max(std::abs(ea.min), std::abs(ea.max));
+  if (!std::isfinite(stroke_) || !std::isfinite(peak_) || !(stroke_ > 0))
+    throw InvalidParameter("period", period_,
+                           "gives no finite table motion with these coefficients (stroke " +
+                               format_number(stroke_) + ", peak acceleration " +
+                               format_number(peak_) + ")");
 }
 
 TableState FourierProfile::state(double t) const {
-  const double w = 2 * std::numbers::pi / period_;
-  TableState s{offset_, 0.0, 0.0};
-  for (std::size_t k = 0; k < cos_.size(); ++k) {
-    const double kw = (k + 1) * w;
-    const double c = std::cos(kw * t), sn = std::sin(kw * t);
-    s.y += cos_[k] * c + sin_[k] * sn;
-    s.yd += kw * (-cos_[k] * sn + sin_[k] * c);
-    s.ydd += -kw * kw * (cos_[k] * c + sin_[k] * sn);
-  }
-  return s;
+  const std::array<double, 4> d = derivatives(t);
+  return {d[0], d[1], d[2]};
 }
 
 }  // namespace selfalign

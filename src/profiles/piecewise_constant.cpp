@@ -30,9 +30,14 @@ PiecewiseConstantProfile PiecewiseConstantProfile::from_accelerations(
     p.peak_ = std::max(p.peak_, std::abs(a));
   }
   p.period_ = require_positive("period", t);
+  if (!std::isfinite(dv_scale))
+    throw InvalidParameter("accelerations", dv_scale,
+                           "the table motion overflows: sum of |acceleration| x duration must be "
+                           "finite");
   if (std::abs(dv) > 1e-12 * std::max(dv_scale, 1e-300))
     throw InvalidParameter("accelerations", dv,
-                           "net velocity change over a period (sum of accel*duration) must be 0");
+                           "the accelerations must integrate to 0 over the period (net velocity "
+                           "change sum of acceleration x duration = " + format_number(dv) + ")");
   // Zero mean velocity: shift y' by -mean/Δt; y then gains -mean/Δt * t.
   const double yd0 = -mean / p.period_;
   double y_min = 0, y_max = 0;
@@ -55,6 +60,10 @@ PiecewiseConstantProfile PiecewiseConstantProfile::from_accelerations(
   }
   for (AccelerationSegment& s : p.segments_) s.y -= y_min;
   p.stroke_ = y_max - y_min;
+  if (!std::isfinite(p.stroke_) || !std::isfinite(yd0))
+    throw InvalidParameter("durations", p.period_,
+                           "the table motion overflows: position or velocity not finite over a "
+                           "period this long with these accelerations");
   return p;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <charconv>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -18,15 +20,24 @@ Interpolation parse_interpolation(const std::string& text) {
 }
 
 namespace {
-bool parse_double(const std::string& text, double& out) {
-  std::size_t used = 0;
-  try {
-    out = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return false;
-  }
-  while (used < text.size() && std::isspace(static_cast<unsigned char>(text[used]))) ++used;
-  return used == text.size();
+enum class Field { number, out_of_range, text };
+
+// One CSV field as a double (C locale, whole field): a number, a number out of the range of a
+// double (1e400), or text.
+Field parse_double(const std::string& text, double& out) {
+  std::string_view v(text);
+  if (!v.empty() && v.front() == '+') v.remove_prefix(1);
+  if (v.empty()) return Field::text;
+  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+  if (end != v.data() + v.size()) return Field::text;
+  if (ec == std::errc::result_out_of_range) return Field::out_of_range;
+  return ec == std::errc{} ? Field::number : Field::text;
+}
+
+// A header names its columns: its first field does not begin like a number.
+bool looks_like_header(const std::string& line) {
+  const char c = line.empty() ? ' ' : line.front();
+  return !(std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.');
 }
 
 std::string trim(const std::string& s) {
@@ -37,8 +48,15 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 AccelerationSamples read_acceleration_samples(const std::string& path) {
+  std::error_code ec;
+  if (path.empty() || std::filesystem::is_directory(path, ec))
+    throw InvalidParameter("samples", path.empty() ? "\"\"" : path, "must name a CSV file of 't,ydd' rows");
+  constexpr std::uintmax_t kMaxSamplesBytes = 256u << 20;  // ~10 million rows
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > kMaxSamplesBytes)
+    throw InvalidParameter("samples", path, "is larger than 256 MB");
   std::ifstream in(path);
-  if (!in) throw InvalidParameter("samples file", path, "must be a readable CSV file");
+  if (!in) throw InvalidParameter("samples", path, "must be a readable CSV file");
   AccelerationSamples s;
   std::string line;
   int number = 0;
@@ -49,15 +67,19 @@ AccelerationSamples read_acceleration_samples(const std::string& path) {
     if (line.empty() || line[0] == '#') continue;
     const auto comma = line.find(',');
     double t = 0, a = 0;
-    const bool ok = comma != std::string::npos && parse_double(trim(line.substr(0, comma)), t) &&
-                    parse_double(trim(line.substr(comma + 1)), a);
-    if (!ok) {
-      if (header_allowed) {
+    const Field ft = comma == std::string::npos ? Field::text
+                                                : parse_double(trim(line.substr(0, comma)), t);
+    const Field fa = comma == std::string::npos ? Field::text
+                                                : parse_double(trim(line.substr(comma + 1)), a);
+    if (ft != Field::number || fa != Field::number) {
+      if (header_allowed && looks_like_header(line)) {  // one leading header line
         header_allowed = false;
         continue;
       }
-      throw InvalidParameter("samples file " + path + " line " + std::to_string(number), line,
-                             "expected two numbers 't,ydd'");
+      const bool range = ft == Field::out_of_range || fa == Field::out_of_range;
+      throw InvalidParameter("samples", path + " line " + std::to_string(number),
+                             range ? "'" + line + "' holds a number beyond the range of a double"
+                                   : "'" + line + "' must be two numbers 't,ydd'");
     }
     header_allowed = false;
     s.t.push_back(t);
@@ -73,10 +95,10 @@ void validate_samples(const AccelerationSamples& s) {
                            "need at least 2 rows of (t, ydd)");
   if (s.t[0] != 0.0) throw InvalidParameter("samples t[0]", s.t[0], "must be 0");
   for (std::size_t i = 0; i < s.t.size(); ++i) {
-    require_finite("samples ydd[" + std::to_string(i) + "]", s.ydd[i]);
-    if (i > 0 && !(std::isfinite(s.t[i]) && s.t[i] > s.t[i - 1]))
+    require_moderate("samples ydd[" + std::to_string(i) + "]", s.ydd[i]);
+    if (i > 0 && !(std::abs(s.t[i]) <= kMaxMagnitude && s.t[i] > s.t[i - 1]))
       throw InvalidParameter("samples t[" + std::to_string(i) + "]", s.t[i],
-                             "must be finite and > t[" + std::to_string(i - 1) + "] = " +
+                             "must be <= 1e50 and > t[" + std::to_string(i - 1) + "] = " +
                                  format_number(s.t[i - 1]));
   }
 }
@@ -112,9 +134,10 @@ LinearAccelerationProfile::LinearAccelerationProfile(const AccelerationSamples& 
     dv_scale += 0.5 * d * (std::abs(a_[i]) + std::abs(a_[i + 1]));
     peak_ = std::max({peak_, std::abs(a_[i]), std::abs(a_[i + 1])});
   }
-  if (std::abs(yd_.back()) > 1e-9 * std::max(dv_scale, 1e-300))
-    throw InvalidParameter("samples ydd", yd_.back(),
-                           "net velocity change over a period (integral of ydd) must be 0");
+  if (!std::isfinite(yd_.back()) || std::abs(yd_.back()) > 1e-9 * std::max(dv_scale, 1e-300))
+    throw InvalidParameter("ydd", yd_.back(),
+                           "the accelerations must integrate to 0 over the period (net velocity "
+                           "change " + format_number(yd_.back()) + ")");
   const double yd0 = -mean / period();
   for (std::size_t i = 0; i < n; ++i) {
     yd_[i] += yd0;

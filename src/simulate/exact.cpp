@@ -106,9 +106,12 @@ std::size_t piece_for_direction(const PiecewiseAffineFriction& f, double x, int 
 
 ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object) {
   require_finite("t0", object.t);
-  require_finite("x0", object.x);
-  require_finite("v0", object.xd);
+  require_moderate("x0", object.x);
+  require_moderate("v0", object.xd);
   const PiecewiseConstantProfile& p = setup.profile;
+  constexpr double kMaxPeriodIndex = 1e15;  // period_index and its product with Δt stay exact
+  if (!(std::abs(object.t / p.period()) <= kMaxPeriodIndex))
+    throw InvalidParameter("t0", object.t, "must be within 1e15 table periods of 0");
   ExactState s;
   s.object = object;
   s.period_index = static_cast<long long>(std::floor(object.t / p.period()));
@@ -237,8 +240,30 @@ std::size_t advance(const ExactSetup& setup, ExactState& state, double t_end, Ar
 
 }  // namespace
 
+namespace {
+// A state must be where make_exact_state / advance_exact left it: its segment exists and holds
+// its time (to a tolerance far above rounding: this catches misuse, not precision).
+void require_placed(const ExactSetup& setup, const ExactState& state) {
+  const auto segs = setup.profile.segments();
+  const double P = setup.profile.period(), t = state.object.t;
+  if (state.segment >= segs.size())
+    throw InvalidParameter("segment", static_cast<double>(state.segment),
+                           "must be < " + std::to_string(segs.size()) +
+                               " (the profile's segments); build the state with make_exact_state");
+  const double begin = static_cast<double>(state.period_index) * P + segs[state.segment].begin;
+  const double end = begin + segs[state.segment].duration;
+  const double tol = 1e-9 * (P + std::abs(t));
+  if (!(std::isfinite(t) && t >= begin - tol && t <= end + tol))
+    throw InvalidParameter("state", "t = " + format_number(t),
+                           "is not in its segment/period (" + format_number(begin) + " to " +
+                               format_number(end) + "); build the state with make_exact_state");
+}
+}  // namespace
+
 std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
                           ArcSink* sink) {
+  require_placed(setup, state);
+  if (std::isinf(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
   const auto pieces = setup.friction.pieces();
   return pieces.size() == 1 && pieces[0].slope == 0 ? advance<true>(setup, state, t_end, sink)
                                                     : advance<false>(setup, state, t_end, sink);

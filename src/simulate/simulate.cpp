@@ -70,10 +70,23 @@ class SteppingRunner final : public Runner {
 
 }  // namespace
 
+double require_simulatable_duration(const std::string& name, double duration, double period) {
+  require_positive(name, duration);
+  if (!(duration <= kMaxSimulatedPeriods * period))
+    throw InvalidParameter(name, duration,
+                           "must be <= 1e8 table periods (" +
+                               format_number(kMaxSimulatedPeriods * period) + ")");
+  return duration;
+}
+
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const ObjectState& initial, const SimulationOptions& o) {
-  require_positive("duration", o.duration);
+  require_simulatable_duration("duration", o.duration, profile.period());
   require_non_negative("output_step", o.output_step);
+  if (!(std::abs(initial.t) <= kMaxSimulatedPeriods * profile.period()))
+    throw InvalidParameter("t0", initial.t,
+                           "must be within 1e8 table periods of 0 (|t0| <= " +
+                               format_number(kMaxSimulatedPeriods * profile.period()) + ")");
   const TimeSteppingOptions ts{o.step, o.theta};
   std::unique_ptr<Runner> runner;
   double grid = o.output_step;
@@ -91,10 +104,24 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
     if (grid == 0) grid = profile.period() / 200;
   } else {
     validate(ts);
+    if (o.step > profile.period())
+      throw InvalidParameter("step", o.step,
+                             "must be <= the table period " + format_number(profile.period()) +
+                                 " (a longer step skips the table's motion)");
+    if (!(o.duration / o.step <= kMaxTimeSteps))
+      throw InvalidParameter("step", o.step,
+                             "the run would take " + format_number(std::ceil(o.duration / o.step)) +
+                                 " steps (at most 1e9): raise step or shorten the run");
     runner = std::make_unique<SteppingRunner>(profile, friction, ts, initial);
     if (grid == 0) grid = o.step;
     grid = std::max(1.0, std::round(grid / o.step)) * o.step;  // a whole number of steps
   }
+  // Sized before anything is allocated: the samples at t0 + j grid, plus the two ends.
+  const double recorded = std::floor(o.duration / grid) + 2;
+  if (o.record && !(recorded <= kMaxRecordedSamples))
+    throw InvalidParameter("output_step", grid,
+                           "the trajectory would have " + format_number(recorded) +
+                               " samples (at most 1e7): raise output_step or shorten the run");
 
   SimulationResult r;
   const double t0 = initial.t, t_end = initial.t + o.duration, P = profile.period();
@@ -128,6 +155,7 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   r.final_state = s;
   r.work = runner->work();
   r.mean_velocity_last_period = (s.x - x_last_period) / P;
+  r.stick_fraction = std::numeric_limits<double>::quiet_NaN();  // nothing recorded
   if (o.record && r.trajectory.size() > 0) {
     std::size_t stuck = 0;
     for (unsigned char c : r.trajectory.stick) stuck += c;

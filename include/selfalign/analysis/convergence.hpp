@@ -33,11 +33,12 @@ struct VelocityConvergence {
 };
 
 struct ConvergenceOptions {
-  double v1 = 0.5;               ///< initial velocity of trajectory 1 [-]
-  double v2 = -0.5;              ///< initial velocity of trajectory 2 [-]
+  double v1 = 0.5;               ///< initial velocity of trajectory 1 [-], |v1| <= 1e50
+  double v2 = -0.5;              ///< initial velocity of trajectory 2 [-], |v2| <= 1e50
   double t0 = 0;                 ///< common start time [-]
-  double duration = 10;          ///< simulated time [-], > 0
-  int samples_per_period = 200;  ///< uniform samples per table period, >= 1
+  double duration = 10;          ///< simulated time [-], in (0, 1e6 Δt]
+  int samples_per_period = 200;  ///< uniform samples per table period, in [1, 1e6]; at most
+                                 ///< 1e7 samples over the run
 };
 
 /// Runs both trajectories with the exact solver (the profile must be piecewise constant).

@@ -37,7 +37,7 @@ struct Monodromy {
 Monodromy make_monodromy(const Eigen::Matrix2d& matrix);
 
 struct FloquetOptions {
-  double fd_step = 1e-7;  ///< finite-difference perturbation of x0 and x'_0s [-], > 0
+  double fd_step = 1e-7;  ///< finite-difference perturbation of x0 and x'_0s [-], in (0, 0.1]
   SteadyStateOptions steady;
 };
 

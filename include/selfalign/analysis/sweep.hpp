@@ -20,9 +20,10 @@
 
 namespace selfalign {
 
-/// n values from lo to hi inclusive, evenly spaced (n >= 1; n = 1 gives lo).
+/// n values from lo to hi inclusive, evenly spaced (1 <= n <= 1e7; n = 1 gives lo); exact ends,
+/// no overflow for ends near the largest doubles.
 std::vector<double> linear_grid(double lo, double hi, int n);
-/// n values from lo to hi inclusive, evenly spaced in log (lo, hi > 0).
+/// n values from lo to hi inclusive, evenly spaced in log (lo, hi > 0; 1 <= n <= 1e7).
 std::vector<double> log_grid(double lo, double hi, int n);
 
 /// Called as cells complete: (done, total). Called from worker threads, one call at a time.

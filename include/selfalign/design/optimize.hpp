@@ -34,15 +34,15 @@ void validate(const ActuatorLimits& limits);
 
 /// Options of the family optimisers (each uses the fields that apply to it).
 struct OptimizeOptions {
-  int order = 12;            ///< Fourier order N, >= 1
-  int segments = 4;          ///< K of the piecewise-constant family, >= 2
+  int order = 12;            ///< Fourier order N, in [1, 100]
+  int segments = 4;          ///< K of the piecewise-constant family, in [2, 64]
   /// Fourier objective: the M-segment piecewise-constant approximation (fourier_design.hpp),
-  /// >= 8.
+  /// in [8, 4096].
   int approximation_segments = 256;
-  int starts = 8;            ///< multi-starts of the local optimiser, >= 1
-  int max_evaluations = 3000;  ///< objective evaluations per local run, >= 1
-  int grid = 48;             ///< three-phase scan: grid points per acceleration axis, >= 2
-  int polish = 3;            ///< three-phase: best scan cells polished locally, >= 1
+  int starts = 8;            ///< multi-starts of the local optimiser, in [1, 1000]
+  int max_evaluations = 3000;  ///< objective evaluations per local run, in [1, 1e6]
+  int grid = 48;             ///< three-phase scan: grid points per acceleration axis, [2, 2000]
+  int polish = 3;            ///< three-phase: best scan cells polished locally, [1, 1000]
   unsigned seed = 1;         ///< seed of the deterministic random starts
   /// Relative central finite-difference step of the gradient-based (Fourier) optimiser:
   /// h_i = fd_step * max(|x_i|, max_j |x_j|), > 0.

@@ -36,10 +36,10 @@ struct DesignRequest {
   double velocity_max = 0.2;       ///< |y'~| limit [m/s], > 0
   double acceleration_max = 10;    ///< |y''~| limit [m/s^2], > 0
   double tolerance = 0;            ///< allowed Δx_d~ [m]; 0: require accumulation (Δx_d = 0)
-  int acceleration_grid = 24;      ///< candidates per acceleration axis, >= 2
-  int period_grid = 6;             ///< candidate periods, >= 1
-  int stroke_grid = 3;             ///< candidate strokes (stroke_max, 2/3, 1/3 of it), >= 1
-  int entries = 40;                ///< steady entries per candidate (Sect. 7.1), >= 2
+  int acceleration_grid = 24;      ///< candidates per acceleration axis, in [2, 200]
+  int period_grid = 6;             ///< candidate periods, in [1, 100]
+  int stroke_grid = 3;             ///< candidate strokes (stroke_max, 2/3, 1/3 of it), [1, 20]
+  int entries = 40;                ///< steady entries per candidate (Sect. 7.1), in [2, 1000]
 };
 
 /// Throws InvalidParameter naming the first field out of range.

@@ -78,8 +78,11 @@ class UniformFriction final : public FrictionMap {
 class TwoRegionFriction final : public FrictionMap {
  public:
   /// \param x_mu  start of the high-friction region [-], finite
-  /// \param width object width w [-], > 0
-  /// \param c_mu  friction ratio mu_2/mu_1 [-], > 1
+  /// \param width object width w [-], > 0, with x_mu + w finite and w >= 1e-9 |x_mu|
+  /// \param c_mu  friction ratio mu_2/mu_1 [-], > 1, with b1 = (c_mu - 1)/w <= 1e12
+  /// The last two bounds keep the transition region resolvable in double precision (a sharper
+  /// transition leaves the exact solver's arcs below the rounding of t and x); each violation
+  /// throws InvalidParameter naming the parameter(s) and the bound.
   TwoRegionFriction(double x_mu, double width, double c_mu);
 
   double bound(double x) const override;  // eq. (9)

@@ -94,6 +94,9 @@ std::span<const ConfigKey> simulate_config_keys();
 const ConfigKey* find_simulate_config_key(std::string_view name);
 /// Comma-separated list of all key names (for error messages).
 std::string simulate_config_key_list();
+/// The message for an unknown key: the closest key when it looks like a typo, and where every
+/// key is listed (one short line, unlike the full list).
+std::string unknown_config_key_hint(std::string_view name);
 /// The key's CLI flag: "--" + name with '_' replaced by '-'.
 std::string config_flag(const ConfigKey& key);
 /// One-line help: meaning, unit in both systems, default (and its SI conversion).
@@ -135,15 +138,18 @@ SimulateConfig to_dimensionless(const SimulateConfig& config, const Scales& scal
 /// out, summary and samples stay unset when not given.
 SimulateConfig resolve_simulate_config(const SimulateConfig& config);
 
-/// Where a run writes its results.
+/// Where a run writes its results; "-" is standard output.
 struct OutputPaths {
-  std::optional<std::string> trajectory;  ///< CSV path, or none
-  std::string summary;                    ///< JSON path, or "-" for stdout
+  std::optional<std::string> trajectory;  ///< CSV path or "-"; none: no CSV
+  std::optional<std::string> summary;     ///< JSON path or "-"; none: no summary
 
-  bool summary_to_stdout() const noexcept { return summary == "-"; }
+  bool summary_to_stdout() const noexcept { return summary && *summary == "-"; }
 };
-/// out as given; summary as given, else "<out without extension>.summary.json" when out is
-/// given, else "-". Throws InvalidParameter when both name the same file.
+/// out as given; summary as given, else "<out without extension>.summary.json" when out is a
+/// file, none when out is "-" (the CSV takes standard output), else "-". Throws
+/// InvalidParameter (require_output_path, atomic_file.hpp) when a path is empty, a directory,
+/// an input read so far (--config) or the samples file, when both name the same file, or when
+/// both would go to standard output. Call it before the run's work.
 OutputPaths resolve_output_paths(const SimulateConfig& config);
 
 }  // namespace selfalign

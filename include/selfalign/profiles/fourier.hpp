@@ -4,6 +4,7 @@
 ///   y(t) = c_0 + sum_{k=1..N} ( A_k cos(k w t) + B_k sin(k w t) ),   w = 2 pi / Δt,
 /// with c_0 chosen so that min y = 0. Periodic in y and y' by construction.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@ class FourierProfile final : public TableProfile {
  public:
   /// \param period  Δt [-], > 0
   /// \param cos_coeffs A_1..A_N [-], \param sin_coeffs B_1..B_N [-] (shorter one padded with 0),
-  ///        finite, not all zero. Throws InvalidParameter otherwise.
+  ///        finite, not all zero, N <= 1000. Throws InvalidParameter otherwise, and when the
+  ///        motion is not finite (a period so short that (N w)^2 A_N overflows).
   FourierProfile(double period, std::vector<double> cos_coeffs, std::vector<double> sin_coeffs);
 
   double period() const override { return period_; }
@@ -28,6 +30,10 @@ class FourierProfile final : public TableProfile {
   const std::vector<double>& cos_coeffs() const noexcept { return cos_; }
   const std::vector<double>& sin_coeffs() const noexcept { return sin_; }
   double offset() const noexcept { return offset_; }  ///< c_0 [-]
+
+  /// y and its first three derivatives at t [-], in one O(N) pass: cos/sin of k w t by the
+  /// rotation recurrence (re-seeded every 16 harmonics), on the phase of t in [0, Δt).
+  std::array<double, 4> derivatives(double t) const;
 
  private:
   double period_;

@@ -41,11 +41,14 @@ struct ExactState {
   long long period_index = 0;  ///< floor(t / Δt): segment times are period_index*Δt + begin
 };
 
-/// Places an object state in the profile (finds its period and segment).
+/// Places an object state in the profile (finds its period and segment). Throws
+/// InvalidParameter for a non-finite state or |t| beyond 1e15 periods.
 ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object);
 
 /// Advances state to time t_end (>= state.object.t), calling sink (if any) for every arc.
-/// Returns the number of arcs computed. Allocates nothing.
+/// Returns the number of arcs computed. Allocates nothing. Throws InvalidParameter for an
+/// infinite t_end, or a state whose segment / period_index do not hold its time (a state not
+/// made by make_exact_state or advance_exact).
 std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
                           ArcSink* sink = nullptr);
 

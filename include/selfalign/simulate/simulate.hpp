@@ -20,13 +20,25 @@ enum class Method {
 Method parse_method(const std::string& text);
 std::string to_string(Method method);
 
+/// The longest run a front door accepts, in table periods. At t = 1e8 Δt the rounding of time
+/// is 1.5e-8 Δt, still far below every event spacing of a profile resolved in double precision.
+inline constexpr double kMaxSimulatedPeriods = 1e8;
+/// The most samples (or arcs) a run keeps in memory: about 0.5 GB of trajectory and 1 GB of CSV.
+inline constexpr double kMaxRecordedSamples = 1e7;
+/// The most time steps one time-stepping run may take (tens of seconds).
+inline constexpr double kMaxTimeSteps = 1e9;
+
+/// Throws InvalidParameter(name, duration, ...) unless 0 < duration <= kMaxSimulatedPeriods
+/// table periods of length `period`; returns duration.
+double require_simulatable_duration(const std::string& name, double duration, double period);
+
 struct SimulationOptions {
   Method method = Method::exact;
   double duration = 20;     ///< simulated time after t0 [-], > 0
-  double step = 1e-4;       ///< time-stepping step h [-], > 0 (unused by the exact solver)
+  double step = 1e-4;       ///< time-stepping step h [-], in (0, Δt] (unused by the exact solver)
   double theta = 0.5;       ///< time-stepping theta, in [0, 1]
   double output_step = 0;   ///< spacing of recorded samples [-]; 0: h (time-stepping) or Δt/200
-  bool record = true;       ///< false: only the summary (no trajectory)
+  bool record = true;       ///< false: only the summary (no trajectory): far cheaper
 };
 
 struct SimulationResult {
@@ -34,12 +46,15 @@ struct SimulationResult {
   ObjectState final_state;         ///< state at t0 + duration [-]
   std::size_t work = 0;            ///< arcs (exact) or steps (time-stepping) computed
   double mean_velocity_last_period = 0;  ///< (x(t_end) - x(t_end - Δt))/Δt [-]; NaN if shorter
-  double stick_fraction = 0;       ///< fraction of recorded samples in stick [-]
+  double stick_fraction = 0;       ///< fraction of recorded samples in stick [-]; NaN if none
 };
 
-/// Simulates from `initial` over options.duration. Throws InvalidParameter on bad options, or
-/// when method = exact is asked of a profile that is not piecewise constant or a friction map
-/// that is not piecewise affine.
+/// Simulates from `initial` over options.duration. Throws InvalidParameter on bad options
+/// (duration beyond kMaxSimulatedPeriods periods; a recorded trajectory of more than
+/// kMaxRecordedSamples samples, naming output_step; more than kMaxTimeSteps steps or a step
+/// longer than the period, naming step), or when method = exact is asked of a profile that is
+/// not piecewise constant or a friction map that is not piecewise affine. Every size is checked
+/// before anything is allocated.
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const ObjectState& initial, const SimulationOptions& options);
 
