@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "selfalign/analysis/stick_position.hpp"
@@ -61,9 +63,108 @@ TEST(StickPosition, AccumulationForEveryEntryIsTheMapAtXMu) {
   const TwoRegionFriction friction(0.0, 0.05, 2.5);
   const ThreePhaseProfile accumulating({1.0, 0.084, 2.3, 1.3}), overshooting({1.0, 0.084, 1.8, 1.1});
   const StickPositionMap a(accumulating, friction), o(overshooting, friction);
-  EXPECT_TRUE(a.accumulates_for_every_entry());
+  EXPECT_EQ(a.accumulates_for_every_entry(), std::optional<bool>(true));
   EXPECT_LT(a(0.0), a.fixed_point());
-  EXPECT_FALSE(o.accumulates_for_every_entry());
+  EXPECT_EQ(o.accumulates_for_every_entry(), std::optional<bool>(false));
   EXPECT_LT(o.slope_at_fixed_point(), 0.0);  // cos(theta) < 0: iterates overshoot
   EXPECT_GT(o(0.5 * o.fixed_point()), o.fixed_point());
+}
+
+TEST(StickPosition, EveryEntryConditionAppliesOnlyWhereItsDerivationHolds) {
+  // Issue 9 / F02: Sect. 7.3's condition x_{n+1}(x_mu) < x_stick,min was reported true where
+  // it means nothing. Its derivation (docs/accumulation.md) needs x_stick,min to exist
+  // (max|y''| <= c_mu, eq. 41), to be the map's fixed point (y2'' >= y3'', eq. 60) and to lie
+  // beyond x_mu (y2'' > 1); outside that it is "not applicable", with the reason.
+  struct Case {
+    ThreePhaseParameters p;
+    double width, c_mu;
+    const char* reason;  // a phrase of the reason
+  };
+  const Case outside[] = {
+      // The F02 reproducer: peak 8.5 > c_mu 4.74 (x_stick,min does not exist).
+      {{0.60597757985852, 0.012412335492963484, 8.508483283348117, 1.2561507198610682},
+       0.06676181403696926, 4.739200637052614, "> c_mu"},
+      {{1.0, 0.084, 1.3, 2.3}, 0.05, 2.5, "y3'' > y2''"},  // a3 > a2
+      {{1.0, 0.01, 0.9, 0.8}, 0.05, 2.5, "<= 1"},          // held wherever it stops
+  };
+  for (const Case& c : outside) {
+    const TwoRegionFriction friction(0.008, c.width, c.c_mu);
+    const StickPositionMap map(ThreePhaseProfile(c.p), friction);
+    const EveryEntryAccumulation e = map.every_entry_accumulation();
+    EXPECT_FALSE(e.applies) << c.reason;
+    EXPECT_EQ(map.accumulates_for_every_entry(), std::nullopt) << c.reason;
+    EXPECT_NE(e.reason.find(c.reason), std::string::npos) << e.reason;
+  }
+  // Inside the domain it is the paper's condition (Fig. 16 settings, Sect. 7.2).
+  const TwoRegionFriction friction(0.0, 0.05, 2.5);
+  const StickPositionMap upper(ThreePhaseProfile({1.0, 0.084, 2.3, 1.3}), friction);
+  const StickPositionMap lower(ThreePhaseProfile({1.0, 0.084, 1.8, 1.1}), friction);
+  EXPECT_TRUE(upper.every_entry_accumulation().applies);
+  EXPECT_TRUE(upper.every_entry_accumulation().reason.empty());
+  EXPECT_EQ(upper.accumulates_for_every_entry(), upper(0.0) < upper.fixed_point());
+  EXPECT_TRUE(lower.every_entry_accumulation().applies);
+  EXPECT_EQ(lower.accumulates_for_every_entry(), lower(0.0) < lower.fixed_point());
+}
+
+namespace {
+// Where the exact solver has the object at phase t1 of periods 1..n (the end of its rest
+// through [t0, t1]), from rest at x1 at t = 0. The look is formed as the solver forms its
+// switch times (n Δt + begin, Δt the segments' own period), so it lands on the switch.
+std::vector<double> rest_positions_at_t1(const ThreePhaseProfile& profile,
+                                         const TwoRegionFriction& friction, double x1, int n) {
+  const PiecewiseConstantProfile& pwc = *profile.piecewise_constant();
+  const ExactSetup setup{pwc, *friction.piecewise_affine()};
+  ExactState s = make_exact_state(setup, {0, x1, 0});
+  const double t1 = pwc.segments()[1].begin;  // [t0, t1]: y'' = 0; [t1, t2]: y'' = -y2''
+  std::vector<double> x;
+  for (int k = 1; k <= n; ++k) {
+    advance_exact(setup, s, static_cast<double>(k) * pwc.period() + t1);
+    EXPECT_EQ(s.object.xd, 0.0) << "not at rest at t1 of period " << k;
+    x.push_back(s.object.x);
+  }
+  return x;
+}
+}  // namespace
+
+TEST(StickPosition, DiagonalStickPositionsContractByCosThetaCoshTheta) {
+  // Issue 9 / F03: on the diagonal y3'' = y2'' = 2.45 the stop of eq. (59) lies below
+  // x_stick,min, where m < y3'': the object slides back (hyperbolic arcs about x_stick,min
+  // under +y3'', about b2/b1 under y'' = 0) and rests before t1. The stick positions converge
+  // to x_stick,min with slope cos θ cosh(sqrt(b1) T3) (docs/accumulation.md, derived by hand),
+  // not cos θ: 0.46 per period. Second method: the exact event-driven solver.
+  const ThreePhaseParameters p{1.0, 0.084, 2.45, 2.45};
+  const ThreePhaseProfile profile(p);
+  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const StickPositionMap map(profile, friction);
+  const double c1 = map.fixed_point();
+  EXPECT_NEAR(c1, stick_position_min(friction, 2.45), 1e-12);  // eq. (60) = eq. (41)
+  const ThreePhaseSolution& r = profile.solution();
+  const double omega = std::sqrt(friction.b1());
+  const double lambda = std::cos(omega * (r.t2 - r.t1)) * std::cosh(omega * (r.t3 - r.t2));
+  // One closed form evaluated twice: rounding only.
+  EXPECT_NEAR(map.contraction_at_fixed_point(), lambda, 1e-12);
+  EXPECT_GT(lambda, map.slope_at_fixed_point());  // 0.46 against cos θ = 0.22
+
+  const double x1 = 0.5 + 0.1 * (c1 - 0.5);
+  ASSERT_TRUE(map.proves_accumulation_from(x1));
+  const int n = 10;
+  const std::vector<double> exact = rest_positions_at_t1(profile, friction, x1, n);
+  // The stop of eq. (59) itself is not where the object rests.
+  EXPECT_GT(std::abs(exact[0] - map(x1)), 1e-4);
+  // Event-located arcs against the composed closed forms: rounding of O(1) numbers, a few
+  // ulps per arc; kSameArcs = 1e-12 leaves room.
+  constexpr double kSameArcs = 1e-12;
+  double x = x1, before = c1 - x1;
+  for (int k = 0; k < n; ++k) {
+    x = map.next_stick_position(x);
+    EXPECT_NEAR(exact[k], x, kSameArcs) << "period " << k + 1;
+    EXPECT_LT(exact[k], c1);
+    const double after = c1 - exact[k];
+    EXPECT_LT(after, before);  // monotone approach from below
+    before = after;
+  }
+  // The ratio of successive distances tends to the slope; its deviation is O(c1 - x_n), about
+  // 1e-3 relative after 10 periods; kNearSlope = 1e-3 absolute.
+  constexpr double kNearSlope = 1e-3;
+  EXPECT_NEAR((c1 - exact[n - 1]) / (c1 - exact[n - 2]), lambda, kNearSlope);
 }

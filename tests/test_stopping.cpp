@@ -1,7 +1,9 @@
 // Tests for analysis/stopping.hpp and analysis/positioning.hpp (Sect. 7).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/analysis/stick_position.hpp"
@@ -20,6 +22,23 @@ double brute_force_end(const ThreePhaseProfile& profile, const TwoRegionFriction
                         std::llround(periods * profile.period() / h));
   return s.object.x;
 }
+// Over the exact arcs, for each (time, target): the lowest x from that time on, and the first
+// time x reaches the target (arcs are monotone in x, so their ends bound them).
+struct LowestAfter final : ArcSink {
+  std::vector<double> from, targets, lowest, first_crossing;
+  LowestAfter(std::vector<double> times, std::vector<double> xs)
+      : from(std::move(times)),
+        targets(std::move(xs)),
+        lowest(from.size(), 1e300),
+        first_crossing(from.size(), 1e300) {}
+  void on_arc(const Arc& a) override {
+    for (std::size_t k = 0; k < from.size(); ++k) {
+      if (a.t1 > from[k]) lowest[k] = std::min({lowest[k], a.t0 >= from[k] ? a.x0 : a.x1, a.x1});
+      if (first_crossing[k] == 1e300 && std::max(a.x0, a.x1) >= targets[k])
+        first_crossing[k] = a.t0;
+    }
+  }
+};
 }  // namespace
 
 TEST(Stopping, PermanentStickIsHeldForGood) {
@@ -57,6 +76,42 @@ TEST(Stopping, AccumulationEndsAtStickPositionMin) {
   advance_exact(setup, s, 60);
   EXPECT_LE(s.object.x, run.x_stick_min + 1e-15);
   EXPECT_GT(s.object.x, run.x_stick_min - 1e-12);
+}
+
+TEST(Stopping, DiagonalAccumulatesLikeItsNeighbour) {
+  // Issue 9 / F03: on the diagonal y3'' = y2'' the stick positions converge geometrically
+  // (slope cos θ cosh(sqrt(b1) T3) = 0.46, tests/test_stick_position.cpp) to x_stick,min. That
+  // is accumulation, as for y3'' = y2'' - 1e-10; it was reported as a permanent stick once an
+  // iterate rounded onto x_stick,min. The classification must not depend on rounding: both
+  // accumulate, at x_stick,min, and reach each p in the same number of periods.
+  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const ThreePhaseProfile diagonal({1.0, 0.084, 2.45, 2.45});
+  const ThreePhaseProfile neighbour({1.0, 0.084, 2.45, 2.4499999999});
+  const StoppingRun d = stopping_run(diagonal, friction, {0, 0, 0});
+  const StoppingRun n = stopping_run(neighbour, friction, {0, 0, 0});
+  for (const StoppingRun* run : {&d, &n}) {
+    EXPECT_EQ(run->kind, StopKind::accumulation);
+    EXPECT_TRUE(std::isinf(run->process_time));
+    // eq. (60) = eq. (41) for the same peak 2.45: two closed forms, rounding only.
+    EXPECT_NEAR(run->end_position, stick_position_min(friction, 2.45), 1e-12);
+  }
+  EXPECT_EQ(d.periods_to_fraction, n.periods_to_fraction);
+  // A second method: the exact solution over 60 periods creeps up to x_stick,min from below
+  // (0.46^60 of the distance is far below rounding) and never passes it.
+  const ExactSetup setup{*diagonal.piecewise_constant(), *friction.piecewise_affine()};
+  ExactState s = make_exact_state(setup, {0, 0, 0});
+  std::vector<double> targets;
+  for (double p : StoppingOptions{}.fractions) targets.push_back(0.5 + p * (d.x_stick_min - 0.5));
+  LowestAfter watch(d.time_to_fraction, targets);
+  advance_exact(setup, s, 60, &watch);
+  EXPECT_LE(s.object.x, d.x_stick_min + 1e-15);
+  EXPECT_GT(s.object.x, d.x_stick_min - 1e-12);
+  // The time to p is when x reaches x_mu + p (x_stick,min - x_mu) for good: each stop of
+  // eq. (59) passes it before the slide back, so the first crossing would be too early.
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    EXPECT_GE(watch.lowest[k], targets[k]) << "p index " << k;
+    EXPECT_LT(watch.first_crossing[k], d.time_to_fraction[k]) << "p index " << k;
+  }
 }
 
 TEST(Stopping, EndPositionsOfExactAndTimeSteppingAgreeWithinOrderH) {

@@ -1,7 +1,9 @@
 // `selfalign accumulation`: the stick-position map of eq. (59) for the three-phase profile on
 // the two-region table (Sect. 7.3, Fig. 18): its fixed point (eq. 60) against x_stick,min
-// (eq. 41), its slope there, the basin of monotone accumulation, the Sect. 7.3 condition
-// x_{n+1}(x_mu) < x_stick,min for accumulation from every entry, and the map iterated from x1.
+// (eq. 41), its slope there, the contraction of the stick positions, the basin of monotone
+// accumulation, the Sect. 7.3 condition x_{n+1}(x_mu) < x_stick,min for accumulation from every
+// entry (null, with the reason, where its derivation does not hold), and the map iterated
+// from x1.
 
 #include <memory>
 #include <string>
@@ -82,9 +84,15 @@ json accumulation_json(const SimulateModel& model, const StickPositionMap& map, 
   j["x_stick_min"] = length_or_null(u, x_stick_min);       // eq. (41)
   j["fixed_point_minus_x_stick_min"] = length_or_null(u, map.fixed_point() - x_stick_min);
   j["slope_at_fixed_point"] = map.slope_at_fixed_point();  // cos θ [-]
+  // of the stick positions (eq. 59, plus the slide back on the diagonal) [-]
+  j["contraction_at_fixed_point"] = number_or_null(map.contraction_at_fixed_point());
   j["basin_lower_bound"] = u.length(map.basin_lower_bound());
   j["map_at_x_mu"] = u.length(map(f.x_mu()));              // eq. (59) at x_n = x_mu
-  j["accumulates_for_every_entry"] = map.accumulates_for_every_entry();
+  // Sect. 7.3, where its derivation holds (docs/accumulation.md); else null and the reason.
+  const EveryEntryAccumulation every = map.every_entry_accumulation();
+  j["accumulates_for_every_entry"] = every.applies ? json(every.accumulates) : json(nullptr);
+  j["accumulation_condition_applies"] = every.applies;
+  j["accumulation_condition_reason"] = every.applies ? json(nullptr) : json(every.reason);
   j["iterates"] = iterates_json(map, f, x_stick_min, x1, u);
   return j;
 }
@@ -111,9 +119,15 @@ std::string accumulation_table(const json& j, UnitSystem units) {
   t.row("x_stick_min (eq. 41)", with_unit(j["x_stick_min"]));
   t.row("difference", with_unit(j["fixed_point_minus_x_stick_min"]));
   t.row("slope_at_fixed_point", table_text(j["slope_at_fixed_point"]));
+  t.row("contraction_at_fixed_point", j["contraction_at_fixed_point"].is_null()
+                                          ? std::string("-")
+                                          : table_text(j["contraction_at_fixed_point"]));
   t.row("basin_lower_bound", with_unit(j["basin_lower_bound"]));
   t.row("map_at_x_mu", with_unit(j["map_at_x_mu"]));
-  t.row("accumulates_for_every_entry", j["accumulates_for_every_entry"].get<bool>() ? "yes" : "no");
+  const json& every = j["accumulates_for_every_entry"];
+  t.row("accumulates_for_every_entry",
+        every.is_null() ? "not applicable: " + j["accumulation_condition_reason"].get<std::string>()
+                        : (every.get<bool>() ? "yes" : "no"));
   t.row("iterates", table_text(it["iterations"]) + " from x1 = " + with_unit(it["x1"]) +
                         " to " + with_unit(it["positions"].back()) +
                         (it["passed_fixed_point"].get<bool>() ? " (past the fixed point)" : ""));
@@ -126,6 +140,8 @@ std::string accumulation_table(const json& j, UnitSystem units) {
 }
 
 void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
+  constexpr int kMaxGridPoints = 1'000'000;  // a map CSV of ~60 MB
+  if (f.n < 1 || f.n > kMaxGridPoints) throw InvalidParameter("n", f.n, "must be in [1, 1e6]");
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
   const SimulateModel model = stopping_model(config);
@@ -133,14 +149,13 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
   const StickPositionMap map(three_phase_profile(model), friction);
   const OutputUnits u = model.output_units();
   const double x_mu = friction.x_mu();
-  const double x1 = f.x1_option->count() > 0 ? model_length(model, require_finite("x1", f.x1))
+  const double x1 = f.x1_option->count() > 0 ? model_length(model, require_moderate("x1", f.x1))
                                              : x_mu;
   // The CSV grid in the run's units, as given.
-  const double from = f.from_option->count() > 0 ? require_finite("from", f.from)
+  const double from = f.from_option->count() > 0 ? require_moderate("from", f.from)
                                                  : u.length(x_mu);
-  const double to = f.to_option->count() > 0 ? require_finite("to", f.to)
+  const double to = f.to_option->count() > 0 ? require_moderate("to", f.to)
                                              : u.length(x_mu + friction.width());
-  if (f.n < 1) throw InvalidParameter("n", f.n, "must be >= 1");
   const std::vector<double> grid = linear_grid(from, to, f.n);
   const json report = accumulation_json(model, map, x1);
   deliver_csv_and_report(paths, paths.csv ? map_csv(model, map, grid) : "", report,
@@ -154,8 +169,9 @@ void add_accumulation_command(CLI::App& app) {
       "accumulation",
       "The stick-position map x_n -> x_{n+1} of eq. (59) in the friction transition region "
       "(Sect. 7.3, Fig. 18) for the three-phase profile: fixed point (eq. 60) = x_stick,min "
-      "(eq. 41), slope there, basin, the condition x_{n+1}(x_mu) < x_stick,min for "
-      "accumulation from every entry, and the map iterated from --x1. --out: the map on a grid, "
+      "(eq. 41), slope there, contraction of the stick positions, basin, the condition "
+      "x_{n+1}(x_mu) < x_stick,min for accumulation from every entry (null with a reason where "
+      "its derivation does not hold), and the map iterated from --x1. --out: the map on a grid, "
       "CSV x_n,x_next,diagonal.");
   auto flags = add_stopping_config_flags(
       *sub,
@@ -182,7 +198,7 @@ void add_accumulation_command(CLI::App& app) {
                                  "last x_n of the CSV grid" + unit + ". Default: x_mu + width")
                      ->type_name("NUMBER")
                      ->group("Stick-position map");
-  sub->add_option("--n", f->n, "number of grid points, >= 1. Default: " + std::to_string(f->n))
+  sub->add_option("--n", f->n, "number of grid points, in [1, 1e6]. Default: " + std::to_string(f->n))
       ->type_name("N")
       ->group("Stick-position map");
   sub->callback([flags, f] { run_accumulation(*flags, *f); });

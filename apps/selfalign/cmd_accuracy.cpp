@@ -126,7 +126,7 @@ void add_accuracy_command(CLI::App& app) {
                                       "instead of writing <stem>.summary.json)")
       ->group("Output");
   sub->add_option("--entries", f->entries,
-                  "number N of steady-state entries x_0s, >= 1. Default: " +
+                  "number N of steady-state entries x_0s, in [1, 1e5]. Default: " +
                       std::to_string(f->entries))
       ->type_name("N")
       ->group("Solver");

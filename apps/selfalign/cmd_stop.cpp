@@ -1,8 +1,8 @@
 // `selfalign stop`: one stopping run (Sect. 7). The object walks from (t0, x0, v0) into the
 // friction transition region of the two-region table and stops for good: by permanent stick
 // (eq. 40) or by accumulation of its stick positions at x_stick,min (eqs. 59, 60), reached only
-// as t -> inf; with the times to reach x_mu + p (x_stick,min - x_mu) (Sect. 7.3). With --out,
-// the trajectory of the run as a phase portrait (Fig. 16).
+// as t -> inf; with the times to reach x_mu + p (x_stick,min - x_mu) for good (Sect. 7.3). With
+// --out, the trajectory of the run as a phase portrait (Fig. 16).
 
 #include <algorithm>
 #include <cmath>
@@ -133,8 +133,9 @@ void add_stop_command(CLI::App& app) {
       "stop",
       "One stopping run on the two-region table (Sect. 7): from (t0, x0, v0) until the object "
       "sticks for good (eq. 40) or its stick positions provably accumulate at x_stick,min "
-      "(eqs. 41, 59, 60); times to reach x_mu + p (x_stick,min - x_mu). --out: the trajectory "
-      "CSV t,x,x_dot,stick (Fig. 16). Needs a piecewise-constant table acceleration.");
+      "(eqs. 41, 59, 60); times to reach x_mu + p (x_stick,min - x_mu) for good. --out: the "
+      "trajectory CSV t,x,x_dot,stick (Fig. 16). Needs a piecewise-constant table "
+      "acceleration.");
   auto flags = add_stopping_config_flags(
       *sub,
       {{"out", "trajectory CSV t,x,x_dot,stick (Fig. 16) from t0 to the stop (accumulation: to "
@@ -148,7 +149,7 @@ void add_stop_command(CLI::App& app) {
       ->group("Output");
   sub->add_option("--fractions", f->fractions,
                   "fractions p in [0, 1]: report when x >= x_mu + p (x_stick,min - x_mu) is "
-                  "first reached. Default: 0.99,0.999")
+                  "reached for good (the last crossing after slides back). Default: 0.99,0.999")
       ->delimiter(',')
       ->type_name("LIST")
       ->group("Solver");

@@ -19,7 +19,7 @@ namespace {
 using nlohmann::json;
 using D = Dimension;
 
-constexpr int kDefaultMaxPeriods = 300;  // a stop takes a few periods (Sect. 7.3: at most 7)
+constexpr int kDefaultMaxPeriods = 300;  // a stop takes a few periods (Sect. 7.3: at most 8)
 
 struct PositioningFlags {
   std::shared_ptr<SweepFlags> common;
@@ -120,7 +120,7 @@ void add_sweep_positioning_command(CLI::App& sweep) {
   f->common = add_sweep_flags(*sub);
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->add_option("--entries", f->entries,
-                  "steady-state entries x_0s per cell, >= 1. Default: " +
+                  "steady-state entries x_0s per cell, in [1, 1e5]. Default: " +
                       std::to_string(f->entries))
       ->type_name("N")
       ->group("Sweep");

@@ -63,7 +63,8 @@ d_1..d_K, a_1..a_K; Fourier: A_1..A_N, B_1..B_N), the limits, the optimum's max 
       .def_readonly("max_velocity", &OptimizationResult::max_velocity, "max |y'| [-]")
       .def_readonly("max_acceleration", &OptimizationResult::max_acceleration, "max |y''| [-]")
       .def_readonly("evaluations", &OptimizationResult::evaluations, "objective evaluations")
-      .def_readonly("starts", &OptimizationResult::starts, "local runs")
+      .def_readonly("starts", &OptimizationResult::starts,
+                    "local runs (piecewise-constant: over the chain K = 2 .. K)")
       .def_readonly("message", &OptimizationResult::message, "what happened");
 
   m.def("optimize_three_phase", &optimize_three_phase, py::arg("limits"),
@@ -75,7 +76,9 @@ d_1..d_K, a_1..a_K; Fourier: A_1..A_N, B_1..B_N), the limits, the optimum's max 
         return optimize_piecewise_constant(l, o);
       },
       py::arg("limits"), py::arg("options") = OptimizeOptions{},
-      "Optimum of the K-segment piecewise-constant family (K = options.segments).");
+      "Optimum of the K-segment piecewise-constant family (K = options.segments), searched after "
+      "K - 1, ..., 2 and started from the (K-1) optimum (and, for K = 3, the three-phase one), "
+      "so v_bar never falls as K grows.");
   m.def(
       "optimize_fourier",
       [](const ActuatorLimits& l, const OptimizeOptions& o) { return optimize_fourier(l, o); },

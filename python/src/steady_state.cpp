@@ -62,12 +62,13 @@ void bind_steady_options(py::module_& m) {
       .def_readwrite("max_periods", &SteadyStateOptions::max_periods,
                      "periods simulated at most before giving up (>= 2)")
       .def_readwrite("velocity_tol", &SteadyStateOptions::velocity_tol,
-                     "|P(v) - v| accepted as steady [-] (exact solver)")
+                     "estimated error |x'_0s - v*| = |P(v) - v| / (1 - λ) accepted as steady, "
+                     "relative to 1 + |v| [-] (exact solver)")
       .def_readwrite("steps_per_period", &SteadyStateOptions::steps_per_period,
                      "time-stepping (profiles the exact solver cannot take): h = Δt / this")
       .def_readwrite("theta", &SteadyStateOptions::theta, "time-stepping theta")
       .def_readwrite("stepping_tol", &SteadyStateOptions::stepping_tol,
-                     "time-stepping: |P(v) - v| accepted [-]; 0: 10 h")
+                     "time-stepping: velocity_tol's role [-]; 0: 10 h")
       .def("__repr__", [](const SteadyStateOptions& o) {
         return Repr("SteadyStateOptions")("max_periods", o.max_periods)(
                    "velocity_tol", o.velocity_tol)("steps_per_period", o.steps_per_period)(
@@ -88,6 +89,10 @@ void bind_steady_state(py::module_& m) {
       .def_readonly("method", &SteadyState::method, "the solver used")
       .def_readonly("x_dot_0s", &SteadyState::x_dot_0s,
                     "steady-state x' at the profile's t0 (phase 0) [-]")
+      .def_readonly("x_dot_0s_error", &SteadyState::x_dot_0s_error,
+                    "estimated |x'_0s - v*|: the residual |P(v) - v| (at least the period "
+                    "map's rounding) over 1 - λ, λ the map's secant slope [-]; inf when not "
+                    "converged")
       .def_readonly("phase", &SteadyState::phase,
                     "phase of the steady-state initial condition in [0, Δt) [-]")
       .def_readonly("v_bar", &SteadyState::v_bar,
@@ -110,7 +115,8 @@ void bind_steady_state(py::module_& m) {
         R"doc(
 Steady state on the uniform table (friction bound 1): the unique periodic velocity response
 (Sect. 6.2), found by iterating the period map P(v) = x'(t0 + Δt) and secant steps on
-P(v) - v; its average velocity v̄ (eq. 10), objective f (eq. 11) and a posteriori case.
+P(v) - v, stopped on the estimated error |P(v) - v| / (1 - λ) (x_dot_0s_error), not on the
+residual; its average velocity v̄ (eq. 10), objective f (eq. 11) and a posteriori case.
 Exact solver where the table acceleration is piecewise constant, time-stepping otherwise.
 Raises InvalidParameter on bad options. Runs without the GIL.)doc");
 
@@ -118,7 +124,8 @@ Raises InvalidParameter on bad options. Runs without the GIL.)doc");
   m.def(
       "objective_f",
       [](const py::object& v_bar, double c) {
-        return map_elementwise<double>(v_bar, [c](double v) { return objective_f(v, c); });
+        return map_elementwise<double>(v_bar, [c](double v) { return objective_f(v, c); },
+                                       "v_bar");
       },
       py::arg("v_bar"), py::arg("c") = kObjectiveScale,
       "Objective f = 1/(c v̄^2) of eq. (11) (float or ndarray); +inf where v̄ = 0.");

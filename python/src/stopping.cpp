@@ -2,6 +2,8 @@
 // eqs. (40), (41), the stick-position map (59)-(60) and stopping runs.
 #include "selfalign/analysis/stopping.hpp"
 
+#include <pybind11/stl.h>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "repr.hpp"
@@ -32,7 +34,9 @@ The stick-position map of eq. (59) for a three-phase profile on a two-region tab
   x_{n+1} = c2 + sqrt((K + d cos θ)^2 + (d sin θ)^2),   d = x_n - c1,
   c1 = (b2 + a2)/b1,  c2 = (b2 - a3)/b1,  K = (a2 + a3)/b1,  θ = sqrt(b1) (t2 - t1),
 with fixed point c1 (eq. 60) and slope cos θ there (docs/accumulation.md). Calling the map
-works elementwise on floats and ndarrays.)doc")
+works elementwise on floats and ndarrays. next_stick_position adds the slide back that follows
+a stop where friction cannot hold the object (m < a3; on the diagonal a3 = a2 at every stop
+below x_stick,min).)doc")
       .def(py::init<const ThreePhaseProfile&, const TwoRegionFriction&>(), py::arg("profile"),
            py::arg("friction"))
       .def(
@@ -46,11 +50,35 @@ works elementwise on floats and ndarrays.)doc")
            "d x_{n+1}/d x_n at the fixed point: cos θ [-]")
       .def("basin_lower_bound", &StickPositionMap::basin_lower_bound,
            "x_{n+1}(x) < fixed point iff x > this bound (for x < fixed point) [-]")
+      .def(
+          "next_stick_position",
+          [](const StickPositionMap& map, const py::object& x_n) {
+            return map_elementwise<double>(x_n,
+                                           [&](double v) { return map.next_stick_position(v); });
+          },
+          py::arg("x_n"),
+          "Where an object at rest at x_n through [t0, t1] rests at the next t1 [-]: the stop of "
+          "eq. (59) where m there >= a3, else that stop followed by the slide back; NaN where "
+          "the motion leaves these arcs (float or ndarray).")
+      .def("contraction_at_fixed_point", &StickPositionMap::contraction_at_fixed_point,
+           "d next_stick_position/d x_n at the fixed point [-]: cos θ for a3 < a2, "
+           "cos θ cosh(sqrt(b1)(t3 - t2)) on the diagonal a3 = a2; NaN where the fixed point is "
+           "not x_stick,min.")
       .def("accumulates_for_every_entry", &StickPositionMap::accumulates_for_every_entry,
-           "Sect. 7.3: accumulation for every entry iff x_{n+1}(x_mu) < x_stick,min.")
+           "Sect. 7.3: accumulation for every entry iff x_{n+1}(x_mu) < x_stick,min; None where "
+           "the condition's derivation does not hold (accumulation_condition_reason says why).")
+      .def(
+          "accumulation_condition_applies",
+          [](const StickPositionMap& map) { return map.every_entry_accumulation().applies; },
+          "Whether Sect. 7.3's condition for every entry applies here (docs/accumulation.md).")
+      .def(
+          "accumulation_condition_reason",
+          [](const StickPositionMap& map) { return map.every_entry_accumulation().reason; },
+          "Why the condition does not apply (the failing assumption); '' where it applies.")
       .def("proves_accumulation_from", &StickPositionMap::proves_accumulation_from, py::arg("x_n"),
-           "Whether an object stuck at x_n at the start of a period provably accumulates to "
-           "the fixed point (the map's assumptions hold along the sequence).")
+           "Whether an object at rest at x_n through [t0, t1] provably accumulates to the fixed "
+           "point: the stops of eq. (59) hold and rise, or the slides back after them contract "
+           "(the conditions then hold along the whole sequence).")
       .def(
           "slip_duration",
           [](const StickPositionMap& map, const py::object& x_n) {
@@ -60,13 +88,15 @@ works elementwise on floats and ndarrays.)doc")
 }
 
 void bind_stopping_run(py::module_& m) {
-  py::enum_<StopKind>(m, "StopKind", "How a stopping run ended.")
+  py::enum_<StopKind> stop_kind(m, "StopKind", "How a stopping run ended.");
+  stop_kind
       .value("permanent_stick", StopKind::permanent_stick,
              "stuck for good at end_position (eq. 40)")
       .value("accumulation", StopKind::accumulation,
              "stick positions accumulate at end_position = x_stick,min (eq. 60)")
       .value("not_stopped", StopKind::not_stopped,
              "max_periods reached without a proof (e.g. the object never arrives)");
+  refuse_unknown_values(stop_kind, "StopKind", 3);
 
   const StoppingOptions d;
   py::class_<StoppingOptions>(m, "StoppingOptions", "Options of stopping_run().")
@@ -84,7 +114,8 @@ void bind_stopping_run(py::module_& m) {
       .def_property(
           "fractions", [](const StoppingOptions& o) { return to_array(std::vector(o.fractions)); },
           [](StoppingOptions& o, const py::object& v) { o.fractions = to_vector(v, "fractions"); },
-          "fractions p in [0, 1]: the time to reach x_mu + p (x_stick,min - x_mu) is reported")
+          "fractions p in [0, 1]: the time to reach x_mu + p (x_stick,min - x_mu) for good is "
+          "reported")
       .def("__repr__", [](const StoppingOptions& o) {
         std::string fractions;
         for (double p : o.fractions)
@@ -96,17 +127,20 @@ void bind_stopping_run(py::module_& m) {
 
   py::class_<StoppingRun> run(m, "StoppingRun", "The outcome of stopping_run().");
   run.def_readonly("kind", &StoppingRun::kind, "how the run ended")
-      .def_readonly("end_position", &StoppingRun::end_position, "where the object stops [-]")
+      .def_readonly("end_position", &StoppingRun::end_position,
+                    "where the object stops [-]; NaN when it did not stop (not_stopped)")
       .def_readonly("process_time", &StoppingRun::process_time,
-                    "T_p: time the final stick starts [-]; +inf for accumulation")
+                    "T_p: time the final stick starts [-]; +inf for accumulation; NaN when "
+                    "not_stopped")
       .def_readonly("entry_time", &StoppingRun::entry_time,
                     "first time x >= x_mu [-]; NaN if never")
       .def_readonly("x_stick_min", &StoppingRun::x_stick_min, "eq. (41) [-]");
   def_array(run, "stick_positions", &StoppingRun::stick_positions,
             "successive positions where the object came to rest at x >= x_mu [-]");
   def_array(run, "time_to_fraction", &StoppingRun::time_to_fraction,
-            "per options.fractions[k]: first time x >= x_mu + p (x_stick,min - x_mu) [-]; NaN "
-            "if not reached");
+            "per options.fractions[k]: the time from which x >= x_mu + p (x_stick,min - x_mu) "
+            "for good [-] (the first crossing where the object only moves forward, the last "
+            "after slides back as on the diagonal a2 = a3); NaN if not reached");
   def_array(run, "periods_to_fraction", &StoppingRun::periods_to_fraction,
             "per options.fractions[k]: table periods from entry to then (int)");
   run.def("__repr__", [](const StoppingRun& r) {

@@ -69,3 +69,15 @@ def test_positioning_surfaces_do_not_depend_on_threads():
     for key in one:
         np.testing.assert_array_equal(one[key], two[key])
     assert calls[-1] == (12, 12)
+
+
+def test_diagonal_cell_accumulates():
+    """Issue 9 / F03: the diagonal a2 = a3 accumulates (stick positions contract to
+    x_stick,min, docs/accumulation.md), so it counts in the periods-to-p surfaces."""
+    options = sa.PositioningOptions(entries=6, stopping=sa.StoppingOptions(max_periods=300))
+    r = sa.positioning_surfaces(PERIOD, STROKE, 0.05, 2.5, [2.45], [2.45], options=options,
+                                threads=1)
+    assert r["accumulates"][0, 0]
+    assert r["accumulating_entries"][0, 0] == 6
+    assert r["dx_d"][0, 0] == 0.0
+    assert 1 <= r["max_periods_p99"][0, 0] <= r["max_periods_p999"][0, 0]

@@ -117,3 +117,61 @@ def test_stopping_options_defaults():
         sa.stopping_run(sa.ThreePhaseProfile(PERIOD, STROKE, A2, A3),
                         sa.TwoRegionFriction(0.07, W, C_MU), sa.ObjectState(),
                         sa.StoppingOptions(fractions=[1.5]))
+
+
+def test_every_entry_condition_is_none_outside_its_derivation():
+    """Issue 9 / F02: Sect. 7.3's condition needs x_stick,min to exist (peak <= c_mu, eq. 41)
+    and to be the map's fixed point (a2 >= a3, eq. 60); elsewhere it is None, with a reason."""
+    beyond_c_mu = sa.StickPositionMap(
+        sa.ThreePhaseProfile(0.60597757985852, 0.012412335492963484, 8.508483283348117,
+                             1.2561507198610682),
+        sa.TwoRegionFriction(0.008150211493444207, 0.06676181403696926, 4.739200637052614))
+    a3_above_a2 = sa.StickPositionMap(sa.ThreePhaseProfile(PERIOD, STROKE, 1.3, 2.3),
+                                      sa.TwoRegionFriction(0.5, 0.05, 2.5))
+    for m, phrase in ((beyond_c_mu, "> c_mu"), (a3_above_a2, "y3'' > y2''")):
+        assert m.accumulates_for_every_entry() is None
+        assert m.accumulation_condition_applies() is False
+        assert phrase in m.accumulation_condition_reason()
+    inside = sa.StickPositionMap(sa.ThreePhaseProfile(PERIOD, STROKE, 2.3, 1.3),
+                                 sa.TwoRegionFriction(0.5, 0.05, 2.5))
+    assert inside.accumulation_condition_applies() is True
+    assert inside.accumulation_condition_reason() == ""
+    assert inside.accumulates_for_every_entry() is (inside(0.5) < inside.fixed_point())
+
+
+def test_diagonal_stick_positions_contract_by_cos_cosh():
+    """Issue 9 / F03: on the diagonal a2 = a3 the object slides back after each stop of eq. (59)
+    (m < a3 below x_stick,min); its stick positions contract by cos θ cosh(sqrt(b1)(t3 - t2))
+    per period (docs/accumulation.md), and a stopping run reports accumulation."""
+    a = 2.45
+    profile = sa.ThreePhaseProfile(PERIOD, STROKE, a, a)
+    friction = sa.TwoRegionFriction(0.5, 0.05, 2.5)
+    m = sa.StickPositionMap(profile, friction)
+    t1, t2, _, _ = three_phase_times(PERIOD, STROKE, a, a)
+    omega = math.sqrt(friction.b1)
+    lam = math.cos(omega * (t2 - t1)) * math.cosh(omega * (PERIOD - t2))
+    assert m.contraction_at_fixed_point() == pytest.approx(lam, rel=1e-9)
+    # Iterates of the composed arcs approach x_stick,min from below at that rate.
+    c1 = m.fixed_point()
+    x = [0.5 + 0.1 * (c1 - 0.5)]
+    for _ in range(12):
+        x.append(float(m.next_stick_position(x[-1])))
+    d = c1 - np.asarray(x)
+    assert np.all(d > 0) and np.all(np.diff(d) < 0)
+    # The ratio's deviation from the slope is O(c1 - x_n): below 1e-3 after 12 periods.
+    assert d[-1] / d[-2] == pytest.approx(lam, abs=1e-3)
+    run = sa.stopping_run(profile, friction, sa.ObjectState(0.0, 0.0, 0.0))
+    assert run.kind == sa.StopKind.accumulation
+    assert run.end_position == pytest.approx(sa.stick_position_min(friction, a),
+                                             rel=CLOSED_FORM_TOL)
+
+
+def test_a_run_that_never_stops_has_no_end_position():
+    # Issue 9: the end position of a run that never stops was 0.0 in Python (null in the CLI).
+    # On the uniform part of the table, x_mu far ahead: the object never arrives in 3 periods.
+    profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    run = sa.stopping_run(profile, sa.TwoRegionFriction(50.0, 0.05, 2.5), sa.ObjectState(),
+                          sa.StoppingOptions(max_periods=3))
+    assert run.kind == sa.StopKind.not_stopped
+    assert np.isnan(run.end_position) and np.isnan(run.process_time)
+

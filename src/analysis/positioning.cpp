@@ -13,7 +13,9 @@
 
 namespace selfalign {
 void validate(const PositioningOptions& o) {
-  if (o.entries < 1) throw InvalidParameter("entries", o.entries, "must be >= 1");
+  // Each entry is a stopping run of up to max_periods periods: bounded so a call ends.
+  if (o.entries < 1 || o.entries > 100'000)
+    throw InvalidParameter("entries", o.entries, "must be in [1, 1e5]");
   if (o.stopping.max_periods < 1)
     throw InvalidParameter("max_periods", o.stopping.max_periods, "must be >= 1");
 }

@@ -25,7 +25,8 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Watches the arcs: entry into x >= x_mu, stops at x >= x_mu, first crossings of targets.
+// Watches the arcs: entry into x >= x_mu, stops at x >= x_mu, and for each target the time
+// from which x stays at or beyond it (reset whenever an arc ends below it).
 struct StopWatch final : ArcSink {
   double x_mu;
   std::vector<double> targets;  // positions to time
@@ -49,9 +50,14 @@ struct StopWatch final : ArcSink {
   void on_arc(const Arc& a) override {
     const double x_hi = std::max(a.x0, a.x1);
     if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(a, x_mu);
-    for (std::size_t k = 0; k < targets.size(); ++k)
-      if (std::isnan(run.time_to_fraction[k]) && x_hi >= targets[k])
-        run.time_to_fraction[k] = crossing(a, targets[k]);
+    for (std::size_t k = 0; k < targets.size(); ++k) {
+      double& t = run.time_to_fraction[k];
+      if (a.x1 < targets[k]) {
+        t = kNaN;  // back below (a slide back): not arrived yet
+      } else if (std::isnan(t)) {
+        t = crossing(a, targets[k]);
+      }
+    }
     if (a.end == ArcEnd::velocity_zero) {
       last_stop_time = a.t1;
       if (a.x1 >= x_mu) run.stick_positions.push_back(a.x1);
@@ -75,25 +81,45 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
   StoppingRun r;
   r.x_stick_min = stick_position_min(friction, peak);
   r.entry_time = kNaN;
+  r.end_position = r.process_time = kNaN;  // absent until a proof of the stop is found
   r.time_to_fraction.assign(o.fractions.size(), kNaN);
   r.periods_to_fraction.assign(o.fractions.size(), -1);
   std::vector<double> targets;
   for (double p : o.fractions)
     targets.push_back(friction.x_mu() + p * (r.x_stick_min - friction.x_mu()));
 
-  // The accumulation proof needs the three-phase structure behind eq. (59).
+  // The accumulation proof needs the three-phase structure behind eq. (59). Its stick
+  // positions are where the object rests through [t0, t1], so the run looks at the object at
+  // phase t1, the end of that rest (phase 0 for other profiles): on the diagonal y3'' = y2''
+  // the object is still sliding back at phase 0 (docs/accumulation.md). The look's time is
+  // formed as the solver forms the switch's, n Δt + begin with the segments' own Δt (their
+  // durations' sum, which may differ from the profile's nominal period by rounding), so that
+  // it lands on the switch itself, not an ulp past it (where the slip under -y2'' has begun).
   const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(&profile);
   std::unique_ptr<StickPositionMap> map;
   if (three_phase) map = std::make_unique<StickPositionMap>(*three_phase, friction);
+  double phase = 0;
+  if (three_phase)
+    for (const AccelerationSegment& seg : pwc->segments())
+      if (seg.accel < 0) {  // the -y2'' segment begins at t1
+        phase = seg.begin;
+        break;
+      }
 
   const ExactSetup setup{*pwc, *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, start);
   StopWatch watch(friction.x_mu(), targets, r);
   watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
-  const double t_first = (static_cast<double>(s.period_index) + 1) * P;
+  const double P_segments = pwc->period();
+  long long n_first = s.period_index;
+  if (static_cast<double>(n_first) * P_segments + phase <= start.t) ++n_first;
   ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};
+  long long look = n_first;
+  auto advance_to_look = [&] {  // the next look (phase t1)
+    advance_exact(setup, s, static_cast<double>(look++) * P_segments + phase, &watch);
+  };
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
-    advance_exact(setup, s, t_first + k * P, &watch);  // to the next period start (phase 0)
+    advance_to_look();
     const ObjectState& obj = s.object;
     if (obj.x == previous.x && obj.xd == previous.xd) break;  // periodic orbit, not a stop
     previous = obj;
@@ -108,14 +134,16 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
       r.process_time = std::numeric_limits<double>::infinity();
     }
   }
-  // Accumulation: keep going (finite for p < 1) until every requested fraction is timed.
+  // Accumulation: keep going (finite for p < 1) until the object rests at or beyond every
+  // target below the end position. The stick positions then only rise, and every motion
+  // between two of them stays above the first, so the times recorded are final.
   if (r.kind == StopKind::accumulation)
     for (int k = 0; k < o.max_periods; ++k) {
       bool pending = false;
-      for (std::size_t i = 0; i < targets.size(); ++i)
-        pending = pending || (std::isnan(r.time_to_fraction[i]) && targets[i] < r.end_position);
+      for (double target : targets)
+        pending = pending || (s.object.x < target && target < r.end_position);
       if (!pending) break;
-      advance_exact(setup, s, s.object.t + P, &watch);
+      advance_to_look();
     }
   for (std::size_t i = 0; i < targets.size(); ++i)
     if (!std::isnan(r.time_to_fraction[i]) && !std::isnan(r.entry_time))

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numeric>
 #include <random>
+#include <string>
 
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/design/local_search.hpp"
@@ -16,17 +18,12 @@ namespace {
 
 constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
 
-// Design variables of a three-phase optimum as a K-segment profile (K >= 3): its segments,
-// the longest split in halves until there are K.
-std::vector<double> embed_three_phase(const OptimizationResult& three, int k) {
-  const auto profile = rebuild_profile(three);
-  const auto segs = profile->piecewise_constant()->segments();
-  std::vector<double> d, a;
-  for (std::size_t i = 0; i < segs.size(); ++i) {
-    const double end = i + 1 < segs.size() ? segs[i + 1].begin : profile->period();
-    d.push_back(end - segs[i].begin);
-    a.push_back(segs[i].accel);
-  }
+// Design variables of a profile with segment durations d and accelerations a as a K-segment
+// profile (K >= d.size()): the longest segment split in halves until there are K. The same
+// profile up to rounding: w_i = d_i/Δt, b_i = a_i/max|a| (piecewise_design_profile restores
+// the scale from the exact stroke). Empty when it has more than K segments.
+std::vector<double> embed_segments(std::vector<double> d, std::vector<double> a, double period,
+                                   int k) {
   while (static_cast<int>(d.size()) < k) {
     const auto i = static_cast<std::size_t>(std::max_element(d.begin(), d.end()) - d.begin());
     d[i] *= 0.5;
@@ -36,10 +33,24 @@ std::vector<double> embed_three_phase(const OptimizationResult& three, int k) {
   if (static_cast<int>(d.size()) > k) return {};
   double amax = 0;
   for (double v : a) amax = std::max(amax, std::abs(v));
+  if (!(amax > 0)) return {};
   std::vector<double> x;
-  for (double v : d) x.push_back(v / profile->period());
+  for (double v : d) x.push_back(v / period);
   for (double v : a) x.push_back(v / amax);
   return x;
+}
+
+// A three-phase optimum as a K-segment start (K >= 3).
+std::vector<double> embed_three_phase(const OptimizationResult& three, int k) {
+  const auto profile = rebuild_profile(three);
+  const auto segs = profile->piecewise_constant()->segments();
+  std::vector<double> d, a;
+  for (std::size_t i = 0; i < segs.size(); ++i) {
+    const double end = i + 1 < segs.size() ? segs[i + 1].begin : profile->period();
+    d.push_back(end - segs[i].begin);
+    a.push_back(segs[i].accel);
+  }
+  return embed_segments(std::move(d), std::move(a), profile->period(), k);
 }
 
 }  // namespace
@@ -76,15 +87,54 @@ double max_abs_velocity(const PiecewiseConstantProfile& profile) {
   return m;
 }
 
-OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const OptimizeOptions& o,
-                                               const OptimizationResult* three_phase_start) {
-  validate(l);
-  validate(o);
+namespace {
+
+// Progress over the chain K = 2 .. K_max: each level reports runs as done out of the chain's
+// total (every level counted as `per_level` runs; a level with fewer completes its share).
+struct ChainProgress {
+  const std::function<void(int, int)>* report = nullptr;
+  int per_level = 0, total = 0;
+  int offset(int k) const { return (k - 2) * per_level; }
+};
+
+OptimizationResult optimize_segments(const ActuatorLimits& l, const OptimizeOptions& o, int k,
+                                     const OptimizationResult& three,
+                                     const ChainProgress& progress) {
   OptimizationResult r;
   r.family = "piecewise-constant";
   r.limits = l;
-  const int k = o.segments;
   const auto n = static_cast<std::size_t>(2 * k);
+
+  // The warm start: the (K-1)-segment optimum, one segment split in two. The K family holds
+  // every (K-1) profile, so with that start (which local_search keeps if nothing beats it) the
+  // optimum never falls as K grows (issue 9). K = 3 also starts from the three-phase optimum.
+  std::vector<std::vector<double>> starts;
+  std::string warm;
+  if (k > 2) {
+    const OptimizationResult smaller = optimize_segments(l, o, k - 1, three, progress);
+    r.evaluations += smaller.evaluations;
+    r.starts += smaller.starts;
+    if (smaller.feasible) {
+      const auto m = smaller.parameters.size() / 2;
+      std::vector<double> x = embed_segments(
+          std::vector<double>(smaller.parameters.begin(),
+                              smaller.parameters.begin() + static_cast<long>(m)),
+          std::vector<double>(smaller.parameters.begin() + static_cast<long>(m),
+                              smaller.parameters.end()),
+          l.period, k);
+      if (!x.empty()) {
+        starts.push_back(std::move(x));
+        warm = "the " + std::to_string(k - 1) + "-segment optimum";
+      }
+    }
+  }
+  if (k == 3 && three.feasible) {
+    std::vector<double> x = embed_three_phase(three, k);
+    if (!x.empty()) {
+      starts.push_back(std::move(x));
+      warm += std::string(warm.empty() ? "" : " and ") + "the three-phase optimum";
+    }
+  }
 
   LocalSearchProblem problem;
   problem.lower.assign(n, -1.0);
@@ -110,22 +160,6 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
     return e;
   };
 
-  std::vector<std::vector<double>> starts;
-  OptimizationResult three;
-  if (k >= 3) {
-    if (three_phase_start && three_phase_start->feasible) {
-      three = *three_phase_start;
-    } else {
-      OptimizeOptions q = o;
-      q.progress = nullptr;
-      three = optimize_three_phase(l, q);
-      r.evaluations += three.evaluations;
-    }
-    if (three.feasible) {
-      std::vector<double> x = embed_three_phase(three, k);
-      if (!x.empty()) starts.push_back(std::move(x));
-    }
-  }
   std::mt19937 rng(o.seed);
   std::uniform_real_distribution<double> uw(0.1, 1.0), ub(-1.0, 1.0);
   while (static_cast<int>(starts.size()) < o.starts) {
@@ -139,9 +173,15 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
     starts.push_back(std::move(x));
   }
 
-  const LocalSearchResult best = local_search(problem, starts, o.progress);
+  std::function<void(int, int)> level_progress;
+  if (progress.report && *progress.report)
+    level_progress = [&progress, k](int done, int total) {
+      const int share = total > 0 ? done * progress.per_level / total : progress.per_level;
+      (*progress.report)(progress.offset(k) + share, progress.total);
+    };
+  const LocalSearchResult best = local_search(problem, starts, level_progress);
   r.evaluations += best.evaluations;
-  r.starts = best.runs;
+  r.starts += best.runs;
   if (!best.feasible) {
     r.message = infeasible_message(std::to_string(k) + "-segment profile", best);
     return r;
@@ -159,9 +199,38 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
   r.feasible = trusted_v_bar(st, r.max_velocity, l.period) > 0;
   r.message = r.feasible ? std::to_string(k) + "-segment optimum by LN_COBYLA from " +
                                std::to_string(best.runs) + " starts" +
-                               (three.feasible ? " (one the three-phase optimum)" : "")
+                               (warm.empty() ? "" : " (warm: " + warm + ")")
                          : "no " + std::to_string(k) +
                                "-segment profile moves the object forward within the limits";
+  return r;
+}
+
+}  // namespace
+
+OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const OptimizeOptions& o,
+                                               const OptimizationResult* three_phase_start) {
+  validate(l);
+  validate(o);
+  const int k = o.segments;
+  OptimizationResult three;
+  int evaluations = 0;
+  if (k >= 3) {
+    if (three_phase_start && three_phase_start->feasible) {
+      three = *three_phase_start;
+    } else {
+      OptimizeOptions q = o;
+      q.progress = nullptr;
+      three = optimize_three_phase(l, q);
+      evaluations += three.evaluations;
+    }
+  }
+  ChainProgress progress;
+  progress.report = &o.progress;
+  progress.per_level = std::max(o.starts, 2);
+  progress.total = (k - 1) * progress.per_level;
+  OptimizationResult r = optimize_segments(l, o, k, three, progress);
+  r.evaluations += evaluations;
+  if (o.progress) o.progress(progress.total, progress.total);
   return r;
 }
 

@@ -19,7 +19,7 @@
 namespace selfalign {
 
 struct PositioningOptions {
-  int entries = 100;          ///< number N of steady-state entries, >= 1
+  int entries = 100;          ///< number N of steady-state entries, in [1, 1e5]
   StoppingOptions stopping;   ///< per entry
   /// Skip the remaining entries once one does not stop (Δx_d is then undefined anyway);
   /// positioning_surfaces sets it.

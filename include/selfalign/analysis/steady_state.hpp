@@ -7,8 +7,11 @@
 /// period map P(v) = x'(t0 + Δt) given x'(t0) = v is iterated, and once two iterates exist the
 /// fixed point is found by secant steps on P(v) - v (P is piecewise affine: constant after a
 /// stick, affine with slope λ2 = c4 in slip-slip, eq. 32), so slowly contracting slip-slip
-/// responses (λ2 near 1) converge in a few steps too. Exact solver where the table acceleration
-/// is piecewise constant, time-stepping otherwise.
+/// responses (λ2 near 1) converge in a few steps too. The search stops on the estimated error
+/// of x'_0s, |P(v) - v| / (1 - λ) with λ the secant slope of P, not on the residual |P(v) - v|
+/// (which understates the error by 1/(1 - λ2)); or, where the period map's rounding keeps the
+/// residual from falling further, at that floor. Exact solver where the table acceleration is
+/// piecewise constant, time-stepping otherwise.
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/profiles/table_profile.hpp"
@@ -24,17 +27,22 @@ double objective_f(double v_bar, double c = kObjectiveScale);
 
 struct SteadyStateOptions {
   int max_periods = 2000;        ///< periods simulated at most before giving up
-  double velocity_tol = 1e-13;   ///< |P(v) - v| accepted as steady [-] (exact solver)
+  /// Estimated error |x'_0s - v*| = |P(v) - v| / (1 - λ) accepted as steady, relative to
+  /// 1 + |v| [-] (exact solver).
+  double velocity_tol = 1e-13;
   /// Time-stepping (profiles the exact solver cannot take): h = Δt / steps_per_period.
   int steps_per_period = 4000;
   double theta = 0.5;            ///< time-stepping theta
-  double stepping_tol = 0;       ///< time-stepping: |P(v) - v| accepted [-]; 0: 10 h
+  double stepping_tol = 0;       ///< time-stepping: velocity_tol's role [-]; 0: 10 h
 };
 
 struct SteadyState {
   bool converged = false;      ///< false: max_periods reached (fields hold the last iterate)
   Method method = Method::exact;
   double x_dot_0s = 0;         ///< steady-state x' at the profile's t0 (phase 0) [-]
+  /// Estimated |x'_0s - v*|: the residual |P(v) - v| over 1 - λ, λ the period map's secant
+  /// slope [-]; +inf when not converged. Bounded below by the map's rounding over 1 - λ.
+  double x_dot_0s_error = 0;
   double phase = 0;            ///< phase of the steady-state initial condition in [0, Δt) [-]
   double v_bar = 0;            ///< average velocity over a steady period, eq. (10) [-]
   double f = 0;                ///< objective of eq. (11) [-]; +inf when v̄ = 0

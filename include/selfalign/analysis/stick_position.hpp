@@ -4,9 +4,17 @@
 ///
 ///  - eq. (40): the object can stay stuck for good at x iff m(x) >= max |y''|;
 ///  - eq. (41): x_stick,min = x_mu + w (max|y''| - 1)/(c_mu - 1), the first such position;
-///  - eq. (59): the map x_n -> x_{n+1} between successive stick positions of a three-phase
-///    profile in the transition region, with fixed point (eq. 60) (b2 + y2'')/b1 and slope
-///    cos(sqrt(b1) (t2 - t1)) there (docs/accumulation.md).
+///  - eq. (59): the map x_n -> x_{n+1} between successive stops of a three-phase profile in the
+///    transition region, with fixed point (eq. 60) (b2 + y2'')/b1 and slope
+///    cos(sqrt(b1) (t2 - t1)) there;
+///  - the stick-position map: where the object is at rest at the next t1. It is eq. (59) where
+///    friction holds the object at that stop (m >= y3''), and otherwise adds the slide back
+///    that follows (on the diagonal y3'' = y2'' at every stop below x_stick,min);
+///  - the proof of accumulation and the domain of Sect. 7.3's condition for every entry.
+/// Derivations: docs/accumulation.md.
+
+#include <optional>
+#include <string>
 
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -19,6 +27,15 @@ bool sticks_permanently(const FrictionMap& friction, double peak_acceleration, d
 /// eq. (41) [-]: the smallest x >= x_mu at which eq. (40) holds. x_mu when the peak
 /// acceleration is <= 1; +inf when it exceeds c_mu (the object never stops for good).
 double stick_position_min(const TwoRegionFriction& friction, double peak_acceleration);
+
+/// Sect. 7.3's statement "accumulation for every entry iff x_{n+1}(x_mu) < x_stick,min" at one
+/// setting, with the domain where its derivation holds (docs/accumulation.md). Every entry
+/// means every first stop x_1 in [x_mu, x_stick,min).
+struct EveryEntryAccumulation {
+  bool applies = false;      ///< the derivation holds; otherwise nothing is claimed
+  bool accumulates = false;  ///< when applies: x_{n+1}(x_mu) < x_stick,min
+  std::string reason;        ///< when it does not apply: the assumption that fails
+};
 
 /// The stick-position map of eq. (59) for a three-phase profile on a two-region table.
 ///
@@ -36,18 +53,37 @@ class StickPositionMap {
   double slope_at_fixed_point() const;  ///< d x_{n+1}/d x_n at the fixed point: cos θ [-]
   /// x_{n+1}(x) < fixed point iff x > this bound (for x < fixed point) [-].
   double basin_lower_bound() const;
-  /// Sect. 7.3: accumulation for every entry iff x_{n+1}(x_mu) < x_stick,min.
-  bool accumulates_for_every_entry() const;
-  /// Whether an object stuck at x_n at the start of a period (before t1) provably accumulates
-  /// to the fixed point: the map's assumptions hold at x_n and along the (increasing) sequence
-  /// (docs/accumulation.md lists them). False where the map does not describe the motion.
+
+  /// Where an object at rest at x_n through [t0, t1] is at rest at the next t1 [-]: the stop of
+  /// eq. (59) where m there >= y3''; otherwise that stop, the slide back under +y3'' (about
+  /// (b2 + y3'')/b1) and under y'' = 0 (about b2/b1) until x' = 0 before the next t1. x_n for
+  /// x_n >= fixed point where m(x_n) >= y3'' (held). NaN where the motion leaves these arcs:
+  /// the forward slip ends inside [t1, t2] or after t3, the slide back does not end before
+  /// t1, or it leaves the transition region.
+  double next_stick_position(double x_n) const;
+  /// d next_stick_position / d x_n at the fixed point [-]: cos θ for y3'' < y2'' (the stop
+  /// holds there), cos θ cosh(sqrt(b1) (t3 - t2)) on the diagonal y3'' = y2''. NaN where the
+  /// fixed point is not x_stick,min (y3'' > y2'', y2'' <= 1 or y2'' > c_mu).
+  double contraction_at_fixed_point() const;
+
+  /// Sect. 7.3's condition for accumulation from every entry, where it applies.
+  EveryEntryAccumulation every_entry_accumulation() const;
+  /// every_entry_accumulation() as a value: x_{n+1}(x_mu) < x_stick,min, or nullopt where the
+  /// condition does not apply (no x_stick,min, y3'' > y2'', ...).
+  std::optional<bool> accumulates_for_every_entry() const;
+  /// Whether an object at rest at x_n through [t0, t1] provably accumulates to the fixed point
+  /// x_stick,min: the stops of eq. (59) are held and rise (m >= y3''), or the slides back
+  /// after them are bounded by a contraction (docs/accumulation.md lists the conditions; they
+  /// then hold along the whole sequence). False where neither is proven.
   bool proves_accumulation_from(double x_n) const;
   /// Time from t1 to the stop x_{n+1}, i.e. (t2 - t1) + eq. (58)'s arc time [-].
   double slip_duration(double x_n) const;
 
  private:
+  bool held_at(double x) const;               // m(x) >= y3''
+  bool slide_back_contracts(double s) const;  // the contraction bound at c1 - x_n = s
   ThreePhaseParameters p_;
-  double x_mu_, w_, c_mu_, b1_, omega_, T2_, T3_, c1_, c2_, K_, x_stick_min_;
+  double x_mu_, w_, c_mu_, b1_, omega_, T1_, T2_, T3_, c1_, c2_, K_, x_stick_min_;
   bool shape_ok_;  // the assumptions that do not depend on x_n
 };
 

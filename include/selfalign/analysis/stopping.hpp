@@ -5,10 +5,13 @@
 /// The end position is where the object sticks for good, established by proof, not by
 /// waiting N periods:
 ///  - permanent stick: at rest at x with m(x) >= max |y''| (eq. 40), nothing can move it again;
-///  - accumulation: for three-phase profiles, at rest at the start of a period at x_n where the
-///    stick-position map (eq. 59) provably drives the stick positions up to its fixed point
-///    x_stick,min (StickPositionMap::proves_accumulation_from); the end position is that limit,
-///    reached only as t -> infinity (Sect. 7.3).
+///  - accumulation: for three-phase profiles, at rest at x_n at phase t1 (the end of the rest
+///    through [t0, t1]) where the stick positions provably rise to the fixed point
+///    x_stick,min of eq. (59)/(60) (StickPositionMap::proves_accumulation_from: the stops of
+///    eq. (59) hold and rise, or the slides back after them contract, as on the diagonal
+///    y3'' = y2''); the end position is that limit, reached only as t -> infinity (Sect. 7.3).
+/// The run looks at the object once per period: at phase t1 for three-phase profiles, at
+/// phase 0 otherwise.
 
 #include <vector>
 
@@ -28,22 +31,26 @@ const char* to_string(StopKind kind);
 
 struct StoppingOptions {
   int max_periods = 10'000;      ///< give up after this many table periods
-  // A run also ends, not stopped, when the state at a period start repeats exactly: the
-  // object is on a periodic orbit that never comes to rest.
-  /// Fractions p for which the time to reach x_mu + p (x_stick,min - x_mu) is reported.
+  // A run also ends, not stopped, when the state at that once-per-period look repeats
+  // exactly: the object is on a periodic orbit that never comes to rest.
+  /// Fractions p for which the time to reach x_mu + p (x_stick,min - x_mu) for good is
+  /// reported.
   std::vector<double> fractions{0.99, 0.999};
 };
 
 struct StoppingRun {
   StopKind kind = StopKind::not_stopped;
-  double end_position = 0;   ///< where the object stops [-]
-  double process_time = 0;   ///< T_p: time the final stick starts [-]; +inf for accumulation
+  double end_position = 0;   ///< where the object stops [-]; NaN when not_stopped
+  /// T_p: time the final stick starts [-]; +inf for accumulation; NaN when not_stopped.
+  double process_time = 0;
   double entry_time = 0;     ///< first time x >= x_mu [-]; NaN if never
   double x_stick_min = 0;    ///< eq. (41) [-]
   /// Successive positions where the object came to rest at x >= x_mu (x_1, x_2, ...) [-].
   std::vector<double> stick_positions;
-  /// For each options.fractions[k]: first time x >= x_mu + p (x_stick,min - x_mu) [-], NaN if
-  /// not reached within max_periods; and the number of table periods from entry to then.
+  /// For each options.fractions[k]: the time from which x >= x_mu + p (x_stick,min - x_mu)
+  /// for good [-] (the first crossing where the object only moves forward; after slides back,
+  /// as on the diagonal y3'' = y2'', the last one), NaN if not reached within max_periods; and
+  /// the number of table periods from entry to then.
   std::vector<double> time_to_fraction;
   std::vector<int> periods_to_fraction;
 };

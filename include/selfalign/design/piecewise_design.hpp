@@ -9,9 +9,13 @@
 ///   λ > 0 such that the stroke is Δy exactly      (the stroke is linear in λ at fixed d).
 /// Constraints: λ max|a_i| <= y''_max, and |y'| <= y'_max checked at the segment ends (y' is
 /// piecewise linear, so its extrema are there): both exact.
-/// The family contains the three-phase profile (K = 3, a zero-acceleration segment; for K > 3
-/// the longest segment is split), so one start is the three-phase optimum and the result is
-/// never worse than it. The other starts are seeded random. Local optimiser: LN_COBYLA.
+/// The K family contains every (K-1)-segment profile (split one segment in two) and, for
+/// K >= 3, the three-phase profile. So the K optimum is searched after the (K-1) optimum
+/// (recursively down to K = 2, with the same options), and one start is that optimum with its
+/// longest segment split; K = 3 also starts from the three-phase optimum. local_search keeps a
+/// start nothing beats, so v̄(K) >= v̄(K-1) >= ... >= v̄(three-phase), up to the rounding of the
+/// embedding (~1e-16 relative in the profile). The other starts are seeded random. Local
+/// optimiser: LN_COBYLA. Cost: the chain's levels, about K/2 times one level's.
 
 #include <span>
 #include <vector>
@@ -29,8 +33,9 @@ bool piecewise_design_profile(const ActuatorLimits& limits, std::span<const doub
 /// max |y'| over the period of a piecewise-constant profile: at its segment ends (exact).
 double max_abs_velocity(const PiecewiseConstantProfile& profile);
 
-/// Optimises K = options.segments segments; when three_phase_start is given and feasible, it
-/// is one of the starts (else the three-phase optimum is computed first).
+/// Optimises K = options.segments segments, after K - 1, ..., 2 (each started from the one
+/// before); when three_phase_start is given and feasible, it is a start of K = 3 (else the
+/// three-phase optimum is computed first). options.progress sees the whole chain.
 OptimizationResult optimize_piecewise_constant(const ActuatorLimits& limits,
                                                const OptimizeOptions& options = {},
                                                const OptimizationResult* three_phase_start =
