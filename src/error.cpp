@@ -60,6 +60,12 @@ double require_moderate(const std::string& name, double value) {
   return value;
 }
 
+double require_positive_moderate(const std::string& name, double value) {
+  if (!(value >= 1.0 / kMaxMagnitude && value <= kMaxMagnitude))
+    throw InvalidParameter(name, value, "must be > 0, within [1e-50, 1e50]");
+  return value;
+}
+
 double require_greater(const std::string& name, double value, double bound) {
   if (!(std::isfinite(value) && value > bound))
     throw InvalidParameter(name, value, "must be > " + format_number(bound));

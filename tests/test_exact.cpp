@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/error.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -179,4 +181,22 @@ TEST(ExactSolver, StickSlipDecisionFollowsTheSetValuedLaw) {
   EXPECT_EQ(census.forward, 0);
   EXPECT_GT(census.backward, 0);
   EXPECT_LT(s.object.x, 0.0);
+}
+
+// Issue 9, D03: a state whose segment does not exist (or does not hold its time) crashed the
+// solver with an out-of-range read; it is misuse, refused by name.
+TEST(ExactSolver, RefusesAStateNotPlacedByTheSolver) {
+  const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
+  const UniformFriction friction;
+  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  ExactState s = make_exact_state(setup, {0.0, 0.0, 0.0});
+  ExactState bad = s;
+  bad.segment = 3;  // the three-phase profile has segments 0, 1, 2
+  EXPECT_THROW(advance_exact(setup, bad, 1.0), InvalidParameter);
+  bad = s;
+  bad.period_index = 5;  // t = 0 is not in period 5
+  EXPECT_THROW(advance_exact(setup, bad, 1.0), InvalidParameter);
+  EXPECT_THROW(advance_exact(setup, s, std::numeric_limits<double>::infinity()), InvalidParameter);
+  EXPECT_NO_THROW(advance_exact(setup, s, 2.5));  // the solver's own states pass
+  EXPECT_NO_THROW(advance_exact(setup, s, 7.0));
 }

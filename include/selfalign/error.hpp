@@ -44,6 +44,9 @@ double require_greater(const std::string& name, double value, double bound);
 inline constexpr double kMaxMagnitude = 1e50;
 /// Throws InvalidParameter unless value is finite and |value| <= kMaxMagnitude.
 double require_moderate(const std::string& name, double value);
+/// Throws InvalidParameter unless 1/kMaxMagnitude <= value <= kMaxMagnitude (a positive scale:
+/// a width, a length, a limit), the positive counterpart of require_moderate.
+double require_positive_moderate(const std::string& name, double value);
 /// Throws InvalidParameter unless value is finite and lo < value <= hi.
 double require_in_half_open(const std::string& name, double value, double lo, double hi);
 

@@ -82,3 +82,39 @@ def test_negative_thread_count_is_rejected():
 def test_progress_must_be_callable():
     with pytest.raises(TypeError):
         sa.sweep_accelerations(1.0, 0.084, [3.0], [0.9], progress=42)
+
+
+def test_enums_refuse_values_that_are_not_members():
+    # Issue 9: Method(7) was accepted (shown as Method.???).
+    for enum, count in ((sa.Method, 2), (sa.Interpolation, 2), (sa.StopKind, 3)):
+        assert enum(count - 1) is not None
+        with pytest.raises(sa.InvalidParameter):
+            enum(count)
+        with pytest.raises(sa.InvalidParameter):
+            enum(-1)
+
+
+def test_nan_and_huge_ints_are_refused_naming_the_argument():
+    # Issue 9: NaN inputs returned NaN silently; 2**2000 raised "Unable to cast ...".
+    profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    for call, name in ((lambda: sa.objective_f(float("nan")), "v_bar"),
+                       (lambda: sa.objective_f(2**2000), "v_bar"),
+                       (lambda: profile.sample(2**2000), "t"),
+                       (lambda: profile.velocity(np.array([0.1, np.nan])), "t"),
+                       (lambda: sa.UniformFriction().bound(np.inf), "x")):
+        with pytest.raises(sa.InvalidParameter) as info:
+            call()
+        assert info.value.name == name
+        assert "std::" not in str(info.value) and "cast" not in str(info.value)
+
+
+def test_exact_state_is_read_only_and_checked():
+    # Issue 9, D03: setting ExactState.segment from Python crashed the solver.
+    profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    friction = sa.TwoRegionFriction(0.5, 0.05, 2.5)
+    state = sa.make_exact_state(profile, friction)
+    for attribute in ("segment", "period_index", "object"):
+        with pytest.raises(AttributeError):
+            setattr(state, attribute, 3)
+    with pytest.raises(sa.InvalidParameter):
+        sa.advance_exact(profile, friction, state, 1e300)  # beyond 1e8 periods

@@ -19,10 +19,12 @@ void require_in(const std::string& name, int value, int lo, int hi) {
 }  // namespace
 
 void validate(const ActuatorLimits& l) {
-  require_positive("period", l.period);
-  require_positive("stroke", l.stroke);
-  require_positive("max_velocity", l.max_velocity);
-  require_positive("max_acceleration", l.max_acceleration);
+  // Positive scales within [1e-50, 1e50] (error.hpp): a limit of 1e195 made the scan run for
+  // minutes on steady states of absurd accelerations.
+  require_positive_moderate("period", l.period);
+  require_positive_moderate("stroke", l.stroke);
+  require_positive_moderate("max_velocity", l.max_velocity);
+  require_positive_moderate("max_acceleration", l.max_acceleration);
 }
 
 void validate(const OptimizeOptions& o) {

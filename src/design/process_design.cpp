@@ -14,18 +14,26 @@
 namespace selfalign {
 
 void validate(const DesignRequest& q) {
-  require_positive("mass", q.mass);
-  require_positive("width", q.width);
-  require_positive("mu", q.mu);
+  // Positive scales within [1e-50, 1e50] (error.hpp): beyond, their ratios overflow.
+  require_positive_moderate("mass", q.mass);
+  require_positive_moderate("width", q.width);
+  require_positive_moderate("mu", q.mu);
   require_greater("c_mu", q.c_mu, 1.0);
-  require_positive("g", q.gravity);
-  require_positive("distance", q.distance);
-  require_positive("stroke_max", q.stroke_max);
-  require_positive("frequency_min", q.frequency_min);
+  require_moderate("c_mu", q.c_mu);
+  require_positive_moderate("g", q.gravity);
+  require_positive_moderate("distance", q.distance);
+  require_positive_moderate("stroke_max", q.stroke_max);
+  require_positive_moderate("frequency_min", q.frequency_min);
   require_greater("frequency_max", q.frequency_max, q.frequency_min * (1 - 1e-15));
-  require_positive("velocity_max", q.velocity_max);
-  require_positive("acceleration_max", q.acceleration_max);
+  require_positive_moderate("frequency_max", q.frequency_max);
+  require_positive_moderate("velocity_max", q.velocity_max);
+  require_positive_moderate("acceleration_max", q.acceleration_max);
   require_non_negative("tolerance", q.tolerance);
+  require_moderate("tolerance", q.tolerance);
+  if (q.width < 1e-9 * q.distance)  // TwoRegionFriction's resolution bound at x_mu ~ distance
+    throw InvalidParameter("width", q.width,
+                           "must be >= 1e-9 x distance = " + format_number(1e-9 * q.distance) +
+                               " m (the transition region must be resolvable at the end position)");
   if (q.acceleration_grid < 2 || q.acceleration_grid > 200)
     throw InvalidParameter("acceleration_grid", q.acceleration_grid, "must be in [2, 200]");
   if (q.period_grid < 1 || q.period_grid > 100)
@@ -134,6 +142,11 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
     double settle = 0;
     for (const StoppingRun& run : acc.runs) settle = std::max(settle, settling(run));
     c.estimate = c.x_mu / c.v_bar + settle;
+  }, [&](std::size_t i, const std::string&) {
+    // A candidate the analysis cannot resolve (e.g. its one-period displacement is 1e9 object
+    // widths, beyond the transition region's resolution) is not a design, not an error.
+    cands[i].evaluated = true;
+    cands[i].reaches = cands[i].positioned = false;
   });
 
   const Candidate* best = nullptr;

@@ -29,7 +29,7 @@ struct ActuatorLimits {
   double max_acceleration = 1275.0;  ///< y''_max: |y''| <= y''_max over the period [-], > 0
 };
 
-/// Throws InvalidParameter unless every limit is finite and > 0.
+/// Throws InvalidParameter unless every limit is in [1e-50, 1e50] (error.hpp, kMaxMagnitude).
 void validate(const ActuatorLimits& limits);
 
 /// Options of the family optimisers (each uses the fields that apply to it).

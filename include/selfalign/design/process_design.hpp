@@ -42,7 +42,8 @@ struct DesignRequest {
   int entries = 40;                ///< steady entries per candidate (Sect. 7.1), in [2, 1000]
 };
 
-/// Throws InvalidParameter naming the first field out of range.
+/// Throws InvalidParameter naming the first field out of range (positive scales in [1e-50,
+/// 1e50]).
 void validate(const DesignRequest& request);
 
 struct DesignResult {
