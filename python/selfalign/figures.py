@@ -1,8 +1,13 @@
 """The paper's figures, one function per figure (Hunnekens et al. 2010).
 
 Each ``fig_*`` function computes its data with the library, writes the data as CSV and the
-figure as PNG and SVG into ``out_dir``, and returns a :class:`Figure` describing what it drew
-and which statement of the paper it reproduces. Everything is dimensionless (Sect. 3.2).
+figure as PNG and SVG into ``out_dir``, and returns a :class:`Figure` describing what it drew,
+which statement of the paper it reproduces and, in ``differences``, where the reproduction
+does not show what the paper says. Everything is dimensionless (Sect. 3.2).
+
+Colour maps are drawn as raster layers (``rasterized=True``) inside otherwise vector SVGs:
+written as vector paths, one per grid cell, they made 10-15 MB files that took most of the
+run time to write.
 """
 
 from __future__ import annotations
@@ -14,10 +19,12 @@ from typing import Callable, Optional
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.patches  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import _selfalign as sa  # noqa: E402
+from .claims import CASE_SETTINGS, optimum_shape  # noqa: E402  (shared with the claims)
 
 Progress = Optional[Callable[[int, int], None]]
 
@@ -33,29 +40,34 @@ class Figure:
     data: list[str]
     notes: str = ""
     raw: Optional[dict] = None  # the computed data, for the claims table
+    differences: str = ""  # where the reproduction differs from the paper's statement
 
 
 # Settings used throughout (the paper's, where it gives them).
 SECT72 = dict(period=1.0, stroke=0.084)  # Sect. 7.2: Δt = 1, Δy = 0.084
 WIDTH, C_MU = 0.05, 2.5  # Sect. 7.2: w = 0.05, c_mu = 2.5
-CASE_SETTINGS = {  # one three-phase setting per case of Table 1 (checked a priori and simulated)
-    1: (1.0, 0.084, 3.0, 0.9),
-    2: (1.0, 0.084, 0.9, 3.0),
-    3: (1.0, 0.084, 2.3, 1.3),
-    4: (1.0, 0.084, 1.05, 2.0),
-    5: (2.0, 0.084, 0.9, 0.9),
-}
 CASE_COLORS = ["#bbbbbb", "#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e"]
 
 
-def _save(fig: plt.Figure, out_dir: str, name: str) -> list[str]:
+def _save(fig: plt.Figure, out_dir: str, name: str, dpi: int = 130) -> list[str]:
+    """Writes name.png (at dpi) and name.svg (vector; rasterised artists embedded at dpi),
+    both cropped to the figure's tight bounding box, computed once for the two formats
+    (bbox_inches="tight" would lay the figure out again for each)."""
+    fig.set_dpi(dpi)
+    bbox = fig.get_tightbbox(fig.canvas.get_renderer()).padded(0.1)  # [in]
     files = []
     for ext in ("png", "svg"):
         path = os.path.join(out_dir, f"{name}.{ext}")
-        fig.savefig(path, dpi=130, bbox_inches="tight")
+        fig.savefig(path, dpi=dpi, bbox_inches=bbox)
         files.append(path)
     plt.close(fig)
     return files
+
+
+def _case_colorbar(fig: plt.Figure, mappable, ax: plt.Axes) -> None:
+    """A colour bar with one labelled tick per motion case of Table 1."""
+    bar = fig.colorbar(mappable, ax=ax, ticks=range(6))
+    bar.ax.set_yticklabels([f"{k}: {sa.describe(k)}" for k in range(6)])
 
 
 def _csv(out_dir: str, name: str, columns: dict[str, np.ndarray]) -> str:
@@ -74,31 +86,35 @@ def fig3(out_dir: str) -> Figure:
     """Fig. 3: a stick-slip response computed with time-stepping.
 
     The table follows a periodic sequence of second-order polynomials (the scaled Fig. 7-like
-    shape)."""
+    shape). As in the paper (Sect. 3.1), x is the object's position relative to the table, so
+    x' = 0 while it sticks; the absolute position x + y is in the CSV as well."""
     profile = sa.ScaledShapeFamily.paper_like().make(2.5, 1.5)
     options = sa.SimulationOptions(method="time-stepping", duration=14.0, step=1e-3,
                                    output_step=0.01)
     tr = sa.simulate(profile, sa.UniformFriction(), sa.ObjectState(), options).trajectory
-    x_abs = tr.x + tr.y  # absolute position of the object
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7, 5), sharex=True)
-    top.plot(tr.t, x_abs, label="x (object)")
+    top.plot(tr.t, tr.x, label="x (object, relative to the table)")
     top.plot(tr.t, tr.y, "--", label="y (table)")
     top.set_ylabel("position x, y [-]")
-    top.legend()
-    bottom.plot(tr.t, tr.xd + tr.yd, label="x' (object)")
+    top.legend(fontsize=8)
+    bottom.plot(tr.t, tr.xd, label="x' (object, relative to the table)")
     bottom.plot(tr.t, tr.yd, "--", label="y' (table)")
+    bottom.axhline(0, color="k", lw=0.5)
     bottom.set_xlabel("time [-]")
     bottom.set_ylabel("velocity x', y' [-]")
-    bottom.legend()
+    bottom.legend(fontsize=8)
     fig.suptitle("Fig. 3: stick-slip with a sequence of quadratics (time-stepping)")
-    data = _csv(out_dir, "fig03", {"t": tr.t, "x_abs": x_abs, "y": tr.y,
-                                    "x_dot_abs": tr.xd + tr.yd, "y_dot": tr.yd})
+    data = _csv(out_dir, "fig03", {"t": tr.t, "x": tr.x, "y": tr.y, "x_dot": tr.xd,
+                                    "y_dot": tr.yd, "x_abs": tr.x + tr.y,
+                                    "x_dot_abs": tr.xd + tr.yd})
     return Figure("3", "Stick-slip response (time-stepping)",
                   "The table moves slowly forward dragging the mass along and fast backward, so "
                   "the mass slips and walks forward (Sect. 4.2).",
                   _save(fig, out_dir, "fig03"), [data],
-                  "Absolute positions x + y are plotted; the paper's exact polynomial sequence is "
-                  "not given, a Fig. 7-like shape with Δt = 2.5, Δy = 1.5 is used.")
+                  "x and x' are the paper's variables: position and velocity of the object "
+                  "relative to the table (Sect. 3.1); x' = 0 marks stick. The paper's exact "
+                  "polynomial sequence is not given, a Fig. 7-like shape with Δt = 2.5, "
+                  "Δy = 1.5 is used.")
 
 
 _FAMILY_NOTE = "Scaled Fig. 7-like polynomial sequence (the paper's sequence is not given)."
@@ -142,38 +158,51 @@ def fig6(out_dir: str) -> Figure:
     """Fig. 6: the optimised 12th-order Fourier profile and its steady response.
 
     Constrained optimisation of the Fourier coefficients (Sect. 4.4.2) at Δt = 0.072,
-    Δy = 0.021, y'_max = 3.2, y''_max = 1275 (selfalign.optimize_fourier)."""
+    Δy = 0.021, y'_max = 3.2, y''_max = 1275 (selfalign.optimize_fourier). The shape of the
+    optimum is measured (claims.optimum_shape) and compared with the paper's description."""
     period = 0.072
     result = sa.optimize_fourier(sa.ActuatorLimits(), sa.OptimizeOptions(order=12, starts=4))
     profile = sa.rebuild_profile(result)
-    steady = sa.steady_state(profile)
+    shape = optimum_shape(result)
     options = sa.SimulationOptions(method="time-stepping", duration=3 * period, step=period / 4000,
                                    output_step=period / 400)
-    tr = sa.simulate(profile, sa.UniformFriction(), sa.ObjectState(0, 0, steady.x_dot_0s),
+    tr = sa.simulate(profile, sa.UniformFriction(), sa.ObjectState(0, 0, shape.x_dot_0s),
                      options).trajectory
-    fig, axes = plt.subplots(3, 1, figsize=(6, 7), sharex=True)
-    axes[0].plot(tr.t, tr.y)
+    limits = result.limits
+    fig, axes = plt.subplots(3, 1, figsize=(9.5, 8), sharex=True)
+    axes[0].plot(tr.t, tr.y, label="y (table)")
     axes[0].set_ylabel("y [-]")
     axes[1].plot(tr.t, tr.yd, label="y' (table)")
-    axes[1].plot(tr.t, tr.xd + tr.yd, "--", label="x' + y' (object)")
-    for lim in (3.2, -3.2):
-        axes[1].axhline(lim, color="k", lw=0.5)
-    axes[1].legend()
+    axes[1].plot(tr.t, tr.xd + tr.yd, "--", label="x' + y' (object, absolute)")
+    axes[1].axhline(limits.max_velocity, color="k", lw=0.5,
+                    label=f"±y'_max = ±{limits.max_velocity:g}")
+    axes[1].axhline(-limits.max_velocity, color="k", lw=0.5)
     axes[1].set_ylabel("velocity [-]")
-    axes[2].plot(tr.t, tr.ydd)
-    for lim in (1275, -1275):
-        axes[2].axhline(lim, color="k", lw=0.5)
+    axes[2].axhspan(-shape.band, shape.band, color="0.85", lw=0,
+                    label=f"|y''| < {shape.band:g}: 'near zero'\n({shape.band_fraction:.0%} of "
+                          "y''_max)")
+    axes[2].plot(tr.t, tr.ydd, label="y'' (table)")
+    axes[2].axhline(limits.max_acceleration, color="k", lw=0.5,
+                    label=f"±y''_max = ±{limits.max_acceleration:g}")
+    axes[2].axhline(-limits.max_acceleration, color="k", lw=0.5)
     axes[2].set_ylabel("y'' [-]")
     axes[2].set_xlabel("time [-]")
+    for ax in axes:
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    axes[2].set_title(f"per period: y'' changes sign {shape.sign_changes} times; "
+                      f"{shape.negative_lobes} negative and {shape.positive_lobes} positive "
+                      "intervals (paper: 1 and 1)", fontsize=9)
     fig.suptitle(f"Fig. 6: optimised 12th-order Fourier profile, f = {result.f:.3g}")
     data = _csv(out_dir, "fig06", {"t": tr.t, "y": tr.y, "y_dot": tr.yd, "y_ddot": tr.ydd,
                                     "x_dot": tr.xd})
     return Figure("6", "Optimised Fourier profile",
-                  "Δt = 0.072, Δy = 0.021, y'_max = 3.2, y''_max = 1275; the optimum has a "
-                  "near-zero-acceleration interval, then negative, then positive acceleration "
-                  "(Sect. 4.4.2).", _save(fig, out_dir, "fig06"), [data],
+                  "Δt = 0.072, Δy = 0.021, y'_max = 3.2, y''_max = 1275; the optimum has, in "
+                  "approximation, a zero-acceleration interval, then one negative and one "
+                  "positive acceleration interval (Sect. 4.4.2).", _save(fig, out_dir, "fig06"),
+                  [data],
                   "The paper's printed f = 56 is read as f = 5.6e-4 (lost exponent): under these "
-                  "limits v̄ ≈ 0.4-0.6, so f is of order 1e-4.", {"result": result})
+                  "limits v̄ ≈ 0.4-0.6, so f is of order 1e-4.", {"result": result},
+                  differences=shape.describe())
 
 
 def fig7(out_dir: str) -> Figure:
@@ -228,20 +257,38 @@ def fig9(out_dir: str) -> Figure:
                   "stick (Table 1, Fig. 9).", _save(fig, out_dir, "fig09"), [data])
 
 
-def _case_f_surfaces(out_dir: str, name: str, title: str, period: float, stroke: float,
-                     grid: np.ndarray, log: bool, f_cap: float, progress: Progress):
-    r = sa.sweep_accelerations(period, stroke, grid, grid, progress=progress)
+FIG10 = (0.072, 0.021, ("log", 1.0, 1275.0, 200))  # Δt, Δy, (grid kind, lo, hi, n)
+FIG11 = (1.0, 0.084, ("linear", 3.0 / 200, 3.0, 200))
+
+
+def _grid(spec: tuple) -> np.ndarray:
+    kind, lo, hi, n = spec
+    return (sa.log_grid if kind == "log" else sa.linear_grid)(lo, hi, n)
+
+
+def case_f_data(setting: tuple, progress: Progress = None) -> dict:
+    """f and case over the (y2'', y3'') grid of FIG10 or FIG11 (sa.sweep_accelerations).
+    Runs without the GIL, so reproduce computes it in the background while drawing."""
+    period, stroke, spec = setting
+    grid = _grid(spec)
+    return sa.sweep_accelerations(period, stroke, grid, grid, progress=progress)
+
+
+def _case_f_surfaces(out_dir: str, name: str, title: str, setting: tuple, log: bool,
+                     f_cap: float, progress: Progress, data: Optional[dict]):
+    r = data if data is not None else case_f_data(setting, progress)
+    grid = np.asarray(r["a2"])
     f = np.minimum(np.where(np.isfinite(r["f"]), r["f"], f_cap), f_cap)
     f = np.where(r["observed"] == 0, np.nan, f)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.5))
-    mesh = left.pcolormesh(grid, grid, f.T, shading="nearest", cmap="viridis")
+    fig, (left, right) = plt.subplots(1, 2, figsize=(13, 4.8), width_ratios=(1, 1.15))
+    mesh = left.pcolormesh(grid, grid, f.T, shading="nearest", cmap="viridis", rasterized=True)
     fig.colorbar(mesh, ax=left)
-    left.set_title(f"f (capped at {f_cap:g})")
-    right.set_title("case (0 = non-physical)")
+    left.set_title(f"f (capped at {f_cap:g}; white: non-physical)")
+    right.set_title("case of Table 1 (simulated)")
     cmap = matplotlib.colors.ListedColormap(CASE_COLORS)
     cases = right.pcolormesh(grid, grid, r["observed"].T.astype(float), shading="nearest",
-                             cmap=cmap, vmin=-0.5, vmax=5.5)
-    fig.colorbar(cases, ax=right, ticks=range(6))
+                             cmap=cmap, vmin=-0.5, vmax=5.5, rasterized=True)
+    _case_colorbar(fig, cases, right)
     for ax in (left, right):
         ax.set_xlabel("y2'' [-]")
         ax.set_ylabel("y3'' [-]")
@@ -255,12 +302,13 @@ def _case_f_surfaces(out_dir: str, name: str, title: str, period: float, stroke:
     return _save(fig, out_dir, name), [data], r
 
 
-def fig10(out_dir: str, progress: Progress = None) -> Figure:
-    """Fig. 10: f and case over (y2'', y3'') in [1, 1275]^2, Δt = 0.072, Δy = 0.021."""
-    grid = sa.log_grid(1.0, 1275.0, 200)
+def fig10(out_dir: str, progress: Progress = None, data: Optional[dict] = None) -> Figure:
+    """Fig. 10: f and case over (y2'', y3'') in [1, 1275]^2, Δt = 0.072, Δy = 0.021.
+
+    ``data``: case_f_data(FIG10), if already computed."""
     files, data, r = _case_f_surfaces(out_dir, "fig10",
                                       "Fig. 10: f and case, Δt = 0.072, Δy = 0.021",
-                                      0.072, 0.021, grid, True, 1.6e-3, progress)
+                                      FIG10, True, 1.6e-3, progress, data)
     return Figure("10", "f and case over large accelerations",
                   "f rises sharply where general stick-slip turns into slip-slip; f capped at "
                   "1.6e-3 (Sect. 5.2).", files, data,
@@ -268,11 +316,12 @@ def fig10(out_dir: str, progress: Progress = None) -> Figure:
                   "v̄ ≈ 0.3 matches the 1.6e-3 colour scale.", r)
 
 
-def fig11(out_dir: str, progress: Progress = None) -> Figure:
-    """Fig. 11: f and case over small accelerations (0, 3]^2, Δt = 1, Δy = 0.084."""
-    grid = sa.linear_grid(3.0 / 200, 3.0, 200)
+def fig11(out_dir: str, progress: Progress = None, data: Optional[dict] = None) -> Figure:
+    """Fig. 11: f and case over small accelerations (0, 3]^2, Δt = 1, Δy = 0.084.
+
+    ``data``: case_f_data(FIG11), if already computed."""
     files, data, r = _case_f_surfaces(out_dir, "fig11", "Fig. 11: f and case, Δt = 1, Δy = 0.084",
-                                      1.0, 0.084, grid, False, 0.8, progress)
+                                      FIG11, False, 0.8, progress, data)
     return Figure("11", "f and case over small accelerations",
                   "Stick is possible where |y''| < 1: cases 1 and 2 appear; case 1 is preferable; "
                   "f >= 0.8 set to 0.8 (Sect. 5.2).", files, data, raw=r)
@@ -310,16 +359,20 @@ def fig13(out_dir: str) -> Figure:
     top.plot(c.t, c.v1, label="v1")
     top.plot(c.t, c.v2, "--", label="v2")
     top.set_ylabel("velocity [-]")
-    top.legend()
-    bottom.plot(c.t, c.lyapunov)
+    bottom.plot(c.t, c.lyapunov, label="V = (v1 - v2)²/2, eq. (35)")
     bottom.set_ylabel("V [-]")
     bottom.set_xlabel("time [-]")
-    for iv in c.intervals:
+    top_v = max(c.lyapunov)
+    bottom.set_ylim(-0.05 * top_v, 1.2 * top_v)
+    for iv in c.intervals:  # '=' where v̂1 = v̂2, '≠' where they differ
         mid = 0.5 * (iv.t_begin + iv.t_end)
-        bottom.text(mid, max(c.lyapunov) * 1.02, "=" if iv.same else "≠", ha="center")
+        bottom.text(mid, 1.07 * top_v, "=" if iv.same else "≠", ha="center")
     if c.t_coincide is not None:
         for ax in (top, bottom):
-            ax.axvline(c.t_coincide, color="k", lw=0.5, ls=":")
+            ax.axvline(c.t_coincide, color="k", lw=0.7, ls=":",
+                       label=f"responses coincide, t = {c.t_coincide:.3f}")
+    top.legend(fontsize=8)
+    bottom.legend(fontsize=8, loc="center right")
     fig.suptitle("Fig. 13: convergence of two case-1 responses")
     data = _csv(out_dir, "fig13", {"t": c.t, "v1": c.v1, "v2": c.v2, "V": c.lyapunov})
     return Figure("13", "Convergence of velocity responses",
@@ -330,7 +383,7 @@ def fig13(out_dir: str) -> Figure:
 
 def fig16(out_dir: str) -> Figure:
     """Fig. 16: phase portraits for (2.3, 1.3) and (1.8, 1.1), two entries each."""
-    fig, axes = plt.subplots(2, 1, figsize=(7, 7))
+    fig, axes = plt.subplots(2, 1, figsize=(9.5, 7))
     columns = {}
     for ax, (a2, a3) in zip(axes, ((2.3, 1.3), (1.8, 1.1))):
         profile = _three_phase(1.0, 0.084, a2, a3)
@@ -342,41 +395,76 @@ def fig16(out_dir: str) -> Figure:
             ax.plot(tr.x, tr.xd, lw=0.8, label=f"x0s = {x0:.4f}")
             columns[f"x_{a2}_{a3}_{k}"] = tr.x
             columns[f"x_dot_{a2}_{a3}_{k}"] = tr.xd
-        ax.axvline(acc.x_mu, color="k", ls="--", lw=0.7)
-        ax.axvline(acc.x_stick_min, color="k", ls="--", lw=0.7)
+        ax.axvline(acc.x_mu, color="0.4", ls="--", lw=1.0,
+                   label=f"x_mu = {acc.x_mu:.4f}: high friction starts")
+        ax.axvline(acc.x_stick_min, color="r", ls="--", lw=1.0,
+                   label=f"x_stick,min = {acc.x_stick_min:.4f}, eq. (41)")
         ax.set_title(f"(y2'', y3'') = ({a2}, {a3}): Δx_d = {acc.dx_d:.3g}", fontsize=10)
         ax.set_xlabel("x [-]")
         ax.set_ylabel("x' [-]")
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     data = _csv(out_dir, "fig16", columns)
     return Figure("16", "Phase portraits entering the high-friction region",
                   "Upper: both trajectories stop at the same position (accumulation to "
                   "x_stick,min); lower: the end positions differ (Sect. 7.2).",
-                  _save(fig, out_dir, "fig16"), [data])
+                  _save(fig, out_dir, "fig16"), [data],
+                  "Dashed lines: x_mu (grey), where the high-friction region starts, and "
+                  "x_stick,min (red), from where permanent stick is possible (eq. 41). The two "
+                  "entries are entries 10 and 60 of the 100 steady entries of Sect. 7.1.")
 
 
-def fig17(out_dir: str, progress: Progress = None, n: int = 120, entries: int = 60) -> Figure:
-    """Fig. 17: (A) f, (B) case, (C) accumulation, (D) Δx_d over (y2'', y3'')."""
+FIG17_CELLS, FIG17_ENTRIES = 120, 60  # grid n x n over (0, 2.5]^2, steady entries per cell
+
+
+def fig17_data(n: int = FIG17_CELLS, entries: int = FIG17_ENTRIES,
+               progress: Progress = None) -> dict:
+    """The Fig. 17 surfaces (sa.positioning_surfaces) at the Sect. 7.2 setting. Runs without
+    the GIL, so reproduce computes it in the background while drawing."""
     grid = sa.linear_grid(2.5 / n, 2.5, n)
     options = sa.PositioningOptions(entries=entries, stopping=sa.StoppingOptions(max_periods=300))
-    r = sa.positioning_surfaces(1.0, 0.084, WIDTH, C_MU, grid, grid, options=options,
-                                progress=progress)
-    fig, axes = plt.subplots(2, 2, figsize=(11, 9))
-    panels = [("A: f (capped at 0.8)", np.minimum(np.nan_to_num(r["f"], nan=np.nan, posinf=0.8), 0.8),
-               "viridis"),
-              ("B: case", r["case"].astype(float), matplotlib.colors.ListedColormap(CASE_COLORS)),
-              ("C: accumulation", r["accumulates"].astype(float), "Greys"),
-              ("D: Δx_d", r["dx_d"], "magma")]
-    for ax, (title, values, cmap) in zip(axes.ravel(), panels):
-        kwargs = dict(vmin=-0.5, vmax=5.5) if title.startswith("B") else {}
-        mesh = ax.pcolormesh(grid, grid, values.T, shading="nearest", cmap=cmap, **kwargs)
-        fig.colorbar(mesh, ax=ax)
-        ax.set_title(title)
-        ax.set_xlabel("y2'' [-]")
-        ax.set_ylabel("y3'' [-]")
-    fig.suptitle("Fig. 17: Δt = 1, Δy = 0.084, w = 0.05, c_mu = 2.5")
-    fig.tight_layout()
+    return sa.positioning_surfaces(1.0, 0.084, WIDTH, C_MU, grid, grid, options=options,
+                                   progress=progress)
+
+
+def fig17(out_dir: str, progress: Progress = None, n: int = FIG17_CELLS,
+          entries: int = FIG17_ENTRIES, data: Optional[dict] = None) -> Figure:
+    """Fig. 17: (A) f, (B) case, (C) accumulation, (D) Δx_d over (y2'', y3'').
+
+    ``data``: fig17_data(n, entries), if already computed."""
+    r = data if data is not None else fig17_data(n, entries, progress)
+    grid = np.asarray(r["a2"])
+    f = np.minimum(np.nan_to_num(r["f"], nan=np.nan, posinf=0.8), 0.8)
+    accumulation = matplotlib.colors.ListedColormap(["#d0d0d0", "#1b7837"])
+    with plt.rc_context({"font.size": 13, "axes.titlesize": 14}):
+        fig, axes = plt.subplots(2, 2, figsize=(15, 12.5))
+        (a, b), (c, d) = axes
+        mesh = a.pcolormesh(grid, grid, f.T, shading="nearest", cmap="viridis", rasterized=True)
+        fig.colorbar(mesh, ax=a)
+        a.set_title("A: f (capped at 0.8; white: non-physical)")
+        cases = b.pcolormesh(grid, grid, r["case"].T.astype(float), shading="nearest",
+                             cmap=matplotlib.colors.ListedColormap(CASE_COLORS), vmin=-0.5,
+                             vmax=5.5, rasterized=True)
+        _case_colorbar(fig, cases, b)
+        b.set_title("B: case of Table 1")
+        mesh = c.pcolormesh(grid, grid, r["accumulates"].T.astype(float), shading="nearest",
+                            cmap=accumulation, vmin=0, vmax=1, rasterized=True)
+        fig.colorbar(mesh, ax=c).ax.set_visible(False)  # same panel size as A, B, D
+        c.legend(handles=[matplotlib.patches.Patch(color="#1b7837",
+                                                   label=f"yes: all {entries} entries accumulate"),
+                          matplotlib.patches.Patch(color="#d0d0d0", label="no")],
+                 loc="lower left", title="accumulation")
+        c.set_title("C: accumulation to x_stick,min")
+        mesh = d.pcolormesh(grid, grid, r["dx_d"].T, shading="nearest", cmap="magma",
+                            rasterized=True)
+        fig.colorbar(mesh, ax=d)
+        d.set_title("D: Δx_d, eq. (39) (white: never at rest)")
+        for ax in axes.ravel():
+            ax.set_xlabel("y2'' [-]")
+            ax.set_ylabel("y3'' [-]")
+        fig.suptitle("Fig. 17: Δt = 1, Δy = 0.084, w = 0.05, c_mu = 2.5")
+        fig.tight_layout()
+        files = _save(fig, out_dir, "fig17", dpi=110)
     a2, a3 = np.meshgrid(grid, grid, indexing="ij")
     data = _csv(out_dir, "fig17", {"a2": a2, "a3": a3, "case": r["case"], "f": r["f"],
                                     "accumulates": r["accumulates"], "dx_d": r["dx_d"],
@@ -385,9 +473,10 @@ def fig17(out_dir: str, progress: Progress = None, n: int = 120, entries: int = 
     return Figure("17", "f, case, accumulation and positioning error",
                   "High y2'' moves fast but must stay low enough to stick; low y3'' favours case "
                   "1; where accumulation occurs (C) the positioning error vanishes (D) (Sect. 7.2).",
-                  _save(fig, out_dir, "fig17"), [data],
-                  f"{n} x {n} grid over (0, 2.5]^2, {entries} entries per cell; white: the object "
-                  "never arrives (case 0, 2, 5 or v̄ <= 0) or never comes to rest.", r)
+                  files, [data],
+                  f"{n} x {n} grid over (0, 2.5]^2, {entries} entries per cell; white in A, D: "
+                  "non-physical profile, or the object never arrives (case 0, 2, 5 or v̄ <= 0) "
+                  "or never comes to rest.", r)
 
 
 def fig18(out_dir: str) -> Figure:
@@ -398,25 +487,35 @@ def fig18(out_dir: str) -> Figure:
     x_stick_min = sa.stick_position_min(friction, profile.peak_acceleration)
     x = np.linspace(0.0, WIDTH, 400)
     x_next = m(x)
-    fig, ax = plt.subplots(figsize=(6, 5))
+    basin = m.basin_lower_bound()
+    fig, ax = plt.subplots(figsize=(7, 6))
     ax.plot(x, x_next, label="x_{n+1}(x_n), eq. (59)")
-    ax.plot(x, x, "k:", label="diagonal")
+    ax.plot(x, x, "k:", label="diagonal x_{n+1} = x_n")
     ax.plot([m.fixed_point()], [m.fixed_point()], "ro", label="fixed point, eq. (60)")
-    ax.axvline(0.0, color="k", ls="--", lw=0.7)
-    ax.axvline(x_stick_min, color="k", ls="--", lw=0.7)
-    ax.axvline(m.basin_lower_bound(), color="gray", ls="--", lw=0.7)
+    every = m(0.0) < x_stick_min  # Sect. 7.3's condition for accumulation from every x_1
+    ax.plot([0.0], [m(0.0)], "s", color="tab:blue", mfc="none",
+            label=f"x_{{n+1}}(x_mu) = {m(0.0):.4f} {'<' if every else '>='} x_stick,min: "
+                  + ("accumulation from every x_1" if every else "accumulation depends on x_1"))
+    ax.axvline(0.0, color="0.4", ls="--", lw=1.2, label="x_mu = 0: high friction starts")
+    ax.axvline(x_stick_min, color="r", ls="--", lw=1.0,
+               label=f"x_stick,min = {x_stick_min:.3f}, eq. (41)")
+    ax.axvline(basin, color="tab:green", ls="-.", lw=1.0,
+               label=f"c1 - 2K cos θ = {basin:.4f}: a first stop x_1 between this and "
+                     "x_stick,min accumulates")
     ax.set_xlabel("x_n [-]  (x_mu = 0)")
     ax.set_ylabel("x_{n+1} [-]")
-    ax.set_xlim(0, WIDTH)
-    ax.set_ylim(0, WIDTH)
-    ax.legend(fontsize=8)
+    ax.set_xlim(-0.1 * WIDTH, WIDTH)
+    ax.set_ylim(-0.1 * WIDTH, WIDTH)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.1))
     ax.set_title("Fig. 18: y2'' = 2.2, y3'' = 0.9, Δt = 1.05, Δy = 0.084")
     data = _csv(out_dir, "fig18", {"x_n": x, "x_next": x_next, "diagonal": x})
     return Figure("18", "Stick-position map",
                   "The fixed point of map (59) lies at x_stick,min; depending on the initial "
                   "conditions the mass accumulates there or sticks beyond it (Sect. 7.3).",
                   _save(fig, out_dir, "fig18"), [data],
-                  "Middle dashed line: basin bound c1 - 2K cos θ (docs/accumulation.md).")
+                  "Dashed lines: x_mu (grey), x_stick,min (red); dash-dotted: the basin bound "
+                  "c1 - 2K cos θ (docs/accumulation.md): a first stick position x_1 between it "
+                  "and x_stick,min accumulates, one below it sticks beyond x_stick,min.")
 
 
 ALL = [fig3, fig4, fig5, fig6, fig7, fig9, fig10, fig11, fig12, fig13, fig16, fig17, fig18]
