@@ -1,0 +1,656 @@
+"""Seeded fuzz test of the Python API (issue 9).
+
+Every public function and class of `selfalign` is called with mutated arguments (NaN, inf,
+negative, zero, huge, denormal, wrong types, huge thread counts and orders, out-of-range enum
+values, attributes such as ExactState.segment set to nonsense). Each call must either
+
+  * return a result with no NaN where a number is expected (NaN, inf and None only where the
+    docstrings say so: see the checks below, each citing its docstring), or
+  * raise selfalign.InvalidParameter, ValueError or TypeError with a one-line message that names
+    the parameter and carries no C++ internals ("std::", "vector::", "bad_alloc",
+    "Unable to cast", "json.exception", ...),
+
+and never crash the interpreter or hang. The calls run in a worker subprocess (python -X
+faulthandler) so a segfault is seen as the worker's death; the parent restarts a worker after
+the crashing call and goes on. A call is Python source, so every failure is printed with a
+reproducer to paste into a shell.
+
+  SELFALIGN_FUZZ_SEED       seed (default 20100601)
+  SELFALIGN_FUZZ_API_CALLS  number of calls (default 1500)
+"""
+
+import json
+import math
+import os
+import random
+import re
+import select
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+SEED = int(os.environ.get("SELFALIGN_FUZZ_SEED", "20100601"))
+CALLS = int(os.environ.get("SELFALIGN_FUZZ_API_CALLS", "1500"))
+CALL_TIMEOUT = float(os.environ.get("SELFALIGN_FUZZ_API_TIMEOUT", "6"))
+MEMORY_LIMIT = 4 << 30  # address space of the worker: a runaway allocation fails, not the machine
+# InvalidParameter shows the name and the value up to 60 characters, the range up to 240 (src/error.cpp)
+MAX_MESSAGE = 500
+
+PRELUDE = ("import math, numpy as np, selfalign as sa; nan, inf = math.nan, math.inf; "
+           "P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3); "
+           "Q = sa.PiecewiseConstantProfile.from_accelerations([0.3, 0.4, 0.3], [0.0, -3.0, 4.0]); "
+           "R = sa.FourierProfile(1.0, [0.04], [0.0]); "
+           "F = sa.TwoRegionFriction(0.5, 0.05, 2.5); U = sa.UniformFriction()")
+
+INTERNALS = ["std::", "vector::", "bad_alloc", "bad_array_new_length", "basic_string", "_M_",
+             "Unable to cast", "json.exception", "terminate called", "nlohmann", "tbb::",
+             "PYBIND11", "Eigen", "__cxa"]
+ALLOWED_TYPES = ("InvalidParameter", "ValueError", "TypeError")
+
+# ---- argument pools (Python source) ----------------------------------------------------------
+
+BAD_FLOAT = ["nan", "inf", "-inf", "0.0", "-0.0", "-1.0", "1e308", "-1e308", "5e-324", "1e-300",
+             "2**2000", "'x'", "None", "[1.0]", "True", "np.float64('nan')", "1j", "''"]
+BAD_INT = ["0", "-1", "3", "4", "100", "2**31", "2**63", "10**30", "-(2**31) - 1", "1.5", "'3'", "None", "nan",
+           "np.int64(-5)", "2**64"]
+BAD_ARRAY = ["[]", "[nan]", "[inf]", "[1e308, -1e308]", "np.zeros((2, 2))", "'abc'", "[[1.0, 2.0]]",
+             "None", "[1.0, 'a']", "np.array([1.0, nan])", "[5e-324]", "[-1.0]", "[0.0, 0.0]",
+             "np.array([1, 2], dtype=np.int8)", "np.array([], dtype=float)", "{1: 2}"]
+BAD_CALLBACK = ["42", "lambda: None", "'x'"]
+RAISING_CALLBACK = "lambda done, total: 1 / 0"   # the user's exception may propagate as is
+
+# Parameter spec: (valid source values, bad source values, big source values).
+# Big values ask for unbounded work or memory: they must be refused (or done) within the timeout.
+FL = lambda *valid: (list(valid), BAD_FLOAT, [])           # noqa: E731
+IN = lambda *valid, big=(): (list(valid), BAD_INT, list(big))  # noqa: E731
+AR = lambda *valid, big=(): (list(valid), BAD_ARRAY, list(big))  # noqa: E731
+
+PROFILES = (["P", "Q"], ["R", "None", "F", "sa.ThreePhaseParameters(1, 0.084, 2.3, 1.3)", "1"], [])
+TPROFILES = (["P"], ["Q", "R", "None", "'P'"], [])
+FRICTIONS = (["F", "U"], ["None", "P", "sa.TwoRegionFriction(0.5, 5e-324, 2.5)",
+                          "sa.TwoRegionFriction(1e308, 0.05, 2.5)", "sa.UniformFriction(1e308)"], [])
+TWO_REGION = (["F"], ["U", "None", "sa.TwoRegionFriction(0.5, 5e-324, 2.5)",
+                      "sa.TwoRegionFriction(0.5, 0.05, 1e308)", "sa.TwoRegionFriction(-1e308, 1e308, 3e16)"], [])
+THREADS = IN("0", "1", "2", big=["10**9", "2**31 - 1"])
+PROGRESS = (["None", "lambda done, total: None"], BAD_CALLBACK + [RAISING_CALLBACK], [])
+METHOD = (["'exact'", "'time-stepping'", "sa.Method.exact"],
+          ["'x'", "''", "None", "sa.Method(5)", "5", "sa.Method(-1)"], [])
+INTERP = (["'constant'", "'linear'", "sa.Interpolation.linear"],
+          ["'cubic'", "None", "sa.Interpolation(7)", "3", "''"], [])
+SMALL_A2 = AR("[1.0, 2.3]", "np.array([0.5, 3.0])", big=["np.linspace(0.1, 3, 100000)"])
+SMALL_A3 = AR("[1.3]", "[0.9, 2.0]", big=["np.linspace(0.1, 3, 100000)"])
+PERIODS_GRID = AR("[0.5, 1.0]", "[2.0]", big=["np.linspace(0.1, 3, 10**6)"])
+BOOL = (["True", "False"], ["None", "'yes'", "2"], [])
+
+# (template, {parameter: spec}, validator). A template assigns `result`.
+CATALOGUE = [
+    ("result = sa.Scales({length_m}, {mu}, {gravity}).time",
+     {"length_m": FL("1e-3"), "mu": FL("0.3"), "gravity": FL("9.81")}, "finite_if_finite_inputs"),
+    ("result = sa.Scales(1e-3, 0.3).{conv}({value})",
+     {"conv": (["length_to_si", "time_from_si", "velocity_to_si", "acceleration_from_si"], [], []),
+      "value": (["1.0", "[1.0, 2.0]"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
+    ("result = sa.UniformFriction({level}).bound({x})",
+     {"level": FL("1.0"), "x": (["0.3", "[0.0, 1.0]"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
+    ("f = sa.TwoRegionFriction({x_mu}, {width}, {c_mu}); result = (f.bound({x}), f.pieces(), f.b1, f.b2)",
+     {"x_mu": FL("0.5"), "width": FL("0.05"), "c_mu": FL("2.5"),
+      "x": (["0.52", "np.linspace(0, 1, 5)"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
+    ("result = sa.solve_three_phase(sa.ThreePhaseParameters({period}, {stroke}, {a2}, {a3}))",
+     {"period": FL("1.0"), "stroke": FL("0.084"), "a2": FL("2.3", "1e5"), "a3": FL("1.3", "0.9")}, "solution"),
+    ("result = sa.predict_case(sa.ThreePhaseParameters({period}, {stroke}, {a2}, {a3}))",
+     {"period": FL("1.0"), "stroke": FL("0.084"), "a2": FL("2.3"), "a3": FL("1.3")}, "none"),
+    ("p = sa.ThreePhaseParameters(1.0, 0.084, 2.3, 1.3); p.{attr} = {value}; p.validate(); "
+     "result = sa.ThreePhaseProfile(p).sample(np.linspace(0, 1, 11))",
+     {"attr": (["period", "stroke", "a2", "a3"], [], []), "value": FL("1.5")}, "finite_if_finite_inputs"),
+    ("result = sa.ThreePhaseProfile({period}, {stroke}, {a2}, {a3}).sample({t})",
+     {"period": FL("1.0"), "stroke": FL("0.084"), "a2": FL("2.3"), "a3": FL("1.3"),
+      "t": (["0.25", "np.linspace(0, 2, 7)"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
+    ("q = sa.PiecewiseConstantProfile.from_accelerations({durations}, {accels}); "
+     "result = (q.sample({t}), q.segment_at({phase}), q.phase({t}), q.segments())",
+     {"durations": AR("[0.3, 0.4, 0.3]"), "accels": AR("[0.0, -3.0, 4.0]"),
+      "t": FL("0.5"), "phase": FL("0.1")}, "finite_if_finite_inputs"),
+    ("r = sa.FourierProfile({period}, {cos}, {sin}); result = (r.sample({t}), r.stroke, r.peak_acceleration)",
+     {"period": FL("1.0"), "cos": AR("[0.04]", "[0.04, 0.01]", big=["np.full(10**6, 1e-9)"]),
+      "sin": AR("[0.0]", "[]"), "t": FL("0.3")}, "finite_if_finite_inputs"),
+    ("s = sa.AccelerationSamples({t}, {ydd}); result = sa.make_sampled_profile(s, {interp}).sample(0.3)",
+     {"t": AR("[0.0, 0.5, 1.0]", "[0.0, 0.25, 0.5, 0.75, 1.0]"),
+      "ydd": AR("[1.0, -1.0, 0.0]", "[0.0, 1.0, 0.0, -1.0, 0.0]"), "interp": INTERP}, "finite_if_finite_inputs"),
+    ("s = sa.AccelerationSamples([0.0, 0.5, 1.0], [1.0, -1.0, 0.0]); s.{attr} = {value}; "
+     "result = sa.make_sampled_profile(s).sample(0.3)",
+     {"attr": (["t", "ydd"], [], []), "value": AR("[0.0, 0.5, 1.0]")}, "finite_if_finite_inputs"),
+    ("result = sa.LinearAccelerationProfile(sa.AccelerationSamples({t}, {ydd})).sample(0.5)",
+     {"t": AR("[0.0, 0.5, 1.0]"), "ydd": AR("[0.0, 1.0, 0.0]")}, "finite_if_finite_inputs"),
+    ("result = sa.read_acceleration_samples({path})",
+     {"path": (["'/dev/null'"], ["'/nonexistent.csv'", "'/'", "''", "None", "123", "'\\x00'",
+                                  "b'/nonexistent'", "'x' * 5000"], [])}, "none"),
+    ("result = sa.simulate({profile}, {friction}, sa.ObjectState({t0}, {x0}, {xd0}), "
+     "sa.SimulationOptions(method={method}, duration={duration}, step={step}, theta={theta}, "
+     "output_step={output_step}, record={record}))",
+     {"profile": PROFILES, "friction": FRICTIONS, "t0": FL("0.0", "0.25"), "x0": FL("0.0", "0.45"),
+      "xd0": FL("0.0", "-0.1"), "method": METHOD, "duration": (["2.0", "0.5"], BAD_FLOAT, ["1e12", "1e308"]),
+      "step": (["1e-3"], BAD_FLOAT, ["1e-12"]), "theta": FL("0.5", "1.0"),
+      "output_step": (["0.0", "0.05"], BAD_FLOAT, ["1e-12"]), "record": BOOL}, "simulation"),
+    ("s = sa.make_exact_state({profile}, {friction}, sa.ObjectState({t0}, {x0}, {xd0})); s.{attr} = {value}; "
+     "n = sa.advance_exact({profile}, {friction}, s, {t_end}); result = (n, s.object, s.segment, s.period_index)",
+     {"profile": PROFILES, "friction": FRICTIONS, "t0": FL("0.0"), "x0": FL("0.0"), "xd0": FL("0.0"),
+      "attr": (["segment", "period_index"], [], []),
+      "value": IN("0", "1", "2"), "t_end": (["2.0"], BAD_FLOAT, [])}, "exact_state"),
+    ("s = sa.make_exact_state(P, F); s.object = sa.ObjectState({t}, {x}, {xd}); "
+     "n = sa.advance_exact(P, F, s, {t_end}); result = (n, s.object)",
+     {"t": FL("0.0", "0.5"), "x": FL("0.0", "0.6"), "xd": FL("0.0", "0.1"),
+      "t_end": (["2.0"], BAD_FLOAT, [])}, "exact_state"),
+    ("result = sa.exact_arcs({profile}, {friction}, sa.ObjectState(), {duration})",
+     {"profile": PROFILES, "friction": FRICTIONS, "duration": (["2.0"], BAD_FLOAT, ["1e12"])}, "finite_arrays"),
+    ("result = sa.sticks({a}, {bound})", {"a": FL("0.5"), "bound": FL("1.0")}, "none"),
+    ("o = sa.TimeSteppingOptions(step={step}, theta={theta}); s = sa.make_time_stepping_state({profile}); "
+     "s.{attr} = {value}; sa.advance_time_stepping({profile}, {friction}, o, s, {steps}); result = s.object",
+     {"step": (["1e-3"], BAD_FLOAT, ["5e-324"]), "theta": FL("0.5"), "profile": PROFILES,
+      "friction": FRICTIONS, "attr": (["step_index", "t0", "table_velocity", "stick"], [], []),
+      "value": (["0", "1.0"], BAD_FLOAT + BAD_INT, []),
+      "steps": IN("10", "100", big=["10**12", "2**62"])}, "object_state"),
+    ("result = sa.steady_state({profile}, sa.SteadyStateOptions(max_periods={max_periods}, "
+     "velocity_tol={tol}, steps_per_period={spp}, theta={theta}, stepping_tol={stol}))",
+     {"profile": (["P", "Q"], ["None", "F", "1"], []), "max_periods": IN("200", "20"),
+      "tol": FL("1e-13"), "spp": IN("4000", "100"), "theta": FL("0.5"), "stol": FL("0.0")}, "steady"),
+    ("result = sa.objective_f({v}, {c})",
+     {"v": (["0.05", "np.array([0.0, 0.1])"], BAD_FLOAT + BAD_ARRAY, []), "c": FL("10000.0")},
+     "finite_or_inf_if_finite_inputs"),
+    ("result = sa.make_monodromy({matrix}).multipliers",
+     {"matrix": (["[[1.0, 0.0], [0.0, 0.5]]", "np.eye(2)"],
+                 BAD_ARRAY + ["[[nan, 0], [0, 1]]", "[[1e308, 1e308], [1e308, 1e308]]", "np.eye(3)"], [])},
+     "finite_if_finite_inputs"),
+    ("result = sa.floquet_multipliers({profile}, sa.FloquetOptions(fd_step={h}))",
+     {"profile": PROFILES, "h": FL("1e-7", "1e-5")}, "floquet"),
+    ("result = sa.slip_slip_multiplier({a2}, {a3})",
+     {"a2": (["2.3", "[2.0, 3.0]"], BAD_FLOAT + BAD_ARRAY, []), "a3": (["1.3", "[1.5, 2.5]"], BAD_FLOAT + BAD_ARRAY, [])},
+     "finite_if_finite_inputs"),
+    ("result = sa.velocity_convergence({profile}, sa.ConvergenceOptions(v1={v1}, v2={v2}, t0={t0}, "
+     "duration={duration}, samples_per_period={spp}))",
+     {"profile": PROFILES, "v1": FL("0.5"), "v2": FL("-0.5"), "t0": FL("0.0"),
+      "duration": (["2.0"], BAD_FLOAT, ["1e12"]), "spp": IN("50", "1", big=["10**9"])}, "convergence"),
+    ("result = sa.{grid}({lo}, {hi}, {n})",
+     {"grid": (["linear_grid", "log_grid"], [], []), "lo": FL("0.1"), "hi": FL("3.0"),
+      "n": IN("5", "1", big=["10**9", "2**31 - 1"])}, "finite_if_finite_inputs"),
+    ("result = sa.sweep_accelerations({period}, {stroke}, {a2}, {a3}, threads={threads}, progress={progress})",
+     {"period": FL("1.0"), "stroke": FL("0.084"), "a2": SMALL_A2, "a3": SMALL_A3, "threads": THREADS,
+      "progress": PROGRESS}, "sweep"),
+    ("result = sa.sweep_period({family}, {stroke}, {periods}, threads={threads}, progress={progress})",
+     {"family": (["sa.ThreePhaseFamily(2.3, 1.3)", "sa.ScaledShapeFamily.paper_like()",
+                  "sa.ScaledFourierFamily([0.04], [0.0])"],
+                 ["sa.ThreePhaseFamily(nan, 1.3)", "sa.ScaledFourierFamily([], [])", "None", "P",
+                  "sa.ScaledShapeFamily(Q)"], []),
+      "stroke": FL("0.084"), "periods": PERIODS_GRID, "threads": THREADS, "progress": PROGRESS}, "sweep"),
+    ("result = sa.sweep_stroke({family}, {period}, {strokes}, threads={threads})",
+     {"family": (["sa.ThreePhaseFamily(2.3, 1.3)", "sa.ScaledShapeFamily.paper_like()"],
+                 ["sa.ThreePhaseFamily(2.3, -1.0)", "None"], []),
+      "period": FL("1.0"), "strokes": AR("[0.05, 0.084]"), "threads": THREADS}, "sweep"),
+    ("result = {family}.make({period}, {stroke})",
+     {"family": (["sa.ThreePhaseFamily(2.3, 1.3)", "sa.ScaledShapeFamily.paper_like()",
+                  "sa.ScaledFourierFamily([0.04], [0.0])"], ["sa.ThreePhaseFamily(0.0, 1.3)"], []),
+      "period": FL("1.0"), "stroke": FL("0.084")}, "none"),
+    ("result = (sa.sticks_permanently({friction}, {peak}, {x}), sa.stick_position_min({friction}, {peak}))",
+     {"friction": TWO_REGION, "peak": FL("2.3"), "x": (["0.6", "[0.5, 0.6]"], BAD_FLOAT + BAD_ARRAY, [])},
+     "finite_or_inf_if_finite_inputs"),
+    ("m = sa.StickPositionMap({profile}, {friction}); result = (m({x}), m.fixed_point(), "
+     "m.slope_at_fixed_point(), m.basin_lower_bound(), m.accumulates_for_every_entry(), "
+     "m.proves_accumulation_from({x1}), m.slip_duration({x}))",
+     {"profile": TPROFILES, "friction": TWO_REGION,
+      "x": (["0.52", "np.linspace(0.5, 0.55, 4)"], BAD_FLOAT + BAD_ARRAY, []), "x1": FL("0.52")},
+     "finite_if_finite_inputs"),
+    ("result = sa.stopping_run({profile}, {friction}, sa.ObjectState({t0}, {x0}, {v0}), "
+     "sa.StoppingOptions(max_periods={max_periods}, fractions={fractions}))",
+     {"profile": PROFILES, "friction": TWO_REGION, "t0": FL("0.0"), "x0": FL("0.0", "0.45"),
+      "v0": FL("0.0"), "max_periods": IN("200", "20"),
+      "fractions": AR("[0.99, 0.999]", "[0.5]")}, "stopping"),
+    ("result = sa.positioning_accuracy({profile}, {width}, {c_mu}, sa.PositioningOptions(entries={entries}, "
+     "stopping=sa.StoppingOptions(max_periods={max_periods}), stop_at_first_failure={first}))",
+     {"profile": PROFILES, "width": FL("0.05"), "c_mu": FL("2.5"), "entries": IN("3", "1", big=["10**9"]),
+      "max_periods": IN("200"), "first": BOOL}, "positioning"),
+    ("result = sa.positioning_surfaces({period}, {stroke}, {width}, {c_mu}, {a2}, {a3}, "
+     "options=sa.PositioningOptions(entries={entries}, stopping=sa.StoppingOptions(max_periods=100)), "
+     "threads={threads}, progress={progress})",
+     {"period": FL("1.0"), "stroke": FL("0.084"), "width": FL("0.05"), "c_mu": FL("2.5"),
+      "a2": AR("[2.3]", "[1.5, 2.5]"), "a3": AR("[1.3]"), "entries": IN("3", big=["10**9"]),
+      "threads": THREADS, "progress": PROGRESS}, "positioning_surfaces"),
+    ("r = sa.DesignRequest(); r.acceleration_grid = 4; r.period_grid = 2; r.stroke_grid = 1; r.entries = 3; "
+     "r.{attr} = {value}; result = sa.design_process(r, threads={threads}, progress={progress})",
+     {"attr": (["width", "mu", "c_mu", "gravity", "distance", "stroke_max", "frequency_min", "frequency_max",
+                "velocity_max", "acceleration_max", "tolerance", "mass"], [], []),
+      "value": FL("0.01", "0.3"), "threads": THREADS, "progress": PROGRESS}, "design"),
+    ("r = sa.DesignRequest(); r.acceleration_grid = 4; r.period_grid = 2; r.stroke_grid = 1; r.entries = 3; "
+     "r.{attr} = {value}; result = sa.design_process(r)",
+     {"attr": (["acceleration_grid", "period_grid", "stroke_grid", "entries"], [], []),
+      "value": IN("2", "3", big=["10**9"])}, "design"),
+    ("result = sa.{optimizer}(sa.ActuatorLimits(period={period}, stroke={stroke}, max_velocity={vmax}, "
+     "max_acceleration={amax}), sa.OptimizeOptions(order={order}, segments={segments}, starts={starts}, "
+     "max_evaluations={evals}, seed={seed}, grid=8))",
+     {"optimizer": (["optimize_three_phase", "optimize_piecewise_constant", "optimize_fourier"], [], []),
+      "period": FL("0.072"), "stroke": FL("0.021"), "vmax": FL("3.2"), "amax": FL("1275.0"),
+      "order": IN("3", "1", big=["10**9", "2**31 - 1"]), "segments": IN("3", "2", big=["10**9"]),
+      "starts": IN("1"), "evals": IN("30"), "seed": IN("1", "0")}, "optimization"),
+    ("result = sa.rebuild_profile(sa.compare_families(sa.ActuatorLimits(stroke={stroke}), "
+     "sa.OptimizeOptions(order=2, segments=2, starts=1, max_evaluations=20, grid=8))[{k}])",
+     {"stroke": FL("0.021", "0.084"), "k": (["0", "1", "2"], [], [])}, "none"),
+    ("result = {enum}({value})",
+     {"enum": (["sa.Method", "sa.Interpolation", "sa.StopKind", "sa.StickSlipCase", "sa.describe",
+                "sa.ArcKind", "sa.ArcEnd"], [], []),
+      "value": (["0", "1"], ["5", "-1", "2**40", "'x'", "''", "None", "1.5", "'exact'", "'linear'"], [])},
+     "none"),
+    ("result = sa.simulate(P, F, options=sa.SimulationOptions(method=sa.Method({value}), duration=1.0))",
+     {"value": (["0", "1"], ["2", "5", "-1", "255"], [])}, "simulation"),
+    ("result = sa.make_sampled_profile(sa.AccelerationSamples([0.0, 0.5, 1.0], [1.0, -1.0, 0.0]), "
+     "sa.Interpolation({value})).sample(0.3)",
+     {"value": (["0", "1"], ["2", "7", "-1"], [])}, "finite_if_finite_inputs"),
+    ("o = sa.SimulationOptions(); o.{attr} = {value}; result = sa.simulate(P, F, options=o)",
+     {"attr": (["duration", "step", "theta", "output_step"], [], []), "value": FL("1.0")}, "simulation"),
+    ("o = sa.SteadyStateOptions(); o.{attr} = {value}; result = sa.steady_state(Q, o)",
+     {"attr": (["max_periods", "steps_per_period"], [], []), "value": IN("50")}, "steady"),
+    ("o = sa.OptimizeOptions(starts=1, max_evaluations=20, grid=8); o.{attr} = {value}; "
+     "result = sa.optimize_piecewise_constant(sa.ActuatorLimits(), o)",
+     {"attr": (["order", "segments"], [], []), "value": IN("2", big=["10**9"])}, "optimization"),
+    ("s = sa.steady_state(P); s.v_bar = {value}; result = s.v_bar",
+     {"value": (["1.0"], [], [])}, "readonly"),
+]
+
+# Calls 0 .. len(CORPUS)-1: fixed, one per known defect class of the module (see
+# ../shared/repro/D02, D03, D11, D13) and per contract item; random calls follow.
+CORPUS = [
+    ("result = sa.sweep_accelerations(1.0, 0.084, [2.0], [1.5], threads=10**9)", "sweep"),
+    ("s = sa.make_exact_state(P, F); s.segment = 3; result = (sa.advance_exact(P, F, s, 2.0), s.object)",
+     "exact_state"),
+    ("s = sa.make_exact_state(P, F); s.segment = -1; result = (sa.advance_exact(P, F, s, 2.0), s.object)",
+     "exact_state"),
+    ("s = sa.make_exact_state(Q, F); s.period_index = 2**62; result = (sa.advance_exact(Q, F, s, 2.0), s.object)",
+     "exact_state"),
+    ("result = sa.simulate(P, F, options=sa.SimulationOptions(duration=1e308))", "simulation"),
+    ("result = sa.optimize_fourier(sa.ActuatorLimits(), sa.OptimizeOptions(order=10**9, starts=1))", "optimization"),
+    ("result = sa.objective_f(2**2000)", "finite_or_inf_if_finite_inputs"),
+    ("result = sa.linear_grid(1e308, 1.0, 3)", "finite_if_finite_inputs"),
+    ("result = sa.FourierProfile(1e-320, [0.04], [0.0]).stroke", "finite_if_finite_inputs"),
+    ("result = sa.linear_grid(0.0, 1.0, 10**9)", "finite_if_finite_inputs"),
+    ("result = sa.simulate(P, F, options=sa.SimulationOptions(method=sa.Method(5), duration=1.0))", "simulation"),
+    ("result = sa.make_sampled_profile(sa.AccelerationSamples([0.0, 0.5, 1.0], [1.0, -1.0, 0.0]), "
+     "sa.Interpolation(7)).sample(0.3)", "finite_if_finite_inputs"),
+    ("result = sa.TwoRegionFriction(0.5, -1.0, 2.5)", "none"),
+    ("result = sa.TwoRegionFriction('a', 1, 2)", "none"),
+    ("result = sa.sweep_accelerations(1.0, 0.084, [2.0, 3.0], [1.5], progress=lambda done, total: 1 / 0)", "sweep"),
+    ("result = sa.velocity_convergence(P, sa.ConvergenceOptions(v2=-1e308, duration=2.0))", "convergence"),
+    ("result = sa.floquet_multipliers(P, sa.FloquetOptions(fd_step=1e308))", "floquet"),
+    ("result = sa.read_acceleration_samples('x' * 5000)", "none"),
+    ("result = sa.slip_slip_multiplier(-1.0, 1.0)", "finite_if_finite_inputs"),
+    ("result = sa.positioning_accuracy(P, 0.05, 3e16, sa.PositioningOptions(entries=1))", "positioning"),
+]
+
+# ---- the worker: runs calls, one JSON line per START and per outcome --------------------------
+
+
+def make_call(index, seed):
+    """Deterministic: (code, parameters, validator, big)."""
+    if index < len(CORPUS):
+        code, validator = CORPUS[index]
+        return code, [], validator, False
+    rng = random.Random(f"api:{seed}:{index}")
+    template, params, validator = CATALOGUE[rng.randrange(len(CATALOGUE))]
+    values, big = {}, False
+    names = list(params)
+    n_bad = rng.choice([0, 1, 1, 1, 2])
+    bad = set(rng.sample(names, min(n_bad, len(names))))
+    for name in names:
+        valid, bad_pool, big_pool = params[name]
+        if name in bad and (bad_pool or big_pool):
+            if big_pool and rng.random() < 0.25:
+                values[name] = rng.choice(big_pool)
+                big = True
+            else:
+                values[name] = rng.choice(bad_pool or valid)
+        else:
+            values[name] = rng.choice(valid)
+    return template.format(**values), names, validator, big
+
+
+def has_nonfinite_input(code):
+    return bool(re.search(r"\bnan\b|\binf\b|1e308|2\*\*2000|'nan'|1e-300|5e-324", code))
+
+
+def nan_in(x):
+    import numpy as np
+    if x is None or isinstance(x, (bool, str)):
+        return False
+    if isinstance(x, float):
+        return math.isnan(x)
+    if isinstance(x, (int,)):
+        return False
+    if isinstance(x, complex):
+        return math.isnan(x.real) or math.isnan(x.imag)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind in "fc" and bool(np.isnan(x).any())
+    if isinstance(x, np.generic):
+        return bool(np.isnan(x)) if x.dtype.kind in "fc" else False
+    if isinstance(x, (list, tuple)):
+        return any(nan_in(v) for v in x)
+    if isinstance(x, dict):
+        return any(nan_in(v) for v in x.values())
+    return False
+
+
+def nonfinite_in(x):
+    import numpy as np
+    if isinstance(x, float):
+        return not math.isfinite(x)
+    if isinstance(x, np.ndarray):
+        return x.dtype.kind in "fc" and not bool(np.isfinite(x).all())
+    if isinstance(x, (list, tuple)):
+        return any(nonfinite_in(v) for v in x)
+    if isinstance(x, dict):
+        return any(nonfinite_in(v) for v in x.values())
+    return False
+
+
+def validate(result, validator, code):
+    """Returns a failure description or None. Each allowance cites the docstring it rests on."""
+    import numpy as np
+    import selfalign as sa
+    clean = not has_nonfinite_input(code)
+    if validator in ("none", "readonly"):
+        return None
+    if validator.startswith("finite") and clean and "None" in code and nan_in(result):
+        return "None argument taken as NaN"
+    if validator == "finite_if_finite_inputs":
+        if clean and nan_in(result):
+            return "NaN result from non-NaN inputs"
+        return None
+    if validator == "finite_or_inf_if_finite_inputs":
+        # objective_f: "+inf where v̄ = 0"; stick_position_min: "+inf when it exceeds c_mu"
+        if clean and nan_in(result):
+            return "NaN result from non-NaN inputs"
+        return None
+    if validator == "solution":
+        if result.physical and nan_in([result.t1, result.t2, result.t3, result.y_ini, result.yd_ini]):
+            return "physical ThreePhaseSolution with NaN"
+        return None
+    if validator == "simulation":
+        tr = result.trajectory
+        bad = [k for k in ("t", "x", "xd", "y", "yd", "ydd") if nan_in(getattr(tr, k))]
+        fs = result.final_state
+        if nan_in([fs.t, fs.x, fs.xd]):
+            bad.append("final_state")
+        # mean_velocity_last_period: "NaN if the run is shorter than a period" (docstring)
+        if nan_in(result.stick_fraction) and len(tr) > 0:
+            bad.append("stick_fraction")
+        return f"NaN in {bad}" if bad else None
+    if validator == "exact_state":
+        n, obj = result[0], result[1]
+        return "NaN object state" if clean and nan_in([obj.t, obj.x, obj.xd]) else None
+    if validator == "object_state":
+        return "NaN object state" if clean and nan_in([result.t, result.x, result.xd]) else None
+    if validator == "finite_arrays":
+        return "NaN in arrays" if nan_in(result) else None
+    if validator == "steady":
+        # SteadyState.f: "+inf when v̄ = 0" (docstring): inf allowed there only
+        vals = [result.v_bar, result.x_dot_0s, result.phase, result.displacement, result.f]
+        if nan_in(vals):
+            return f"NaN in steady state {vals}"
+        if math.isinf(result.f) and result.v_bar != 0:
+            return f"f = inf with v_bar = {result.v_bar}"
+        return None
+    if validator == "floquet":
+        bad = [m for m in ("analytic", "saltation", "finite_difference")
+               if getattr(result, m).available and (nan_in(getattr(result, m).matrix)
+                                                    or nan_in(getattr(result, m).multipliers))]
+        if nan_in(result.spread):
+            bad.append("spread")
+        return f"NaN in {bad}" if bad else None
+    if validator == "convergence":
+        # t_coincide: "None if not reached" (docstring); the arrays are numbers
+        bad = [k for k in ("t", "v1", "v2", "lyapunov") if nonfinite_in(getattr(result, k))]
+        return f"non-finite in {bad}" if bad else None
+    if validator == "sweep":
+        # sweep_accelerations / sweep_period docstrings: v_bar, f, x_dot_0s NaN for case 0 / where the
+        # family has no member / where the cell could not be computed (failure != '').
+        case = result.get("observed")
+        failure = result.get("failure")
+        physical = result.get("physical")
+        for k in ("v_bar", "f", "x_dot_0s"):
+            if k not in result:
+                continue
+            arr = np.asarray(result[k], dtype=float)
+            allowed = np.zeros(arr.shape, dtype=bool)
+            for extra in (None if case is None else np.asarray(case) == 0,
+                          None if physical is None else ~np.asarray(physical, dtype=bool),
+                          None if failure is None else np.asarray(failure) != ""):
+                if extra is not None and extra.shape == arr.shape:
+                    allowed |= extra
+            if bool((np.isnan(arr) & ~allowed).any()):
+                return f"NaN in '{k}' of a physical, computed cell"
+        return None
+    if validator == "stopping":
+        # entry_time "NaN if never", time_to_fraction "NaN if not reached", process_time "+inf for
+        # accumulation" (docstrings); end_position is a number unless the run did not stop.
+        if nan_in(result.stick_positions):
+            return "NaN stick position"
+        if result.kind != sa.StopKind.not_stopped and nan_in(result.end_position):
+            return f"NaN end_position for {result.kind}"
+        if result.kind == sa.StopKind.permanent_stick and nan_in(result.process_time):
+            return "NaN process_time for permanent stick"
+        return None
+    if validator == "positioning":
+        if not result.reaches:
+            return None   # "False when v̄ <= 0: the object never walks into the region"
+        s = result.steady
+        if nan_in([s.v_bar, s.x_dot_0s, result.x_mu]):
+            return "NaN in steady state / x_mu"
+        if result.all_stopped and nan_in([result.dx_d, result.x_d, result.overshoot_min, result.overshoot_max]):
+            return "every entry stopped but dx_d / x_d / overshoot is NaN"
+        stopped = [r.kind != sa.StopKind.not_stopped for r in result.runs]
+        ends = np.asarray(result.end_positions, dtype=float)
+        if len(stopped) == len(ends) and bool((np.isnan(ends) & np.asarray(stopped, dtype=bool)).any()):
+            return "NaN end position for an entry that stopped"
+        return None
+    if validator == "positioning_surfaces":
+        # docstring: 'dx_d' NaN where the object does not come to rest; f: NaN for case 0 (as the CLI)
+        f = np.asarray(result["f"], dtype=float)
+        if bool((np.isnan(f) & (np.asarray(result["case"]) != 0)).any()):
+            return "NaN f in a physical cell"
+        return None
+    if validator == "design":
+        if not result.feasible:
+            return None   # "message: why not, naming the binding limit": no design, no numbers
+        vals = [result.period, result.stroke, result.a2, result.a3, result.v_bar, result.x_mu,
+                result.end_position, result.error_band]
+        return f"feasible design with NaN {vals}" if nan_in(vals) else None
+    if validator == "optimization":
+        if result.feasible and nan_in([result.f, result.v_bar, result.parameters]):
+            return "feasible optimum with NaN"
+        return None
+    return None
+
+
+_API_NAMES = None
+
+
+def api_parameter_names():
+    """Every parameter name in the module's signatures (docstrings' first lines)."""
+    global _API_NAMES
+    if _API_NAMES is None:
+        import selfalign as sa
+        names = set()
+        for obj in vars(sa).values():
+            members = [a for a in dir(obj) if not a.startswith("__") or a == "__init__"] \
+                if isinstance(obj, type) else []
+            for o in [obj] + [getattr(obj, a, None) for a in members]:
+                doc = getattr(o, "__doc__", None) or ""
+                names |= set(re.findall(r"[(,]\s*\*?\s*([a-z_][a-z0-9_]*)\s*:", doc))
+        names = {n for n in names if len(n) > 1} - {"self", "arg0", "arg1", "value", "str", "result"}
+        _API_NAMES = names
+    return _API_NAMES
+
+
+def message_problem(exc, names, code):
+    kind = type(exc).__name__
+    msg = str(exc)
+    callback_raise = RAISING_CALLBACK in code
+    if kind == "ZeroDivisionError" and callback_raise:
+        return None   # the user's own callback raised: propagating it is right
+    if kind == "AttributeError" and re.search(r"\b[a-z]\.[a-z_]+ = ", code) and \
+            re.search(r"has no setter|can't set attribute|read-only|not writable", msg):
+        return None   # assigning a read-only property: Python's own answer
+    if kind not in ALLOWED_TYPES:
+        return f"exception type {kind}"
+    for marker in INTERNALS:
+        if marker in msg:
+            return f"internals {marker!r} in message"
+    pybind_signature = kind == "TypeError" and "incompatible" in msg and "arguments" in msg
+    if "\n" in msg.strip() and not pybind_signature:
+        return "multi-line message"
+    if len(msg) > MAX_MESSAGE and not pybind_signature:
+        return f"message of {len(msg)} characters"
+    if kind == "InvalidParameter":
+        if not exc.name or not msg.startswith(f"invalid {exc.name} = "):
+            return f"InvalidParameter without its name (name={exc.name!r})"
+        return None
+    if pybind_signature:
+        return None   # pybind11 lists the signature: every parameter by name and type
+    words = set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", msg))
+    known = set(names) | set(re.findall(r"[A-Za-z_][A-Za-z0-9_]*", code)) | api_parameter_names()
+    if not (words & known) and not callback_raise:
+        return "message names no parameter"
+    return None
+
+
+def worker(seed, start, stop):
+    import faulthandler
+    import resource
+    faulthandler.enable()
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    env = {}
+    exec(PRELUDE, env)
+    out = sys.stdout
+    for i in range(start, stop):
+        code, names, validator, big = make_call(i, seed)
+        out.write(json.dumps({"i": i, "start": True}) + "\n")
+        out.flush()
+        ns = dict(env)
+        problem = None
+        t0 = time.monotonic()
+        try:
+            exec(code, ns)
+            try:
+                problem = validate(ns.get("result"), validator, code)
+            except Exception as e:   # a result that cannot even be inspected
+                problem = f"inspecting the result raised {type(e).__name__}: {str(e)[:120]}"
+            outcome = "result"
+        except BaseException as e:   # noqa: B036 (we classify every exception)
+            if isinstance(e, KeyboardInterrupt):
+                raise
+            problem = message_problem(e, names, code)
+            outcome = f"{type(e).__name__}: {str(e)[:200]}"
+        out.write(json.dumps({"i": i, "outcome": outcome, "problem": problem,
+                              "seconds": round(time.monotonic() - t0, 3)}) + "\n")
+        out.flush()
+
+
+# ---- the parent ------------------------------------------------------------------------------
+
+
+def run_calls(seed, count, timeout=CALL_TIMEOUT):
+    """Runs calls 0..count-1 in worker processes; returns {index: (outcome, problem)}."""
+    results = {}
+    start = 0
+    here = os.path.abspath(__file__)
+    while start < count:
+        # stderr to a file: a chatty worker must not block on a full pipe
+        err_file = tempfile.TemporaryFile()
+        proc = subprocess.Popen([sys.executable, "-X", "faulthandler", here, "--worker", str(seed),
+                                 str(start), str(count)], stdout=subprocess.PIPE,
+                                stderr=err_file, start_new_session=True)
+        current, buf, heard = None, b"", False
+        deadline = time.monotonic() + 60 + timeout   # import and the first call
+        while True:
+            ready, _, _ = select.select([proc.stdout], [], [], max(0.0, deadline - time.monotonic()))
+            if not ready:   # the current call hangs
+                os.killpg(proc.pid, signal.SIGKILL)
+                proc.wait()
+                if current is not None:
+                    results[current] = ("hang", f"no return within {timeout:.0f} s")
+                break
+            chunk = os.read(proc.stdout.fileno(), 1 << 16)
+            if not chunk:   # the worker ended
+                proc.wait()
+                break
+            buf += chunk
+            while b"\n" in buf:
+                line, buf = buf.split(b"\n", 1)
+                msg = json.loads(line)
+                heard = True
+                if msg.get("start"):
+                    current = msg["i"]
+                    deadline = time.monotonic() + timeout
+                else:
+                    results[msg["i"]] = (msg["outcome"], msg["problem"])
+                    current = None
+        err_file.seek(0, os.SEEK_END)
+        err_file.seek(max(0, err_file.tell() - 65536))
+        err = err_file.read().decode("utf-8", "replace")   # the tail: faulthandler's report
+        err_file.close()
+        proc.stdout.close()
+        if not heard:
+            raise RuntimeError(f"the fuzz worker ran no call (exit {proc.returncode}): {err[-800:]}")
+        if current is not None and current not in results:
+            rc = proc.returncode
+            how = f"signal {signal.Signals(-rc).name}" if rc is not None and rc < 0 else f"exit {rc}"
+            fault = next((ln for ln in err.splitlines() if "Fatal Python error" in ln), err.strip()[-200:])
+            results[current] = ("crash", f"worker died ({how}): {fault}")
+        nxt = max(results) + 1 if results else start + 1
+        if current is not None:
+            nxt = current + 1
+        start = max(nxt, start + 1)
+    return results
+
+
+def reproducer(code):
+    return f"{sys.executable} -X faulthandler -c {json.dumps(PRELUDE + '; ' + code)}"
+
+
+def report(seed, results):
+    failures = []
+    for i in sorted(results):
+        outcome, problem = results[i]
+        if outcome in ("crash", "hang") or problem:
+            code, _, _, big = make_call(i, seed)
+            if outcome in ("crash", "hang"):
+                failures.append((i, outcome, code, problem))
+            else:
+                failures.append((i, problem, code, outcome))
+    return failures
+
+
+def test_python_api_fuzz():
+    t0 = time.monotonic()
+    results = run_calls(SEED, CALLS)
+    failures = report(SEED, results)
+    kinds = {}
+    for i, what, code, outcome in failures:
+        kind = what.split(":")[0] if what in ("crash", "hang") else re.sub(r"[\d.e+-]{4,}", "N", what)[:60]
+        kinds.setdefault(kind, []).append(i)
+    lines = [f"Python API fuzz: seed {SEED}, {len(results)} calls in {time.monotonic() - t0:.1f} s, "
+             f"{len(failures)} failing (SELFALIGN_FUZZ_SEED={SEED})"]
+    for kind, idx in sorted(kinds.items(), key=lambda kv: -len(kv[1])):
+        lines.append(f"  {len(idx):4d}  {kind}")
+    for i, what, code, outcome in failures[:150]:
+        lines.append(f"call {i}: {what}\n    outcome: {outcome[:240]}\n    reproduce: {reproducer(code)}")
+    assert len(results) == CALLS, f"{CALLS - len(results)} calls never ran"
+    assert not failures, "\n".join(lines)
+
+
+if __name__ == "__main__":
+    if len(sys.argv) >= 2 and sys.argv[1] == "--worker":
+        worker(int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]))
+    else:
+        n = int(sys.argv[1]) if len(sys.argv) > 1 else CALLS
+        res = run_calls(SEED, n)
+        fails = report(SEED, res)
+        for i, what, code, outcome in fails:
+            print(f"call {i}: {what}\n    outcome: {outcome[:240]}\n    reproduce: {reproducer(code)}")
+        print(f"{len(res)} calls, {len(fails)} failing")
