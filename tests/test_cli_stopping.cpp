@@ -274,7 +274,7 @@ TEST(CliSweepPositioning, CsvIsIdenticalForAnyThreadCount) {
   const std::vector<std::string> rows = lines(csv);
   ASSERT_EQ(rows.size(), 10u);
   EXPECT_EQ(rows[0], "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,"
-                     "max_periods_p999");
+                     "max_periods_p999,status");
   EXPECT_EQ(csv_field(rows[1], 0), 1.8);  // row-major, a2 outer
   EXPECT_EQ(csv_field(rows[3], 1), 1.4);
   const json s = json::parse(read_text(box.work_file("t1.summary.json")));
@@ -282,6 +282,7 @@ TEST(CliSweepPositioning, CsvIsIdenticalForAnyThreadCount) {
   EXPECT_EQ(s["cells"], 9);
   EXPECT_EQ(s["entries"], 5);
   EXPECT_EQ(s["max_periods"], 300);
+  EXPECT_EQ(s["failures"]["count"], 0);  // every cell computed (F01: a failure has a status)
 }
 
 // ---------------------------------------------------------------------------------------------

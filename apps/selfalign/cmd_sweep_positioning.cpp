@@ -28,20 +28,21 @@ struct PositioningFlags {
   int max_periods = kDefaultMaxPeriods;
 };
 
-// Header "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,max_periods_p999";
-// a2, a3 as on the grid, row-major with a2 outer; dx_d in the run's units (nan where the object
-// does not arrive or an entry does not stop); periods -1 where no entry accumulates.
+// Header "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,max_periods_p999,
+// status"; a2, a3 as on the grid, row-major with a2 outer; dx_d in the run's units (nan where
+// the object does not arrive or an entry does not stop); periods -1 where no entry accumulates;
+// status ok or failed (a cell that could not be computed; why: the summary's failures).
 std::string cells_csv(const std::vector<PositioningCell>& cells, const std::vector<double>& a2,
                       const std::vector<double>& a3, const OutputUnits& u) {
   std::string csv = "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,"
-                    "max_periods_p999\n";
+                    "max_periods_p999,status\n";
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const PositioningCell& c = cells[k];
     csv += csv_number(a2[k / a3.size()]) + ',' + csv_number(a3[k % a3.size()]) + ',' +
            std::to_string(static_cast<int>(c.motion_case)) + ',' + csv_number(c.f) + ',' +
            (c.accumulates ? "1" : "0") + ',' + csv_number(u.length(c.dx_d)) + ',' +
            std::to_string(c.accumulating_entries) + ',' + std::to_string(c.max_periods_p99) +
-           ',' + std::to_string(c.max_periods_p999) + '\n';
+           ',' + std::to_string(c.max_periods_p999) + ',' + cell_status(c.failure) + '\n';
   }
   return csv;
 }
@@ -79,6 +80,10 @@ json cells_summary(const SimulateConfig& config, const ProfileModel& model,
   j["cells_with_accumulating_entries"] = with_accumulating_entries;
   j["max_periods_p99"] = p99;
   j["max_periods_p999"] = p999;
+  j["failures"] = failures_json(cells, [&](const PositioningCell& c) {
+    return json{{"a2", model.from_model_units(D::acceleration, c.a2)},
+                {"a3", model.from_model_units(D::acceleration, c.a3)}};
+  });
   return j;
 }
 

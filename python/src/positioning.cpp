@@ -111,6 +111,7 @@ py::dict surfaces(std::vector<double> a2, std::vector<double> a3,
   d["case"] = motion_case, d["f"] = f, d["accumulates"] = accumulates, d["dx_d"] = dx_d;
   d["accumulating_entries"] = accumulating;
   d["max_periods_p99"] = p99, d["max_periods_p999"] = p999;
+  d["failure"] = failure_array(cells, shape);
   return d;
 }
 
@@ -146,9 +147,11 @@ Fig. 17 over the grid a2 × a3 at (Δt, Δy, w, c_mu). Returns a dict of arrays 
   'max_periods_p99', 'max_periods_p999'
                          int32 largest number of periods from entry to p = 0.99 / 0.999 over
                          the accumulating entries (-1 if none)
+  'failure'              str: '' for a computed cell, else why it could not be (its numbers
+                         are NaN; one cell never aborts the study)
 plus the 1-D grids 'a2' and 'a3'. options.stopping.max_periods bounds the search per entry.
-Cells are computed in parallel on `threads` workers (0: all cores), each into its own slot, so
-the result is identical for any thread count; `progress(done, total)` as in
+Cells are computed in parallel on `threads` workers (0: all cores; more are capped at the
+cores), each into its own slot, so the result is identical for any thread count; `progress(done, total)` as in
 sweep_accelerations. The GIL is released while computing.)doc");
 }
 

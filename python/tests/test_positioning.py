@@ -81,3 +81,4 @@ def test_diagonal_cell_accumulates():
     assert r["accumulating_entries"][0, 0] == 6
     assert r["dx_d"][0, 0] == 0.0
     assert 1 <= r["max_periods_p99"][0, 0] <= r["max_periods_p999"][0, 0]
+    assert r["failure"][0, 0] == ""  # computed (a failed cell would say why)

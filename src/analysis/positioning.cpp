@@ -121,6 +121,13 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
       c.max_periods_p99 = std::max(c.max_periods_p99, run.periods_to_fraction[0]);
       c.max_periods_p999 = std::max(c.max_periods_p999, run.periods_to_fraction[1]);
     }
+  }, [&](std::size_t k, const std::string& why) {
+    PositioningCell& c = cells[k];
+    c = PositioningCell{};
+    c.a2 = a2[k / a3.size()];
+    c.a3 = a3[k % a3.size()];
+    c.f = c.dx_d = kNaN;
+    c.failure = why;
   });
   return cells;
 }

@@ -9,6 +9,7 @@
 ///   Δx_d = (Δx_overshoot,max - Δx_overshoot,min) / 2            (eq. 39)
 ///   x_d  = x_mu + Δx_overshoot,min + Δx_d.
 
+#include <string>
 #include <vector>
 
 #include "selfalign/analysis/motion_case.hpp"
@@ -61,6 +62,9 @@ struct PositioningCell {
   /// Largest number of periods from entry to p = 0.99 and p = 0.999 over the entries that
   /// accumulate (-1 if none).
   int max_periods_p99 = -1, max_periods_p999 = -1;
+  /// Empty when the cell was computed; otherwise why it could not be (f and Δx_d are NaN).
+  /// One failing cell never aborts the study.
+  std::string failure;
 };
 
 /// Fig. 17 over the grid a2 x a3 (row-major, a2 outer) at (Δt, Δy, w, c_mu); parallel,
