@@ -1,0 +1,67 @@
+"""The command line, as `selfalign SUBCOMMAND --help` lists it: subcommands, their flags, the
+kind of value each flag takes, and the config file's keys."""
+
+
+CONFIG_KEYS = [  # docs/config.md, "Keys"
+    "units", "method", "profile", "period", "stroke", "a2", "a3", "durations", "accelerations",
+    "fourier_cos", "fourier_sin", "samples", "interpolation", "friction", "x_mu", "width", "c_mu",
+    "mu", "g", "length_scale", "mass", "t0", "x0", "v0", "periods", "step", "theta", "output_step",
+    "out", "summary"]
+
+_MODEL = ["config", "units", "method", "profile", "period", "stroke", "a2", "a3", "durations",
+          "accelerations", "fourier-cos", "fourier-sin", "samples", "interpolation", "friction",
+          "x-mu", "width", "c-mu", "mu", "g", "length-scale", "mass", "t0", "x0", "v0", "periods",
+          "step", "theta", "output-step"]
+_SECT7 = ["config", "units", "profile", "period", "stroke", "a2", "a3", "durations",
+          "accelerations", "fourier-cos", "fourier-sin", "samples", "interpolation", "width",
+          "c-mu", "mu", "g", "length-scale", "mass"]
+_SWEEP = ["out", "summary", "threads", "quiet", "log"]
+
+FLAGS = {
+    "simulate": _MODEL + ["out", "summary"],
+    "steady": _MODEL + ["out", "json"],
+    "floquet": _MODEL + ["fd-step", "out", "json"],
+    "converge": [f for f in _MODEL if f != "v0"] + ["v1", "v2", "out", "summary",
+                                                    "samples-per-period"],
+    "stop": _SECT7 + ["x-mu", "t0", "x0", "v0", "output-step", "fractions", "max-periods", "out",
+                      "summary", "json"],
+    "accuracy": _SECT7 + ["out", "summary", "json", "entries", "max-periods"],
+    "accumulation": _SECT7 + ["x-mu", "out", "summary", "json", "x1", "from", "to", "n"],
+    "sweep accelerations": _MODEL + _SWEEP + ["a2-range", "a3-range"],
+    "sweep period": _MODEL + _SWEEP + ["range", "family"],
+    "sweep stroke": _MODEL + _SWEEP + ["range", "family"],
+    "sweep positioning": _MODEL + _SWEEP + ["a2-range", "a3-range", "entries", "max-periods"],
+    "optimize": ["family", "period", "stroke", "velocity-max", "acceleration-max", "order",
+                 "segments", "starts", "max-evaluations", "seed", "json", "quiet", "out"],
+    "design": ["mass", "width", "mu", "c-mu", "g", "distance", "stroke-max", "frequency-min",
+               "frequency-max", "velocity-max", "acceleration-max", "tolerance",
+               "acceleration-grid", "period-grid", "stroke-grid", "entries", "json", "out",
+               "profile-csv", "sample-rate"],
+}
+SUBCOMMANDS = list(FLAGS)
+CONFIG_SUBS = [s for s in SUBCOMMANDS if "config" in FLAGS[s]]
+# Subcommands whose --out is a CSV with a summary JSON beside it (`<out stem>.summary.json`).
+CSV_SUMMARY_SUBS = ["simulate", "converge", "stop", "accuracy", "accumulation",
+                    "sweep accelerations", "sweep period", "sweep stroke", "sweep positioning"]
+
+KIND = {}  # flag -> num | int | list | text | file | out | range | bool
+for _f in ["period", "stroke", "a2", "a3", "x-mu", "width", "c-mu", "mu", "g", "length-scale",
+           "mass", "t0", "x0", "v0", "periods", "step", "theta", "output-step", "fd-step", "v1",
+           "v2", "x1", "from", "to", "velocity-max", "acceleration-max", "distance", "stroke-max",
+           "frequency-min", "frequency-max", "tolerance", "sample-rate"]:
+    KIND[_f] = "num"
+for _f in ["samples-per-period", "max-periods", "entries", "n", "threads", "order", "segments",
+           "starts", "max-evaluations", "seed", "acceleration-grid", "period-grid", "stroke-grid"]:
+    KIND[_f] = "int"
+for _f in ["durations", "accelerations", "fourier-cos", "fourier-sin", "fractions"]:
+    KIND[_f] = "list"
+for _f in ["units", "method", "profile", "interpolation", "friction", "family"]:
+    KIND[_f] = "text"
+for _f in ["config", "samples"]:
+    KIND[_f] = "file"
+for _f in ["out", "summary", "profile-csv"]:
+    KIND[_f] = "out"
+for _f in ["a2-range", "a3-range", "range"]:
+    KIND[_f] = "range"
+for _f in ["json", "quiet", "log"]:
+    KIND[_f] = "bool"
