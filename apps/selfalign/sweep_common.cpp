@@ -41,8 +41,8 @@ GridRange parse_grid_range(const std::string& name, const std::string& text) {
 
 std::vector<double> positive_grid(const std::string& name, const GridRange& range, bool log,
                                   const std::string& what) {
-  if (!(range.lo > 0 && range.hi > 0 && std::isfinite(range.lo) && std::isfinite(range.hi)))
-    throw InvalidParameter(name, range.text, what + " must be > 0 (LO and HI finite and > 0)");
+  if (!(range.lo > 0 && range.hi > 0 && range.lo <= kMaxMagnitude && range.hi <= kMaxMagnitude))
+    throw InvalidParameter(name, range.text, what + " must be > 0 (LO and HI in (0, 1e50])");
   return log ? log_grid(range.lo, range.hi, range.n) : linear_grid(range.lo, range.hi, range.n);
 }
 

@@ -30,7 +30,8 @@ struct GridRange {
 GridRange parse_grid_range(const std::string& name, const std::string& text);
 
 /// The grid's values, linear or log-spaced (library linear_grid / log_grid). LO and HI must be
-/// > 0 (every swept quantity is): throws InvalidParameter(name, text, "<what> must be > 0").
+/// in (0, 1e50] (every swept quantity is positive; kMaxMagnitude bounds every input):
+/// throws InvalidParameter(name, text, "<what> must be > 0 ...").
 std::vector<double> positive_grid(const std::string& name, const GridRange& range, bool log,
                                   const std::string& what);
 
