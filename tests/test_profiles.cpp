@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <numbers>
+#include <vector>
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
@@ -92,4 +93,50 @@ TEST(SampledProfile, RejectsMalformedInput) {
                InvalidParameter);
   EXPECT_THROW(parse_interpolation("cubic"), InvalidParameter);
   std::remove(path.c_str());
+}
+
+// Issue 9, D20: the series is summed with the rotation recurrence (two trigonometric calls per
+// 16 harmonics). Second method: cos/sin of every harmonic, written out here, at order 300 (18
+// re-seeds; the construction's extrema search is O(N^2), so a higher order only costs time).
+// Tolerance: the recurrence's rounding grows like k eps between re-seeds (16 eps), times the
+// sum of |terms|; 1e-12 of that sum is three orders above it.
+TEST(FourierProfile, HighOrderMatchesTheDirectSumOfEveryHarmonic) {
+  const int order = 300;
+  std::vector<double> a(order), b(order);
+  for (int k = 0; k < order; ++k) {
+    a[static_cast<std::size_t>(k)] = 1e-3 * std::cos(0.7 * k) / (k + 1);
+    b[static_cast<std::size_t>(k)] = 1e-3 * std::sin(1.3 * k) / (k + 1);
+  }
+  const FourierProfile f(2.0, a, b);
+  const double w = std::numbers::pi;  // 2 pi / Δt
+  for (double t : {0.0, 0.123, 0.5, 1.0, 1.777, 3.3}) {
+    double y = f.offset(), yd = 0, ydd = 0, y_scale = 0, yd_scale = 0, ydd_scale = 0;
+    for (int k = 0; k < order; ++k) {
+      const double kw = (k + 1) * w, c = std::cos(kw * t), s = std::sin(kw * t);
+      const double ak = a[static_cast<std::size_t>(k)], bk = b[static_cast<std::size_t>(k)];
+      y += ak * c + bk * s;
+      yd += kw * (-ak * s + bk * c);
+      ydd -= kw * kw * (ak * c + bk * s);
+      y_scale += std::abs(ak) + std::abs(bk);
+      yd_scale += kw * (std::abs(ak) + std::abs(bk));
+      ydd_scale += kw * kw * (std::abs(ak) + std::abs(bk));
+    }
+    const TableState st = f.state(t);
+    constexpr double kRecurrenceTol = 1e-12;
+    EXPECT_NEAR(st.y, y, kRecurrenceTol * y_scale) << t;
+    EXPECT_NEAR(st.yd, yd, kRecurrenceTol * yd_scale) << t;
+    EXPECT_NEAR(st.ydd, ydd, kRecurrenceTol * ydd_scale) << t;
+  }
+}
+
+// Issue 9, D13, D20: an order beyond 1000, or a period so short that the motion overflows
+// (FourierProfile(1e-320, ...) had stroke NaN), is misuse.
+TEST(FourierProfile, RefusesOrdersBeyondAThousandAndOverflowingPeriods) {
+  EXPECT_THROW(FourierProfile(1.0, std::vector<double>(1001, 1e-6), {}), InvalidParameter);
+  try {
+    FourierProfile(1e-320, {0.04}, {0.0});
+    FAIL() << "an overflowing motion was accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.name(), "period");
+  }
 }

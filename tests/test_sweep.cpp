@@ -141,3 +141,16 @@ TEST(Sweep, WorkerThreadsAreCappedAtTheCores) {
   one.threads = 1;
   EXPECT_EQ(cells[0].v_bar, sweep_accelerations(1.0, 0.084, {2.3}, {1.3}, one)[0].v_bar);
 }
+
+// Issue 9, D13: linear_grid(1e308, 1, 3) ended in -inf ((hi - lo) * 2 overflowed).
+TEST(Sweep, GridsNearTheLargestDoublesStayFiniteAndExact) {
+  const auto g = linear_grid(1e308, 1.0, 3);
+  ASSERT_EQ(g.size(), 3u);
+  EXPECT_EQ(g.front(), 1e308);
+  EXPECT_EQ(g.back(), 1.0);
+  EXPECT_NEAR(g[1], 0.5e308, 1e292);  // the midpoint, to rounding of 1e308
+  const auto h = linear_grid(-1.7e308, 1.7e308, 5);
+  for (double v : h) EXPECT_TRUE(std::isfinite(v));
+  EXPECT_EQ(h[2], 0.0);
+  EXPECT_THROW(linear_grid(0, 1, 10'000'001), InvalidParameter);  // beyond 1e7 points
+}

@@ -118,3 +118,20 @@ def test_exact_state_is_read_only_and_checked():
             setattr(state, attribute, 3)
     with pytest.raises(sa.InvalidParameter):
         sa.advance_exact(profile, friction, state, 1e300)  # beyond 1e8 periods
+
+
+def test_oversized_requests_are_refused_before_allocating():
+    # Issue 9, D11: bad_alloc / vector::reserve messages, or minutes of work.
+    profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    friction = sa.TwoRegionFriction(0.5, 0.05, 2.5)
+    cases = ((lambda: sa.simulate(profile, friction,
+                                  options=sa.SimulationOptions(duration=1e308)), "duration"),
+             (lambda: sa.simulate(profile, friction,
+                                  options=sa.SimulationOptions(output_step=1e-12)), "output_step"),
+             (lambda: sa.optimize_fourier(sa.ActuatorLimits(),
+                                          sa.OptimizeOptions(order=10**9, starts=1)), "order"),
+             (lambda: sa.linear_grid(0.0, 1.0, 10**9), "grid size"))
+    for call, name in cases:
+        with pytest.raises(sa.InvalidParameter) as info:
+            call()
+        assert info.value.name == name, str(info.value)
