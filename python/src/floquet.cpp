@@ -110,7 +110,8 @@ options. Runs without the GIL.)doc";
       "slip_slip_multiplier",
       [](const py::object& a2, const py::object& a3) -> py::object {
         if (is_scalar(a2) && is_scalar(a3))
-          return py::float_(slip_slip_multiplier(a2.cast<double>(), a3.cast<double>()));
+          return py::float_(
+              slip_slip_multiplier(scalar_value(a2, "a2"), scalar_value(a3, "a3")));
         const py::tuple pair = py::module_::import("numpy").attr("broadcast_arrays")(a2, a3);
         const auto x = DoubleArray::ensure(pair[0]), y = DoubleArray::ensure(pair[1]);
         if (!x || !y) throw py::type_error("a2, a3: expected floats or array-likes of floats");

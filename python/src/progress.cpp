@@ -2,20 +2,19 @@
 
 namespace selfalign::python {
 
-PythonProgress::PythonProgress(const py::object& callback) {
-  if (callback.is_none()) return;
-  if (!PyCallable_Check(callback.ptr())) throw py::type_error("progress must be callable or None");
-  state_ = std::make_shared<State>();
+PythonProgress::PythonProgress(const py::object& callback) : state_(std::make_shared<State>()) {
+  if (!callback.is_none() && !PyCallable_Check(callback.ptr()))
+    throw py::type_error("progress must be callable or None");
   state_->function = callback;
 }
 
 ProgressCallback PythonProgress::callback() const {
-  if (!state_) return {};
+  // Also without a Python callable: a long study must stop on Ctrl-C like any Python call.
   return [state = state_](std::size_t done, std::size_t total) {
     py::gil_scoped_acquire gil;
     if (state->failed) throw Aborted{};
     try {
-      state->function(done, total);
+      if (!state->function.is_none()) state->function(done, total);
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();  // Ctrl-C (main thread)
     } catch (...) {
       state->failed = true;

@@ -20,7 +20,8 @@ class PythonProgress {
   /// callback: a Python callable(done, total), or None. Needs the GIL.
   explicit PythonProgress(const py::object& callback);
 
-  /// The library-side callback (empty for None). Its copies share state with this object; keep
+  /// The library-side callback: calls the callable (if any) and checks for Ctrl-C (a
+  /// KeyboardInterrupt stops the study). Its copies share state with this object; keep
   /// this object until the sweep has returned, so the last reference to the Python callable is
   /// dropped by the caller, under the GIL.
   ProgressCallback callback() const;

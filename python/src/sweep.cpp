@@ -17,7 +17,8 @@ Cells are computed in parallel on `threads` workers (0: all cores; more than the
 capped at the cores), each into its own slot, so
 the result is identical for any thread count. `progress`, if given, is called as
 progress(done, total) as cells complete (from worker threads, one call at a time, holding the
-GIL); an exception it raises stops the sweep and is re-raised. The GIL is released otherwise.)doc";
+GIL); an exception it raises stops the sweep and is re-raised, and Ctrl-C (KeyboardInterrupt)
+stops it with or without a callback. The GIL is released otherwise.)doc";
 
 py::dict family_points(std::vector<FamilyPoint>&& points) {
   const auto n = static_cast<py::ssize_t>(points.size());
