@@ -227,15 +227,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   };
 
   std::vector<std::vector<double>> starts;
-  OptimizationResult three;
-  if (three_phase_start && three_phase_start->feasible) {
-    three = *three_phase_start;
-  } else {
-    OptimizeOptions q = o;
-    q.progress = nullptr;
-    three = optimize_three_phase(l, q);
-    r.evaluations += three.evaluations;
-  }
+  const OptimizationResult three = three_phase_seed(l, o, three_phase_start, r.evaluations);
   if (three.feasible) {
     std::vector<double> a, b;
     fourier_series_of(*rebuild_profile(three)->piecewise_constant(), n, a, b);

@@ -214,16 +214,7 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
   const int k = o.segments;
   OptimizationResult three;
   int evaluations = 0;
-  if (k >= 3) {
-    if (three_phase_start && three_phase_start->feasible) {
-      three = *three_phase_start;
-    } else {
-      OptimizeOptions q = o;
-      q.progress = nullptr;
-      three = optimize_three_phase(l, q);
-      evaluations += three.evaluations;
-    }
-  }
+  if (k >= 3) three = three_phase_seed(l, o, three_phase_start, evaluations);
   ChainProgress progress;
   progress.report = &o.progress;
   progress.per_level = std::max(o.starts, 2);

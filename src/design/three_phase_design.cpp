@@ -136,4 +136,14 @@ OptimizationResult optimize_three_phase(const ActuatorLimits& l, const OptimizeO
   return r;
 }
 
+OptimizationResult three_phase_seed(const ActuatorLimits& l, const OptimizeOptions& o,
+                                    const OptimizationResult* given, int& evaluations) {
+  if (given && given->feasible) return *given;
+  OptimizeOptions q = o;
+  q.progress = nullptr;
+  OptimizationResult three = optimize_three_phase(l, q);
+  evaluations += three.evaluations;
+  return three;
+}
+
 }  // namespace selfalign

@@ -32,4 +32,10 @@ ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& limits, double 
 OptimizationResult optimize_three_phase(const ActuatorLimits& limits,
                                         const OptimizeOptions& options = {});
 
+/// The three-phase optimum the richer families start from: `given` when it is feasible (e.g.
+/// compare_families' first row), else optimize_three_phase without progress reports, whose
+/// evaluations are added to `evaluations`.
+OptimizationResult three_phase_seed(const ActuatorLimits& limits, const OptimizeOptions& options,
+                                    const OptimizationResult* given, int& evaluations);
+
 }  // namespace selfalign

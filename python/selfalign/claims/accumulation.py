@@ -101,19 +101,27 @@ def always_accumulates(grid: Optional[list[AccumulationCase]] = None) -> Claim:
                  "Judged only where the section's assumptions hold: case-1 steady entry, "
                  "y2'' < c_mu (x_stick,min exists), θ = sqrt(b1)(t2 - t1) < π (eq. 59 derived "
                  "for a slip through [t1, t2]). The condition and x_stick,min are eqs. (59), "
-                 "(41) written in claims/closed_forms.py. accumulates_for_every_entry() is only compared; it "
-                 "becomes null for peak > c_mu or y3'' > y2'' with the pending library fix.")
+                 "(41) written in claims/closed_forms.py. accumulates_for_every_entry() is only "
+                 "compared; it is None where the condition's derivation does not hold (peak > "
+                 "c_mu, y3'' > y2'').")
+
+
+def _stick_sets(grid: list[AccumulationCase], accuracies: dict, theta_below_pi: bool) -> list:
+    """(Δt, Δy, w, c_mu, y2'', y3'', x_mu, stick sequences) of the Fig. 16 settings and the grid
+    (only its settings with θ < π when ``theta_below_pi``: eq. (59) is derived for them)."""
+    period, stroke, w, c_mu = SECT72
+    sets = [(period, stroke, w, c_mu, a2, a3, acc.x_mu, StickSequences.of(acc.runs))
+            for (a2, a3), acc in accuracies.items()]
+    sets += [(c.period, c.stroke, c.width, c.c_mu, c.a2, c.a3, c.accuracy.x_mu, c.sequences)
+             for c in grid if not theta_below_pi or c.theta < math.pi]
+    return sets
 
 
 def map_predicts_stick_positions(grid: Optional[list[AccumulationCase]] = None,
                                  accuracies: Optional[dict] = None) -> Claim:
     grid = grid if grid is not None else accumulation_grid()
     accuracies = accuracies if accuracies is not None else _fig16_accuracies()
-    period, stroke, w, c_mu = SECT72
-    sets = [(period, stroke, w, c_mu, a2, a3, acc.x_mu, StickSequences.of(acc.runs))
-            for (a2, a3), acc in accuracies.items()]
-    sets += [(c.period, c.stroke, c.width, c.c_mu, c.a2, c.a3, c.accuracy.x_mu, c.sequences)
-             for c in grid if c.theta < math.pi]
+    sets = _stick_sets(grid, accuracies, theta_below_pi=True)
     worst, pairs = 0.0, 0
     for p, s, w_, c_, a2, a3, x_mu, seq in sets:
         t21 = _t21(_profile(p, s, a2, a3))
@@ -142,11 +150,7 @@ def accumulation_at_stick_min(grid: Optional[list[AccumulationCase]] = None,
                               accuracies: Optional[dict] = None) -> Claim:
     grid = grid if grid is not None else accumulation_grid()
     accuracies = accuracies if accuracies is not None else _fig16_accuracies()
-    period, stroke, w, c_mu = SECT72
-    sets = [(period, stroke, w, c_mu, a2, a3, acc.x_mu, StickSequences.of(acc.runs))
-            for (a2, a3), acc in accuracies.items()]
-    sets += [(c.period, c.stroke, c.width, c.c_mu, c.a2, c.a3, c.accuracy.x_mu, c.sequences)
-             for c in grid]
+    sets = _stick_sets(grid, accuracies, theta_below_pi=False)
     runs = labelled = not_increasing = reached = not_shrinking = overshoot = rounded = 0
     for p, s, w_, c_, a2, a3, x_mu, seq in sets:
         target = x_stick_min(x_mu, w_, c_, max(a2, a3))
