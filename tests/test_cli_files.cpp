@@ -196,7 +196,12 @@ TEST(CliFiles, SamplesErrorsNameTheFileAndTheLine) {
   expect_one_line_error(box.run({"simulate", "--profile", "samples", "--samples", "long.csv",
                                  "--out", "run.csv"}),
                         {"samples = long.csv", "1e50"});  // D13: no NaN rows written
-  EXPECT_EQ(box.work_entries(), (std::vector<std::string>{"drift.csv", "long.csv", "range.csv"}));
+  // A denormal period (fuzz seed 8): its samples' spacing P/N rounded to 0, an endless loop.
+  write_text(box.work_file("tiny.csv"), "0,1\n5e-324,-1\n1e-323,0\n");
+  expect_one_line_error(box.run({"converge", "--profile", "samples", "--samples", "tiny.csv"}),
+                        {"samples = tiny.csv", "period", "1e-50"});
+  EXPECT_EQ(box.work_entries(),
+            (std::vector<std::string>{"drift.csv", "long.csv", "range.csv", "tiny.csv"}));
 }
 
 #endif  // SELFALIGN_CLI_PATH

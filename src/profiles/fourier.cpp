@@ -44,7 +44,7 @@ std::array<double, 4> FourierProfile::derivatives(double t) const {
 
 FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
                                std::vector<double> sin_coeffs)
-    : period_(require_positive("period", period)),
+    : period_(require_positive_moderate("period", period)),
       cos_(std::move(cos_coeffs)),
       sin_(std::move(sin_coeffs)) {
   const std::size_t n = std::max(cos_.size(), sin_.size());

@@ -29,7 +29,7 @@ PiecewiseConstantProfile PiecewiseConstantProfile::from_accelerations(
     t += d;
     p.peak_ = std::max(p.peak_, std::abs(a));
   }
-  p.period_ = require_positive("period", t);
+  p.period_ = require_positive_moderate("period", t);  // a denormal period left P/N = 0
   if (!std::isfinite(dv_scale))
     throw InvalidParameter("accelerations", dv_scale,
                            "the table motion overflows: sum of |acceleration| x duration must be "

@@ -101,6 +101,7 @@ void validate_samples(const AccelerationSamples& s) {
                              "must be <= 1e50 and > t[" + std::to_string(i - 1) + "] = " +
                                  format_number(s.t[i - 1]));
   }
+  require_positive_moderate("samples period (last t)", s.t.back());  // a denormal period
 }
 }  // namespace
 

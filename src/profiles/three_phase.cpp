@@ -7,8 +7,8 @@
 namespace selfalign {
 
 void validate(const ThreePhaseParameters& p) {
-  require_positive("period", p.period);
-  require_positive("stroke", p.stroke);
+  require_positive_moderate("period", p.period);
+  require_positive_moderate("stroke", p.stroke);
   require_positive("a2", p.a2);
   require_positive("a3", p.a3);
 }

@@ -14,7 +14,7 @@ namespace selfalign {
 
 class FourierProfile final : public TableProfile {
  public:
-  /// \param period  Δt [-], > 0
+  /// \param period  Δt [-], in [1e-50, 1e50]
   /// \param cos_coeffs A_1..A_N [-], \param sin_coeffs B_1..B_N [-] (shorter one padded with 0),
   ///        finite, not all zero, N <= 1000. Throws InvalidParameter otherwise, and when the
   ///        motion is not finite (a period so short that (N w)^2 A_N overflows).

@@ -27,8 +27,9 @@ class PiecewiseConstantProfile final : public TableProfile {
   /// Periodicity of y' needs sum(accels[i] durations[i]) = 0 (checked to 1e-12 relative to
   /// sum |accels[i]| durations[i]). The initial velocity is chosen so the mean velocity is zero
   /// (periodic y) and the initial position so min y = 0. Zero-length segments are dropped.
-  /// Throws InvalidParameter on sizes that differ, negative or non-finite durations, a zero
-  /// period, non-finite accelerations, or a velocity that does not return.
+  /// Throws InvalidParameter on sizes that differ, negative or non-finite durations, a period
+  /// outside [1e-50, 1e50], non-finite accelerations, a velocity that does not return, or a
+  /// motion that overflows.
   static PiecewiseConstantProfile from_accelerations(std::span<const double> durations,
                                                      std::span<const double> accels,
                                                      std::string kind = "quadratic-sequence");

@@ -25,8 +25,8 @@ namespace selfalign {
 
 /// The free parameters of the three-phase profile [-].
 struct ThreePhaseParameters {
-  double period;  ///< Δt = t3 - t0 [-], > 0
-  double stroke;  ///< Δy = max y - min y [-], > 0
+  double period;  ///< Δt = t3 - t0 [-], in [1e-50, 1e50]
+  double stroke;  ///< Δy = max y - min y [-], in [1e-50, 1e50]
   double a2;      ///< y2'' > 0: the table accelerates with -y2'' on [t1, t2] [-]
   double a3;      ///< y3'' > 0: the table accelerates with +y3'' on [t2, t3] [-]
 };
