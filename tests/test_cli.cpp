@@ -107,6 +107,8 @@ const ConfigMisuseCase kMisuseCases[] = {
     {"c_mu_unresolvable", {"--c-mu", "3e16"}, "", "", {"c_mu, width", "1e12"}},
     {"width_denormal", {"--width", "1e-320"}, "", "", {"width = 1e-320", "resolvable"}},
     {"velocity_beyond_1e50", {"--v0", "1e308"}, "", "", {"v0 = 1e+308", "1e50"}},
+    {"negative_duration_named", {"--profile", "quadratic-sequence", "--durations", "-0.3,0.4,0.9",
+                                 "--accelerations", "0,-3,4"}, "", "", {"durations[0] = -0.3"}},
     {"deep_json", {}, "deep.json",
      "{\"width\": " + std::string(60000, '[') + "1" + std::string(60000, ']') + "}",
      {"config file", "deep.json", "nests too deeply"}},

@@ -82,10 +82,13 @@ TEST(CliFiles, FolderOrEmptyConfigAndEmptyNumbersAreRefused) {
   CliSandbox box;
   fs::create_directory(box.work_file("run.toml"));
   expect_one_line_error(box.run({"steady", "--config", "run.toml"}), {"config file", "directory"});
+  // A FIFO nobody writes would block the read for ever (fuzz seed 13): not a regular file.
+  ASSERT_EQ(::mkfifo(box.work_file("pipe.json").c_str(), 0644), 0);
+  expect_one_line_error(box.run({"steady", "--config", "pipe.json"}), {"config file", "regular"});
   expect_one_line_error(box.run({"steady", "--config", ""}), {"--config", "empty"});
   expect_one_line_error(box.run({"optimize", "--seed", "", "--quiet"}), {"--seed", "empty"});
   expect_one_line_error(box.run({"steady", "--a2", "1e-999"}), {"a2"});
-  EXPECT_EQ(box.work_entries(), std::vector<std::string>{"run.toml"});
+  EXPECT_EQ(box.work_entries(), (std::vector<std::string>{"pipe.json", "run.toml"}));
 }
 
 // D18: `--out=` followed by a flag would have taken the flag as the file name.

@@ -17,6 +17,7 @@
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/simulate.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 using namespace selfalign;
@@ -105,4 +106,23 @@ TEST(TimeStepping, RejectsBadOptions) {
   EXPECT_THROW(validate(TimeSteppingOptions{0.0, 0.5}), InvalidParameter);
   EXPECT_THROW(validate(TimeSteppingOptions{1e-3, 1.5}), InvalidParameter);
   EXPECT_THROW(validate(TimeSteppingOptions{std::nan(""), 0.5}), InvalidParameter);
+}
+
+// Issue 9 (fuzz seed 17): a run whose duration is not a whole number of steps ended up to h/2
+// beside t0 + duration (SI: 20 T = 0.3686 s with h = 1 ms ended at 0.369 s). The step is
+// shortened to duration / ceil(duration / h), so whole steps end exactly at t0 + duration.
+TEST(TimeStepping, WholeStepsEndTheRunExactly) {
+  const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
+  const UniformFriction friction;
+  SimulationOptions o;
+  o.method = Method::time_stepping;
+  o.duration = 0.7;
+  o.step = 0.3;  // 0.7 / 0.3 = 2.33: three steps of 0.2333
+  o.record = true;
+  const SimulationResult r = simulate(profile, friction, {0.25, 0.0, 0.0}, o);
+  EXPECT_EQ(r.work, 3u);
+  EXPECT_NEAR(r.final_state.t, 0.25 + 0.7, 1e-15);
+  EXPECT_NEAR(r.trajectory.t.back(), 0.25 + 0.7, 1e-15);
+  o.step = 0.35;  // a whole number of steps (2) keeps h
+  EXPECT_EQ(simulate(profile, friction, {0.25, 0.0, 0.0}, o).work, 2u);
 }

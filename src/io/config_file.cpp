@@ -49,6 +49,9 @@ SimulateConfig load_simulate_config(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw InvalidParameter("config file", path, "is a directory; give a .json or .toml file");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw InvalidParameter("config file", path,
+                           "must be a regular file (a FIFO or device would block or never end)");
   constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;  // a config is a few hundred bytes
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxConfigBytes)

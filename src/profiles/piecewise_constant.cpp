@@ -17,8 +17,8 @@ PiecewiseConstantProfile PiecewiseConstantProfile::from_accelerations(
   p.kind_ = std::move(kind);
   double t = 0, yd = 0, y = 0, dv = 0, dv_scale = 0, mean = 0;
   for (std::size_t i = 0; i < durations.size(); ++i) {
-    const double d = require_non_negative("segment duration", durations[i]);
-    const double a = require_finite("segment acceleration", accels[i]);
+    const double d = require_non_negative("durations[" + std::to_string(i) + "]", durations[i]);
+    const double a = require_finite("accelerations[" + std::to_string(i) + "]", accels[i]);
     if (d == 0.0) continue;
     p.segments_.push_back({t, d, a, y, yd});
     mean += yd * d + 0.5 * a * d * d;  // integral of y' over the segment, with yd(0) = 0

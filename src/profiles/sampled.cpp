@@ -51,6 +51,9 @@ AccelerationSamples read_acceleration_samples(const std::string& path) {
   std::error_code ec;
   if (path.empty() || std::filesystem::is_directory(path, ec))
     throw InvalidParameter("samples", path.empty() ? "\"\"" : path, "must name a CSV file of 't,ydd' rows");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    throw InvalidParameter("samples", path,
+                           "must be a regular file (a FIFO or device would block or never end)");
   constexpr std::uintmax_t kMaxSamplesBytes = 256u << 20;  // ~10 million rows
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   if (!ec && size > kMaxSamplesBytes)

@@ -87,7 +87,7 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
     throw InvalidParameter("t0", initial.t,
                            "must be within 1e8 table periods of 0 (|t0| <= " +
                                format_number(kMaxSimulatedPeriods * profile.period()) + ")");
-  const TimeSteppingOptions ts{o.step, o.theta};
+  TimeSteppingOptions ts{o.step, o.theta};
   std::unique_ptr<Runner> runner;
   double grid = o.output_step;
   if (o.method == Method::exact) {
@@ -112,9 +112,12 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
       throw InvalidParameter("step", o.step,
                              "the run would take " + format_number(std::ceil(o.duration / o.step)) +
                                  " steps (at most 1e9): raise step or shorten the run");
+    // Whole steps fill the run exactly: h' = duration / ceil(duration / h) <= h, so the run ends
+    // at t0 + duration, not up to h/2 beside it (1e-9: a ratio that is whole up to rounding).
+    ts.step = o.duration / std::ceil(o.duration / o.step - 1e-9);
     runner = std::make_unique<SteppingRunner>(profile, friction, ts, initial);
-    if (grid == 0) grid = o.step;
-    grid = std::max(1.0, std::round(grid / o.step)) * o.step;  // a whole number of steps
+    if (grid == 0) grid = ts.step;
+    grid = std::max(1.0, std::round(grid / ts.step)) * ts.step;  // a whole number of steps
   }
   // Sized before anything is allocated: the samples at t0 + j grid, plus the two ends.
   const double recorded = std::floor(o.duration / grid) + 2;

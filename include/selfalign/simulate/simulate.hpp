@@ -35,7 +35,9 @@ double require_simulatable_duration(const std::string& name, double duration, do
 struct SimulationOptions {
   Method method = Method::exact;
   double duration = 20;     ///< simulated time after t0 [-], > 0
-  double step = 1e-4;       ///< time-stepping step h [-], in (0, Δt] (unused by the exact solver)
+  /// time-stepping step h [-], in (0, Δt] (unused by the exact solver); shortened to
+  /// duration / ceil(duration / h) so that whole steps end the run exactly at t0 + duration
+  double step = 1e-4;
   double theta = 0.5;       ///< time-stepping theta, in [0, 1]
   double output_step = 0;   ///< spacing of recorded samples [-]; 0: h (time-stepping) or Δt/200
   bool record = true;       ///< false: only the summary (no trajectory): far cheaper
