@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "selfalign/analysis/convergence.hpp"
+#include "selfalign/error.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
 using namespace selfalign;
@@ -58,4 +59,20 @@ TEST(Convergence, SlipSlipConvergesOnlyAsymptotically) {
   EXPECT_GT(c.lyapunov.back(), 0.0);
   EXPECT_LT(c.lyapunov.back(), 1e-3 * c.lyapunov.front());
   expect_lyapunov_shape(c);
+}
+
+// Python API fuzz (issue 9, seed 8): a duration below the rounding of t0 left both arc lists
+// empty and the sampling read past them (segfault). It is misuse, refused by name.
+TEST(Convergence, DurationBelowTheRoundingOfT0IsRefused) {
+  const ThreePhaseProfile profile({1.0, 0.084, 3.0, 0.9});
+  ConvergenceOptions o;
+  o.t0 = 1e-300;
+  o.duration = 5e-324;
+  o.samples_per_period = 1;
+  EXPECT_THROW(velocity_convergence(profile, o), InvalidParameter);
+  o.t0 = 1e7;
+  o.duration = 1e-10;  // 1e-10 periods: beyond the floor of 1e-9 periods
+  EXPECT_THROW(velocity_convergence(profile, o), InvalidParameter);
+  o.duration = 1e-9 * 1.5;  // above the floor and resolvable at t0 = 1e7 (ulp 1.9e-9)
+  EXPECT_NO_THROW(velocity_convergence(profile, o));
 }

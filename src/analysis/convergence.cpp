@@ -54,6 +54,12 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Conv
   const UniformFriction friction(1.0);
   const ExactSetup setup{*pwc, *friction.piecewise_affine()};
   const double t_end = o.t0 + o.duration;
+  // Both responses need at least one arc: a run shorter than the rounding of t0 has none
+  // (t0 = 1e-300 with duration 5e-324 read past an empty arc list; Python API fuzz, seed 8).
+  if (!(o.duration >= 1e-9 * P && t_end > o.t0 && std::abs(o.t0) <= 1e8 * P))
+    throw InvalidParameter("duration", o.duration,
+                           "must be >= 1e-9 table periods and resolvable at t0 (|t0| <= 1e8 "
+                           "periods)");
   ArcList a1, a2;
   ExactState s1 = make_exact_state(setup, {o.t0, 0, o.v1});
   ExactState s2 = make_exact_state(setup, {o.t0, 0, o.v2});

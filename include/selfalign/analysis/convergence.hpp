@@ -36,7 +36,7 @@ struct ConvergenceOptions {
   double v1 = 0.5;               ///< initial velocity of trajectory 1 [-], |v1| <= 1e50
   double v2 = -0.5;              ///< initial velocity of trajectory 2 [-], |v2| <= 1e50
   double t0 = 0;                 ///< common start time [-]
-  double duration = 10;          ///< simulated time [-], in (0, 1e6 Δt]
+  double duration = 10;          ///< simulated time [-], in [1e-9 Δt, 1e6 Δt]; |t0| <= 1e8 Δt
   int samples_per_period = 200;  ///< uniform samples per table period, in [1, 1e6]; at most
                                  ///< 1e7 samples over the run
 };
