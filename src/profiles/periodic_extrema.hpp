@@ -14,14 +14,19 @@ struct Extrema {
 
 template <class Value, class Derivative>
 Extrema periodic_extrema(const Value& f, const Derivative& df, double period, int samples) {
-  Extrema e{f(0.0), f(0.0)};
+  // f is evaluated once per point (for a Fourier series of order N each evaluation is O(N)).
+  const double f0 = f(0.0);
+  Extrema e{f0, f0};
+  auto include = [&e](double v) {
+    e.min = std::min(e.min, v);
+    e.max = std::max(e.max, v);
+  };
   const double h = period / samples;
   double t_prev = 0.0, d_prev = df(0.0);
   for (int i = 1; i <= samples; ++i) {
     const double t = i * h;
     const double d = df(t);
-    e.min = std::min(e.min, f(t));
-    e.max = std::max(e.max, f(t));
+    include(f(t));
     if ((d_prev < 0) != (d < 0)) {  // a root of f' lies in [t_prev, t]
       double lo = t_prev, hi = t;
       const bool rising = d_prev < 0;
@@ -30,10 +35,7 @@ Extrema periodic_extrema(const Value& f, const Derivative& df, double period, in
         if (mid <= lo || mid >= hi) break;
         ((df(mid) < 0) == rising ? lo : hi) = mid;
       }
-      for (double r : {lo, hi}) {
-        e.min = std::min(e.min, f(r));
-        e.max = std::max(e.max, f(r));
-      }
+      for (double r : {lo, hi}) include(f(r));
     }
     t_prev = t;
     d_prev = d;
