@@ -175,6 +175,21 @@ void register_input_file(const std::string& path, const std::string& flag) {
   inputs().push_back(std::move(f));
 }
 
+void require_input_file(const std::string& name, const std::string& path,
+                        const std::string& flag, std::uintmax_t max_bytes) {
+  if (path.empty()) throw InvalidParameter(name, "\"\"", "must name a file");
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw InvalidParameter(name, path, "is a directory; give a file");
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
+    throw InvalidParameter(name, path,
+                           "must be a regular file (a FIFO or device would block or never end)");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (!ec && size > max_bytes)
+    throw InvalidParameter(name, path,
+                           "is larger than " + std::to_string(max_bytes >> 20) + " MB");
+  register_input_file(path, flag);  // no output may replace it
+}
+
 std::optional<std::string> input_file_flag(const std::string& path) {
   const InputFile f = identify(path);
   std::lock_guard lock(inputs_mutex());

@@ -46,17 +46,8 @@ SimulateConfig load_simulate_config(const std::string& path) {
   const std::string extension = std::filesystem::path(path).extension().string();
   if (extension != ".json" && extension != ".toml")
     throw InvalidParameter("config file", path, "must end in .json or .toml");
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InvalidParameter("config file", path, "is a directory; give a .json or .toml file");
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw InvalidParameter("config file", path,
-                           "must be a regular file (a FIFO or device would block or never end)");
   constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;  // a config is a few hundred bytes
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxConfigBytes)
-    throw InvalidParameter("config file", path, "is larger than 16 MB; a config is a flat set of keys");
-  register_input_file(path, "--config");  // no output may replace it
+  require_input_file("config file", path, "--config", kMaxConfigBytes);
   std::ifstream in(path, std::ios::binary);
   if (!in) detail::throw_malformed(path, std::string("cannot be read: ") + std::strerror(errno));
   std::ostringstream text;

@@ -1,7 +1,6 @@
 #include "selfalign/io/simulate_model.hpp"
 
 #include "selfalign/error.hpp"
-#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_constant.hpp"
 #include "selfalign/profiles/sampled.hpp"
@@ -16,7 +15,6 @@ AccelerationSamples load_samples(const SimulateConfig& c, UnitSystem units, cons
   if (!c.samples)
     throw InvalidParameter("samples", "none", "must name a CSV file of 't,ydd' rows when "
                                               "profile = samples");
-  register_input_file(*c.samples, "--samples");  // no output may replace it
   AccelerationSamples s = read_acceleration_samples(*c.samples);
   if (units == UnitSystem::si) {
     for (double& t : s.t) t = scales.time_from_si(t);

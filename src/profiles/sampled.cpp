@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <charconv>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "periodic_extrema.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
 #include "selfalign/profiles/piecewise_constant.hpp"
 
 namespace selfalign {
@@ -48,16 +48,8 @@ std::string trim(const std::string& s) {
 }  // namespace
 
 AccelerationSamples read_acceleration_samples(const std::string& path) {
-  std::error_code ec;
-  if (path.empty() || std::filesystem::is_directory(path, ec))
-    throw InvalidParameter("samples", path.empty() ? "\"\"" : path, "must name a CSV file of 't,ydd' rows");
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw InvalidParameter("samples", path,
-                           "must be a regular file (a FIFO or device would block or never end)");
   constexpr std::uintmax_t kMaxSamplesBytes = 256u << 20;  // ~10 million rows
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  if (!ec && size > kMaxSamplesBytes)
-    throw InvalidParameter("samples", path, "is larger than 256 MB");
+  require_input_file("samples", path, "--samples", kMaxSamplesBytes);
   std::ifstream in(path);
   if (!in) throw InvalidParameter("samples", path, "must be a readable CSV file");
   AccelerationSamples s;

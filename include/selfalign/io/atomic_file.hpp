@@ -18,6 +18,7 @@
 ///  - not a directory, and not a file this process read as an input (register_input_file):
 ///    both throw InvalidParameter before anything is written.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +29,14 @@ namespace selfalign {
 /// Records that this process read `path` as an input given by `flag` (e.g. "--config"); no
 /// AtomicFileSet will write over it. Thread-safe.
 void register_input_file(const std::string& path, const std::string& flag);
+
+/// Checks that `path` can be read as the input `name`: a non-empty path that, where it exists,
+/// is a regular file (a folder is refused, and a FIFO or device, whose read would block or
+/// never end) of at most `max_bytes` bytes; then registers it under `flag`
+/// (register_input_file). Throws InvalidParameter(name, path, ...). A missing file is left to
+/// the reader, which names it.
+void require_input_file(const std::string& name, const std::string& path,
+                        const std::string& flag, std::uintmax_t max_bytes);
 
 /// The flag of the registered input that `path` names (the same file, also through a link,
 /// or the same absolute path), or none.

@@ -29,7 +29,9 @@ struct AccelerationSamples {
   std::vector<double> ydd;  ///< table accelerations at t [-] or [m/s^2]
 };
 
-/// Reads a samples CSV. Throws InvalidParameter naming the file and line on malformed input.
+/// Reads a samples CSV (a regular file of at most 256 MB, registered as the input --samples so
+/// that no output replaces it: io/atomic_file.hpp). Throws InvalidParameter naming the file and
+/// line on malformed input.
 AccelerationSamples read_acceleration_samples(const std::string& path);
 
 /// Builds the periodic profile from dimensionless samples. Throws InvalidParameter on fewer
