@@ -11,7 +11,6 @@ namespace selfalign::cli {
 namespace {
 
 const char kRangeForm[] = "must be LO:HI:N with numbers LO, HI and a whole number N in [1, 1e7]";
-constexpr int kMaxGridPoints = 10'000'000;  // linear_grid's limit
 
 // The whole of `text` as a number of type T (C locale).
 template <class T>

@@ -15,8 +15,7 @@ namespace selfalign {
 std::vector<double> linear_grid(double lo, double hi, int n) {
   require_finite("grid lower end", lo);
   require_finite("grid upper end", hi);
-  constexpr int kMaxGrid = 10'000'000;  // 80 MB of values; a study of 1e7 cells takes hours
-  if (n < 1 || n > kMaxGrid) throw InvalidParameter("grid size", n, "must be in [1, 1e7]");
+  if (n < 1 || n > kMaxGridPoints) throw InvalidParameter("grid size", n, "must be in [1, 1e7]");
   std::vector<double> g(static_cast<std::size_t>(n));
   // std::lerp: exact ends, monotone, and no overflow of hi - lo for ends near ±1.8e308.
   for (int i = 0; i < n; ++i)
@@ -46,7 +45,7 @@ int worker_threads(int requested) {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kMaxCells = 1e7;  // ~1 GB of results; hours of work
+constexpr double kMaxCells = kMaxGridPoints;  // ~1 GB of results; hours of work
 
 }  // namespace
 

@@ -20,6 +20,9 @@
 
 namespace selfalign {
 
+/// The most values a grid (and cells a study) may have: 80 MB of values, hours of work.
+inline constexpr int kMaxGridPoints = 10'000'000;
+
 /// n values from lo to hi inclusive, evenly spaced (1 <= n <= 1e7; n = 1 gives lo); exact ends,
 /// no overflow for ends near the largest doubles.
 std::vector<double> linear_grid(double lo, double hi, int n);
