@@ -17,7 +17,7 @@ const ThreePhaseParameters kCase3{1.0, 0.084, 2.3, 1.3};
 void exact_per_period(benchmark::State& st, ThreePhaseParameters params) {
   const ThreePhaseProfile profile(params);
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   const long long periods = 1000;
   std::size_t arcs = 0;
   for (auto _ : st) {

@@ -202,7 +202,7 @@ TEST(CliFloquet, SlipSlipMultiplierIsEquation33ByEveryMethod) {
   EXPECT_LT(j["spread"].get<double>(), kFiniteDifference);
 }
 
-TEST(CliFloquet, OtherPiecewiseConstantProfilesHaveNoAnalyticMatrix) {
+TEST(CliFloquet, OtherPiecewisePolynomialProfilesHaveNoAnalyticMatrix) {
   CliSandbox box;
   const json j = run_json(box, {"floquet", "--json", "--profile", "quadratic-sequence",
                                 "--durations", "0.3,0.4,0.3", "--accelerations", "0,-3,4"});

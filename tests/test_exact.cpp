@@ -25,8 +25,8 @@ constexpr double kEventRelTol = 1e-14;
 struct KindCount final : ArcSink {
   int harmonic = 0, hyperbolic = 0;
   void on_arc(const Arc& a) override {
-    harmonic += a.kind == ArcKind::harmonic;
-    hyperbolic += a.kind == ArcKind::hyperbolic;
+    harmonic += a.kind() == ArcKind::harmonic;
+    hyperbolic += a.kind() == ArcKind::hyperbolic;
   }
 };
 
@@ -47,7 +47,7 @@ TEST(ExactSolver, CaseOneMatchesClosedFormTwelveToTwentyFour) {
   const ThreePhaseProfile profile(p);
   const ThreePhaseSolution& r = profile.solution();
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
 
   // eqs. (15)-(21) with x(t0) = 0, x'(t0) = x'_0s = 0.
   const double a2 = p.a2, a3 = p.a3, t1 = r.t1, t2 = r.t2, t3 = r.t3;
@@ -74,11 +74,11 @@ TEST(ExactSolver, CaseOneMatchesClosedFormTwelveToTwentyFour) {
   ExactState s = make_exact_state(setup, {0, 0, 0});
   advance_exact(setup, s, t3, &rec);
   ASSERT_EQ(rec.arcs.size(), 4u);
-  EXPECT_EQ(rec.arcs[0].kind, ArcKind::stick);
-  EXPECT_EQ(rec.arcs[1].kind, ArcKind::parabolic);
+  EXPECT_EQ(rec.arcs[0].kind(), ArcKind::stick);
+  EXPECT_EQ(rec.arcs[1].kind(), ArcKind::parabolic);
   EXPECT_EQ(rec.arcs[2].end, ArcEnd::velocity_zero);
   EXPECT_NEAR(rec.arcs[2].t1, t_stop, kEventRelTol * t_stop);
-  EXPECT_EQ(rec.arcs[3].kind, ArcKind::stick);
+  EXPECT_EQ(rec.arcs[3].kind(), ArcKind::stick);
   // x'_0s = 0 is the steady state: every period moves the object by the same c_1 (eq. 26).
   const double c1 = closed_form(t3).x;
   const ObjectState after5 = state_at(setup, {0, 0, 0}, 5 * t3);
@@ -94,7 +94,7 @@ TEST(ExactSolver, TransitionRegionMatchesFortyThreeToFortySeven) {
   const ThreePhaseSolution& r = profile.solution();
   const double x_mu = 0.3, w = 0.05, c_mu = 2.5;
   const TwoRegionFriction friction(x_mu, w, c_mu);
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
 
   const double delta = 0.01, v0 = 0.3, A = p.a3;  // start x_mu - delta at t2 with x' = v0
   // Region 1, x'' = -1 - y3'': reaches x_mu at t* (smallest root, stable form).
@@ -120,9 +120,9 @@ TEST(ExactSolver, TransitionRegionMatchesFortyThreeToFortySeven) {
   EXPECT_NEAR(rec.arcs[0].t1, t_star, kEventRelTol * t_star);
   EXPECT_EQ(rec.arcs[0].x1, x_mu);
   EXPECT_NEAR(rec.arcs[0].xd1, v_star, kStateTol);
-  EXPECT_EQ(rec.arcs[1].kind, ArcKind::harmonic);
-  EXPECT_NEAR(rec.arcs[1].omega, std::sqrt(b1), 1e-14);
-  EXPECT_NEAR(rec.arcs[1].center, b3 / b1, kStateTol);
+  EXPECT_EQ(rec.arcs[1].kind(), ArcKind::harmonic);
+  EXPECT_NEAR(std::get<HarmonicArc>(rec.arcs[1].shape).omega, std::sqrt(b1), 1e-14);
+  EXPECT_NEAR(std::get<HarmonicArc>(rec.arcs[1].shape).center, b3 / b1, kStateTol);
   EXPECT_EQ(rec.arcs[1].end, ArcEnd::velocity_zero);
   EXPECT_NEAR(rec.arcs[1].t1, t_stop, kEventRelTol * t_stop);
   for (int k = 0; k <= 200; ++k) {
@@ -132,7 +132,7 @@ TEST(ExactSolver, TransitionRegionMatchesFortyThreeToFortySeven) {
     EXPECT_NEAR(e.xd, c.xd, kStateTol) << "t = " << t;
   }
   // After the stop: friction 1 + b1 (x - x_mu) >= 1 > y3'' holds the object (eq. 38).
-  EXPECT_EQ(rec.arcs[2].kind, ArcKind::stick);
+  EXPECT_EQ(rec.arcs[2].kind(), ArcKind::stick);
   EXPECT_EQ(s.object.xd, 0.0);
   EXPECT_NEAR(s.object.x, eq43(t_stop).x, kStateTol);
 }
@@ -149,7 +149,7 @@ TEST(ExactSolver, AllArcKindsAgreeWithFineTimeSteppingInTheTransitionRegion) {
   for (auto [a2, a3] : {std::pair{2.3, 1.3}, std::pair{1.8, 1.1}}) {
     const ThreePhaseProfile profile({1.0, 0.084, a2, a3});
     const TwoRegionFriction friction(0.1, 0.05, 2.5);
-    const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+    const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
     for (double x0 : {0.0, 0.013, 0.027, 0.041}) {
       KindCount kinds;
       ExactState s = make_exact_state(setup, {0, x0, 0});
@@ -174,7 +174,7 @@ TEST(ExactSolver, StickSlipDecisionFollowsTheSetValuedLaw) {
   // Case 2 setting: the object first slips backward (y3'' = 3 > 1 pushes it to -x).
   const ThreePhaseProfile profile({1.0, 0.084, 0.9, 3.0});
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   MotionCensus census;
   ExactState s = make_exact_state(setup, {0, 0, 0});
   advance_exact(setup, s, 10.0, &census);
@@ -188,7 +188,7 @@ TEST(ExactSolver, StickSlipDecisionFollowsTheSetValuedLaw) {
 TEST(ExactSolver, RefusesAStateNotPlacedByTheSolver) {
   const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {0.0, 0.0, 0.0});
   ExactState bad = s;
   bad.segment = 3;  // the three-phase profile has segments 0, 1, 2

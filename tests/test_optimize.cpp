@@ -159,7 +159,7 @@ TEST(Optimize, PiecewiseConstantOptimumNeverFallsAsSegmentsAreAdded) {
 TEST(Optimize, FourierApproximationMatchesTimeStepping) {
   std::vector<double> a, b;
   const ThreePhaseProfile three({kFig6.period, kFig6.stroke, 1000, 80});
-  fourier_series_of(*three.piecewise_constant(), 6, a, b);
+  fourier_series_of(*three.piecewise_polynomial(), 6, a, b);
   const FourierProfile p(kFig6.period, a, b);
   const SteadyState approx = approximate_steady_state(p, 256);
   const SteadyState fine = approximate_steady_state(p, 1024);
@@ -170,7 +170,7 @@ TEST(Optimize, FourierApproximationMatchesTimeStepping) {
   EXPECT_NEAR(approx.v_bar, stepped.v_bar, 2e-3 * std::abs(stepped.v_bar));
   EXPECT_NEAR(approx.v_bar, fine.v_bar, 1e-3 * std::abs(fine.v_bar));
   // Node velocities of the approximation are those of the profile.
-  const PiecewiseConstantProfile pc = fourier_approximation(p, 256);
+  const PiecewisePolynomialProfile pc = fourier_approximation(p, 256);
   for (int i = 0; i < 256; i += 17)
     EXPECT_NEAR(pc.velocity(kFig6.period * i / 256), p.velocity(kFig6.period * i / 256), 1e-9);
 }

@@ -9,17 +9,17 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/sampled.hpp"
 
 using namespace selfalign;
 
-TEST(PiecewiseConstantProfile, SymmetricBangBangByHand) {
+TEST(PiecewisePolynomialProfile, SymmetricBangBangByHand) {
   // y'' = +1 on [0, 1), -1 on [1, 3), +1 on [3, 4): y' starts at 0 and is a triangle wave with
   // mean 0; y(t) = t^2/2 on [0, 1] ... a hand-drawn parabola chain with min y = 0 at t = 0 and
   // max at t = 2: y(2) = 0.5 + 0.5 = 1. Stroke 1, peak acceleration 1.
   const double d[3] = {1, 2, 1}, a[3] = {1, -1, 1};
-  const auto p = PiecewiseConstantProfile::from_accelerations(d, a);
+  const auto p = PiecewisePolynomialProfile::from_accelerations(d, a);
   EXPECT_DOUBLE_EQ(p.period(), 4.0);
   EXPECT_NEAR(p.stroke(), 1.0, 1e-15);
   EXPECT_NEAR(p.state(0).y, 0.0, 1e-15);
@@ -31,11 +31,11 @@ TEST(PiecewiseConstantProfile, SymmetricBangBangByHand) {
   EXPECT_EQ(p.peak_acceleration(), 1.0);
 }
 
-TEST(PiecewiseConstantProfile, RejectsVelocityThatDoesNotReturn) {
+TEST(PiecewisePolynomialProfile, RejectsVelocityThatDoesNotReturn) {
   const double d[2] = {1, 1}, a[2] = {1, -0.9};
-  EXPECT_THROW(PiecewiseConstantProfile::from_accelerations(d, a), InvalidParameter);
+  EXPECT_THROW(PiecewisePolynomialProfile::from_accelerations(d, a), InvalidParameter);
   const double neg[2] = {-1, 1}, ok[2] = {1, -1};
-  EXPECT_THROW(PiecewiseConstantProfile::from_accelerations(neg, ok), InvalidParameter);
+  EXPECT_THROW(PiecewisePolynomialProfile::from_accelerations(neg, ok), InvalidParameter);
 }
 
 TEST(FourierProfile, SingleHarmonicByHand) {
@@ -68,12 +68,12 @@ TEST(SampledProfile, ReadsCsvAndInterpolates) {
   const AccelerationSamples s = read_acceleration_samples(path);
   ASSERT_EQ(s.t.size(), 4u);
   const auto c = make_sampled_profile(s, Interpolation::constant);
-  ASSERT_NE(c->piecewise_constant(), nullptr);  // the exact solver applies
+  ASSERT_NE(c->piecewise_polynomial(), nullptr);  // the exact solver applies
   EXPECT_NEAR(c->stroke(), 1.0, 1e-15);         // same as SymmetricBangBangByHand
   // Linear: y'' = 1 - t on [0, 2], t - 3 on [2, 4] -> integral 0. Check y' increments by hand:
   const AccelerationSamples lin{{0, 2, 4}, {1, -1, 1}};
   const auto l = make_sampled_profile(lin, Interpolation::linear);
-  EXPECT_EQ(l->piecewise_constant(), nullptr);
+  EXPECT_EQ(l->piecewise_polynomial(), nullptr);
   EXPECT_NEAR(l->state(0.5).ydd, 0.5, 1e-15);
   EXPECT_NEAR(l->state(1.0).yd - l->state(0.0).yd, 0.5, 1e-15);  // integral of 1 - t on [0, 1]
   EXPECT_NEAR(l->state(4.0).yd, l->state(0.0).yd, 1e-14);

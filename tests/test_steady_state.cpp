@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "selfalign/analysis/steady_state.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -65,7 +65,7 @@ TEST(SteadyState, SlowlyContractingSlipSlipIsAFixedPointOfThePeriodMap) {
   EXPECT_EQ(s.motion_case, StickSlipCase::slip_slip);
   EXPECT_LT(s.periods, 40);
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState st = make_exact_state(setup, {0, 0, s.x_dot_0s});
   advance_exact(setup, st, 50 * p.period);
   EXPECT_NEAR(st.object.xd, s.x_dot_0s, 1e-10);
@@ -104,7 +104,7 @@ TEST(SteadyState, ManySegmentProfilesGiveAPhysicalFixedPoint) {
     double mean = 0;
     for (double v : a) mean += v / m;
     for (double& v : a) v -= mean;  // the velocity returns (to rounding)
-    const auto profile = PiecewiseConstantProfile::from_accelerations(d, a);
+    const auto profile = PiecewisePolynomialProfile::from_accelerations(d, a);
     const SteadyState s = steady_state(profile);
     ASSERT_TRUE(s.converged) << "seed " << seed;
     EXPECT_LE(std::abs(s.x_dot_0s), (profile.peak_acceleration() + 1) * 0.072) << "seed " << seed;

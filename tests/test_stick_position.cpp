@@ -41,7 +41,7 @@ TEST(StickPosition, MapMatchesExactSuccessiveStickPositionsFigureEighteen) {
   // Stuck at x_1 at t0; the exact solver's next stops are the map's iterates (eq. 59).
   const double x1 = 0.3 + 0.012;
   ASSERT_TRUE(map.proves_accumulation_from(x1));
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {0, x1, 0});
   StopPositions stops;
   advance_exact(setup, s, 6 * 1.05, &stops);
@@ -112,7 +112,7 @@ namespace {
 // switch times (n Δt + begin, Δt the segments' own period), so it lands on the switch.
 std::vector<double> rest_positions_at_t1(const ThreePhaseProfile& profile,
                                          const TwoRegionFriction& friction, double x1, int n) {
-  const PiecewiseConstantProfile& pwc = *profile.piecewise_constant();
+  const PiecewisePolynomialProfile& pwc = *profile.piecewise_polynomial();
   const ExactSetup setup{pwc, *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {0, x1, 0});
   const double t1 = pwc.segments()[1].begin;  // [t0, t1]: y'' = 0; [t1, t2]: y'' = -y2''

@@ -49,7 +49,7 @@ TEST(Stopping, PermanentStickIsHeldForGood) {
   EXPECT_GE(friction.bound(run.end_position), profile.peak_acceleration());  // eq. (40)
   EXPECT_GT(run.end_position, run.x_stick_min);
   // Nothing moves it over 50 more periods (exact solver).
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {run.process_time, run.end_position, 0});
   advance_exact(setup, s, run.process_time + 50);
   EXPECT_EQ(s.object.x, run.end_position);
@@ -71,7 +71,7 @@ TEST(Stopping, AccumulationEndsAtStickPositionMin) {
   EXPECT_LE(run.periods_to_fraction[1], 7);  // the paper's "at most 7" for p = 0.999
   // The exact solution creeps towards x_stick,min (geometrically, slope cos(theta) = 0.22 per
   // period) and does not pass it beyond rounding (a few ulps of 0.14).
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {0, 0, 0});
   advance_exact(setup, s, 60);
   EXPECT_LE(s.object.x, run.x_stick_min + 1e-15);
@@ -98,7 +98,7 @@ TEST(Stopping, DiagonalAccumulatesLikeItsNeighbour) {
   EXPECT_EQ(d.periods_to_fraction, n.periods_to_fraction);
   // A second method: the exact solution over 60 periods creeps up to x_stick,min from below
   // (0.46^60 of the distance is far below rounding) and never passes it.
-  const ExactSetup setup{*diagonal.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*diagonal.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {0, 0, 0});
   std::vector<double> targets;
   for (double p : StoppingOptions{}.fractions) targets.push_back(0.5 + p * (d.x_stick_min - 0.5));

@@ -79,7 +79,7 @@ TEST(Sweep, ScaledFourierFamilyScalesTheStrokeAndUsesTimeStepping) {
   const ScaledFourierFamily family({0.0, 0.2}, {1.0, 0.0, 0.1});
   const auto p = family.make(0.072, 0.021);
   EXPECT_NEAR(p->stroke(), 0.021, 1e-14);
-  EXPECT_EQ(p->piecewise_constant(), nullptr);
+  EXPECT_EQ(p->piecewise_polynomial(), nullptr);
   SweepOptions o;
   o.steady.steps_per_period = 2000;
   const auto pts = sweep_period(family, 0.021, {0.072}, o);

@@ -21,7 +21,7 @@ struct Integrated {
 };
 
 // Integrates the three constant-acceleration intervals of Fig. 7 from (y_ini, y'_ini),
-// independently of the library's PiecewiseConstantProfile.
+// independently of the library's PiecewisePolynomialProfile.
 Integrated integrate(const ThreePhaseParameters& p, const ThreePhaseSolution& r) {
   const double acc[3] = {0.0, -p.a2, p.a3};
   const double t[4] = {0.0, r.t1, r.t2, r.t3};
@@ -57,7 +57,7 @@ TEST(ThreePhaseProfile, MeetsAllConstraintsOnTheGridAndReportsCaseZero) {
       const double s = 1 / p.a2 + 1 / p.a3, D = dt / s;
       const double durations[3] = {0.0, D / p.a2, D / p.a3}, accels[3] = {0.0, -p.a2, p.a3};
       const double max_stroke =
-          PiecewiseConstantProfile::from_accelerations(durations, accels).stroke();
+          PiecewisePolynomialProfile::from_accelerations(durations, accels).stroke();
       if (!r.physical) {
         ++case0;
         EXPECT_LT(max_stroke, dy * (1 + 1e-12)) << p.a2 << ", " << p.a3;
@@ -170,7 +170,7 @@ TEST(ThreePhaseProfile, EveryPhysicalSettingBuildsOverExtremeScales) {
         const double G = std::sqrt(2 * s * p.stroke) / p.period;
         const double u = 2 * G / (1 + std::sqrt(1 - 2 * G));
         const double D = u * p.period / s;
-        const auto segs = profile->piecewise_constant()->segments();
+        const auto segs = profile->piecewise_polynomial()->segments();
         double dv = 0, dt = 0;
         for (const AccelerationSegment& seg : segs) {
           dv += seg.accel * seg.duration;

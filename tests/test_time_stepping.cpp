@@ -44,7 +44,7 @@ TEST_P(Convergence, OrderAtLeastPointNineAfterTwentyPeriods) {
   const CaseSetting c = GetParam();
   const ThreePhaseProfile profile(c.params);
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   const double t_end = 20 * c.params.period;  // simulated time after t0
 
   {
@@ -92,7 +92,7 @@ TEST(TimeStepping, ClosedFormProjectionSticksInsideTheFrictionCone) {
   // One step from rest with table velocity change Δy': |Δy'| <= h m sticks; otherwise the
   // velocity is reduced by exactly h m (the projection onto -Sign).
   const double d[2] = {1, 1}, a[2] = {2, -2};
-  const auto profile = PiecewiseConstantProfile::from_accelerations(d, a);
+  const auto profile = PiecewisePolynomialProfile::from_accelerations(d, a);
   const UniformFriction friction(1.0);
   TimeSteppingState s = make_time_stepping_state(profile, {0, 0, 0});
   const double h = 1e-3;

@@ -9,7 +9,7 @@ int main() {
   using namespace selfalign;
   const ThreePhaseProfile profile({/*period*/ 1.0, /*stroke*/ 0.084, /*a2*/ 3.0, /*a3*/ 0.9});
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_constant(), *friction.piecewise_affine()};
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState state = make_exact_state(setup, {0.0, 0.0, 0.0});
   advance_exact(setup, state, 10.0);
   std::printf("x(10) = %.12f\n", state.object.x);

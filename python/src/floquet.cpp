@@ -105,6 +105,13 @@ options. Runs without the GIL.)doc";
         py::overload_cast<const TableProfile&, const FloquetOptions&>(&floquet_multipliers),
         py::arg("profile"), py::arg("options") = FloquetOptions{},
         py::call_guard<py::gil_scoped_release>(), doc);
+  m.def("floquet_multipliers",
+        py::overload_cast<const TableProfile&, const CoulombFriction&, const FloquetOptions&>(
+            &floquet_multipliers),
+        py::arg("profile"), py::arg("law"), py::arg("options") = FloquetOptions{},
+        py::call_guard<py::gil_scoped_release>(),
+        "Saltation and finite-difference monodromy of the steady state under a CoulombFriction "
+        "law (any piecewise-polynomial profile, finite jerk included).");
 
   m.def(
       "slip_slip_multiplier",

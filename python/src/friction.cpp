@@ -4,6 +4,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "repr.hpp"
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/friction/friction_map.hpp"
 
 namespace selfalign::python {
@@ -32,6 +33,31 @@ py::object pieces(const FrictionMap& f) {
 }  // namespace
 
 void bind_friction(py::module_& m) {
+  py::class_<CoulombFriction>(m, "CoulombFriction", R"doc(
+The contact's friction law: Coulomb friction with a static coefficient at least the kinetic
+one, optionally with direction-dependent kinetic coefficients (sawtooth or textured surfaces).
+Dimensionless: every coefficient is relative to mu_1, the forward kinetic coefficient of the
+low-friction region, so CoulombFriction() = (1, 1, 1) is the paper's law. While stuck the
+object is held as long as |y''| <= static m(x); while slipping in direction sigma the force is
+-kinetic_sigma m(x) sigma.)doc")
+      .def(py::init<>())
+      .def(py::init<double, double>(), py::arg("static"), py::arg("kinetic"),
+           "Symmetric law: 0 < kinetic <= static. Raises InvalidParameter naming both otherwise.")
+      .def(py::init<double, double, double>(), py::arg("static"), py::arg("kinetic_forward"),
+           py::arg("kinetic_backward"),
+           "Direction-dependent kinetic coefficients: 0 < kinetic_forward, kinetic_backward <= "
+           "static.")
+      .def_property_readonly("static", &CoulombFriction::static_coefficient, "s [-]")
+      .def_property_readonly("kinetic_forward", &CoulombFriction::kinetic_forward, "k_+ [-]")
+      .def_property_readonly("kinetic_backward", &CoulombFriction::kinetic_backward, "k_- [-]")
+      .def("__eq__", [](const CoulombFriction& a, const CoulombFriction& b) { return a == b; })
+      .def("__repr__", [](const CoulombFriction& f) {
+        return Repr("CoulombFriction")("static", f.static_coefficient())(
+                   "kinetic_forward", f.kinetic_forward())("kinetic_backward",
+                                                           f.kinetic_backward())
+            .str();
+      });
+
   py::class_<FrictionMap>(m, "FrictionMap", R"doc(
 A friction law m(x) = mu_bar(x)/mu_1 >= 0 [-] (eqs. 7-9): in the dimensionless model
 (Sect. 3.2) the friction force lies in -m(x) Sign(x'); m = 1 on the low-friction table.

@@ -7,7 +7,7 @@
 #include "bindings.hpp"
 #include "repr.hpp"
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/sampled.hpp"
 
 namespace selfalign::python {
@@ -39,9 +39,10 @@ py::tuple sample(const TableProfile& profile, const py::object& t) {
   return py::make_tuple(y, yd, ydd);
 }
 
-py::dict segments(const PiecewiseConstantProfile& p) {
-  std::vector<double> begin, accel, y, yd;
+py::dict segments(const PiecewisePolynomialProfile& p) {
+  std::vector<double> begin, accel, y, yd, jerk;
   for (const AccelerationSegment& s : p.segments()) {
+    jerk.push_back(s.jerk);
     begin.push_back(s.begin);
     accel.push_back(s.accel);
     y.push_back(s.y);
@@ -50,6 +51,7 @@ py::dict segments(const PiecewiseConstantProfile& p) {
   py::dict d;
   d["begin"] = to_array(std::move(begin));
   d["accel"] = to_array(std::move(accel));
+  d["jerk"] = to_array(std::move(jerk));
   d["y"] = to_array(std::move(y));
   d["yd"] = to_array(std::move(yd));
   return d;
@@ -78,7 +80,7 @@ void bind_table_profile(py::module_& m) {
 
   py::class_<TableProfile>(m, "TableProfile", R"doc(
 A prescribed periodic table motion y(t) (Sect. 4.4). Abstract: build a ThreePhaseProfile,
-PiecewiseConstantProfile, FourierProfile or a sampled profile (make_sampled_profile).
+PiecewisePolynomialProfile, FourierProfile or a sampled profile (make_sampled_profile).
 
 All quantities are dimensionless (Sect. 3.2). A profile is periodic with period Δt; its
 velocity has zero mean, and min y = 0 (Sect. 4.4.3, constraint 1), so the stroke is max y.)doc")
@@ -104,24 +106,38 @@ velocity has zero mean, and min y = 0 (Sect. 4.4.3, constraint 1), so the stroke
       .def("sample", &sample, py::arg("t"), R"doc(
 The table motion at every time of t (float or array-like of any shape) [-]: a tuple
 (y, yd, ydd) of float64 arrays shaped like t (floats for a float t).)doc")
-      .def("piecewise_constant", &TableProfile::piecewise_constant,
+      .def("piecewise_polynomial", &TableProfile::piecewise_polynomial,
            py::return_value_policy::reference_internal,
-           "The profile as a PiecewiseConstantProfile when its acceleration is piecewise "
-           "constant (then the exact solver applies), else None.")
+           "The profile as a PiecewisePolynomialProfile when its acceleration is piecewise "
+           "polynomial of degree <= 1 (constant or linear in time: then the exact solver "
+           "applies), else None.")
+      .def(
+          "piecewise_constant",
+          [](const TableProfile& p) -> const PiecewisePolynomialProfile* {
+            const PiecewisePolynomialProfile* q = p.piecewise_polynomial();
+            return q && q->piecewise_constant() ? q : nullptr;
+          },
+          py::return_value_policy::reference_internal,
+          "The profile as a PiecewisePolynomialProfile when its acceleration is piecewise "
+          "constant (jerk 0 everywhere), else None.")
       .def("__repr__", &profile_repr);
 }
 
 void bind_piecewise_constant(py::module_& m) {
-  py::class_<PiecewiseConstantProfile, TableProfile>(m, "PiecewiseConstantProfile", R"doc(
-A periodic table profile whose acceleration is piecewise constant: a periodic sequence of
-second-order polynomials y(t) (Fig. 3 style, Sect. 4.2); the form the exact solver integrates.
-Build it with PiecewiseConstantProfile.from_accelerations.)doc")
+  auto cls = py::class_<PiecewisePolynomialProfile, TableProfile>(m, "PiecewisePolynomialProfile", R"doc(
+A periodic table profile whose acceleration is piecewise polynomial of degree <= 1: constant
+(the paper's sequences of second-order polynomials, Fig. 3 style, Sect. 4.2) or linear in time
+(finite jerk) on each segment; the form the exact solver integrates. Build it with
+PiecewisePolynomialProfile.from_accelerations (constant), from_linear_accelerations or
+from_breakpoints (finite jerk). PiecewiseConstantProfile is the same class.)doc");
+  m.attr("PiecewiseConstantProfile") = cls;
+  cls
       .def_static(
           "from_accelerations",
           [](const py::object& durations, const py::object& accels, const std::string& kind) {
             const std::vector<double> d = to_vector(durations, "durations");
             const std::vector<double> a = to_vector(accels, "accels");
-            return PiecewiseConstantProfile::from_accelerations(d, a, kind);
+            return PiecewisePolynomialProfile::from_accelerations(d, a, kind);
           },
           py::arg("durations"), py::arg("accels"), py::arg("kind") = "quadratic-sequence",
           R"doc(
@@ -135,9 +151,36 @@ non-finite accelerations, or a velocity that does not return.)doc")
       .def("segments", &segments, R"doc(
 The constant-acceleration segments of one period as a dict of 1-D float64 arrays:
 'begin' (start time in [0, Δt)), 'accel' (y''), 'y' and 'yd' (table state at the start) [-].)doc")
-      .def("segment_at", &PiecewiseConstantProfile::segment_at, py::arg("phase"),
+      .def("segment_at", &PiecewisePolynomialProfile::segment_at, py::arg("phase"),
            "Index of the segment containing phase p in [0, Δt).")
-      .def("phase", &PiecewiseConstantProfile::phase, py::arg("t"), "Phase of t in [0, Δt) [-].");
+      .def("phase", &PiecewisePolynomialProfile::phase, py::arg("t"), "Phase of t in [0, Δt) [-].")
+      .def_property_readonly("peak_jerk", &PiecewisePolynomialProfile::peak_jerk,
+                             "largest |jerk| over the segments [-] (0: piecewise constant)")
+      .def_static(
+          "from_linear_accelerations",
+          [](const py::object& durations, const py::object& a0, const py::object& a1,
+             const std::string& kind) {
+            return PiecewisePolynomialProfile::from_linear_accelerations(
+                to_vector(durations, "durations"), to_vector(a0, "accel_begin"),
+                to_vector(a1, "accel_end"), kind);
+          },
+          py::arg("durations"), py::arg("accel_begin"), py::arg("accel_end"),
+          py::arg("kind") = "piecewise-linear-acceleration", R"doc(
+The periodic profile whose acceleration goes linearly from accel_begin[i] to accel_end[i] over
+durations[i] [-] (finite jerk; jumps between segments allowed). Same normalisation and checks
+as from_accelerations.)doc")
+      .def_static(
+          "from_breakpoints",
+          [](const py::object& times, const py::object& accels, double period,
+             const std::string& kind) {
+            return PiecewisePolynomialProfile::from_breakpoints(
+                to_vector(times, "times"), to_vector(accels, "accels"), period, kind);
+          },
+          py::arg("times"), py::arg("accels"), py::arg("period"),
+          py::arg("kind") = "piecewise-linear-acceleration", R"doc(
+The continuous piecewise-linear acceleration through the periodic breakpoints (times[i],
+accels[i]) [-]: times[0] = 0, strictly increasing, period > times[-1]; the acceleration returns
+to accels[0] at t = period.)doc");
 }
 
 void bind_fourier(py::module_& m) {
@@ -210,7 +253,7 @@ InvalidParameter naming the file and line on malformed input.)doc");
   m.def("make_sampled_profile", &make_sampled_profile, py::arg("samples"),
         py::arg("interpolation") = Interpolation::constant, R"doc(
 The periodic profile of dimensionless samples, interpolated piecewise constant (returns a
-PiecewiseConstantProfile: the exact solver applies) or piecewise linear (returns a
+PiecewisePolynomialProfile: the exact solver applies) or piecewise linear (returns a
 LinearAccelerationProfile). The acceleration must integrate to zero over the period (1e-9
 relative); the initial velocity makes y periodic and the initial position makes min y = 0.
 Raises InvalidParameter on fewer than 2 samples, t[0] != 0, non-increasing or non-finite

@@ -132,13 +132,21 @@ void bind_simulate(py::module_& m) {
             .str();
       });
 
-  m.def("simulate", &simulate, py::arg("profile"), py::arg("friction"),
-        py::arg("initial") = ObjectState{}, py::arg("options") = SimulationOptions{},
-        py::call_guard<py::gil_scoped_release>(), R"doc(
-Simulates eq. (6), -Sign(x') ∋ x'' + y'', with friction bound m(x) from `initial` over
-options.duration, with the exact event-driven solver or Moreau time-stepping. Raises
-InvalidParameter on bad options, or when Method.exact is asked of a profile that is not
-piecewise constant or a friction map that is not piecewise affine. Runs without the GIL.)doc");
+  m.def(
+      "simulate",
+      [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& initial,
+         const SimulationOptions& options, const CoulombFriction& law) {
+        return simulate(profile, friction, law, initial, options);
+      },
+      py::arg("profile"), py::arg("friction"), py::arg("initial") = ObjectState{},
+      py::arg("options") = SimulationOptions{}, py::kw_only(), py::arg("law") = CoulombFriction{},
+      py::call_guard<py::gil_scoped_release>(), R"doc(
+Simulates eq. (6), -Sign(x') ∋ x'' + y'', with friction level m(x) from `initial` over
+options.duration, with the exact event-driven solver or Moreau time-stepping, under the
+friction law `law` (CoulombFriction: static >= kinetic, optionally direction-dependent kinetic;
+the paper's law by default). Raises InvalidParameter on bad options, or when Method.exact is
+asked of a profile that is not piecewise constant or piecewise linear in acceleration, or a
+friction map that is not piecewise affine. Runs without the GIL.)doc");
 }
 
 }  // namespace selfalign::python

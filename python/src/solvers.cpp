@@ -1,6 +1,8 @@
 // The two solvers one step below simulate(): the exact event-driven solver (its arcs, eqs.
 // 12-24 and 42-47) and Moreau time-stepping (Sect. 4.1), each with an explicit state.
 #include <cstdint>
+#include <limits>
+#include <variant>
 #include <utility>
 
 #include "arrays.hpp"
@@ -17,15 +19,43 @@ namespace {
 
 // The exact solver's setup borrowed from a profile and a friction map.
 ExactSetup exact_setup(const TableProfile& profile, const FrictionMap& friction) {
-  const PiecewiseConstantProfile* p = profile.piecewise_constant();
+  const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
   if (!p)
     throw InvalidParameter("profile", profile.kind(),
-                           "the exact solver needs a piecewise-constant table acceleration");
+                           "the exact solver needs a piecewise-constant or piecewise-linear table acceleration");
   const PiecewiseAffineFriction* f = friction.piecewise_affine();
   if (!f)
     throw InvalidParameter("friction", "not piecewise affine",
                            "the exact solver needs a piecewise-affine friction map");
   return {*p, *f};
+}
+
+// Columns of an arc's shape (NaN where the shape has no such parameter): parabolic/cubic x''
+// at the start, harmonic/hyperbolic omega and centre.
+template <class... Fs>
+struct Overloaded : Fs... {
+  using Fs::operator()...;
+};
+template <class... Fs>
+Overloaded(Fs...) -> Overloaded<Fs...>;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+double arc_alpha(const Arc& a) {
+  return std::visit(Overloaded{[](const PolynomialArc& p) { return p.accel; },
+                               [](const StickArc&) { return 0.0; },
+                               [](const auto&) { return kNaN; }},
+                    a.shape);
+}
+double arc_omega(const Arc& a) {
+  return std::visit(Overloaded{[](const HarmonicArc& h) { return h.omega; },
+                               [](const HyperbolicArc& h) { return h.omega; },
+                               [](const auto&) { return 0.0; }},
+                    a.shape);
+}
+double arc_center(const Arc& a) {
+  return std::visit(Overloaded{[](const HarmonicArc& h) { return h.center; },
+                               [](const HyperbolicArc& h) { return h.center; },
+                               [](const auto&) { return 0.0; }},
+                    a.shape);
 }
 
 // Collects arcs column-wise.
@@ -39,9 +69,9 @@ struct ArcColumns final : ArcSink {
                              "the run has more than 1e7 arcs to return: shorten duration");
     t0.push_back(a.t0), t1.push_back(a.t1), x0.push_back(a.x0), xd0.push_back(a.xd0);
     x1.push_back(a.x1), xd1.push_back(a.xd1), table_accel.push_back(a.table_accel);
-    bound0.push_back(a.bound0), slope.push_back(a.slope), alpha.push_back(a.alpha);
-    omega.push_back(a.omega), center.push_back(a.center);
-    kind.push_back(static_cast<std::int8_t>(a.kind));
+    bound0.push_back(a.bound0), slope.push_back(a.slope), alpha.push_back(arc_alpha(a));
+    omega.push_back(arc_omega(a)), center.push_back(arc_center(a));
+    kind.push_back(static_cast<std::int8_t>(a.kind()));
     direction.push_back(a.direction);
     end.push_back(static_cast<std::int8_t>(a.end));
     segment.push_back(static_cast<std::int64_t>(a.segment));

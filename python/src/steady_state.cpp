@@ -103,6 +103,8 @@ void bind_steady_state(py::module_& m) {
       .def_readonly("periods", &SteadyState::periods, "periods simulated to find it")
       .def_readonly("motion_case", &SteadyState::motion_case,
                     "a posteriori Table 1 case of the steady period")
+      .def_readonly("pattern", &SteadyState::pattern,
+                    "the steady period's stick/slip sequence, e.g. 'stick,forward,backward'")
       .def("__repr__", [](const SteadyState& s) {
         return Repr("SteadyState")("converged", s.converged)("x_dot_0s", s.x_dot_0s)(
                    "v_bar", s.v_bar)("f", s.f)
@@ -110,15 +112,23 @@ void bind_steady_state(py::module_& m) {
             .str();
       });
 
-  m.def("steady_state", &steady_state, py::arg("profile"),
+  m.def("steady_state",
+        py::overload_cast<const TableProfile&, const SteadyStateOptions&>(&steady_state), py::arg("profile"),
+        py::arg("options"), py::call_guard<py::gil_scoped_release>());
+  m.def("steady_state",
+        py::overload_cast<const TableProfile&, const CoulombFriction&, const SteadyStateOptions&>(
+            &steady_state),
+        py::arg("profile"), py::arg("law") = CoulombFriction{},
         py::arg("options") = SteadyStateOptions{}, py::call_guard<py::gil_scoped_release>(),
         R"doc(
 Steady state on the uniform table (friction bound 1): the unique periodic velocity response
 (Sect. 6.2), found by iterating the period map P(v) = x'(t0 + Δt) and secant steps on
 P(v) - v, stopped on the estimated error |P(v) - v| / (1 - λ) (x_dot_0s_error), not on the
 residual; its average velocity v̄ (eq. 10), objective f (eq. 11) and a posteriori case.
-Exact solver where the table acceleration is piecewise constant, time-stepping otherwise.
-Raises InvalidParameter on bad options. Runs without the GIL.)doc");
+law: the friction law (CoulombFriction: static >= kinetic, optionally direction-dependent
+kinetic coefficients); the paper's static = kinetic = 1 by default.
+Exact solver where the table acceleration is piecewise polynomial (constant or finite jerk),
+time-stepping otherwise. Raises InvalidParameter on bad options. Runs without the GIL.)doc");
 
   m.attr("OBJECTIVE_SCALE") = kObjectiveScale;
   m.def(

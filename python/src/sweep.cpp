@@ -57,7 +57,7 @@ void bind_families(py::module_& m) {
 One shape of piecewise-constant acceleration (a Fig. 3 style sequence of quadratics), stretched
 in time to the period and scaled in amplitude to the stroke: durations scale with Δt,
 accelerations with Δy / Δt^2.)doc")
-      .def(py::init<PiecewiseConstantProfile>(), py::arg("shape"))
+      .def(py::init<PiecewisePolynomialProfile>(), py::arg("shape"))
       .def_static("paper_like", &ScaledShapeFamily::paper_like,
                   "The default shape: fractions (0.35, 0.35, 0.30) of the period with "
                   "accelerations (0, -6/7, +1).");

@@ -1,5 +1,7 @@
 #include "selfalign/analysis/motion_case.hpp"
 
+#include <algorithm>
+
 namespace selfalign {
 
 std::string describe(StickSlipCase c) {
@@ -33,9 +35,24 @@ StickSlipCase predict_case(const ThreePhaseParameters& p) {
 
 void MotionCensus::on_arc(const Arc& a) {
   if (a.t1 <= a.t0) return;
-  if (a.kind == ArcKind::stick) ++stick;
-  else if (a.direction > 0) ++forward;
-  else if (a.direction < 0) ++backward;
+  char c = 0;
+  if (a.kind() == ArcKind::stick) ++stick, c = '0';
+  else if (a.direction > 0) ++forward, c = '+';
+  else if (a.direction < 0) ++backward, c = '-';
+  if (c && (sequence.empty() || sequence.back() != c)) sequence.push_back(c);
+}
+
+std::string MotionCensus::pattern() const {
+  std::string cyc = sequence;
+  if (cyc.size() > 1 && cyc.front() == cyc.back()) cyc.pop_back();
+  const std::size_t s = cyc.find('0');
+  if (s != std::string::npos) std::rotate(cyc.begin(), cyc.begin() + static_cast<long>(s), cyc.end());
+  std::string out;
+  for (char c : cyc) {
+    if (!out.empty()) out += ',';
+    out += c == '0' ? "stick" : c == '+' ? "forward" : "backward";
+  }
+  return out;
 }
 
 StickSlipCase MotionCensus::motion_case() const {

@@ -7,7 +7,8 @@
 #include "parallel_cells.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/analysis/period_map.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
 
@@ -35,10 +36,10 @@ struct MaxPosition final : ArcSink {
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
                                          const PositioningOptions& o) {
   validate(o);
-  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
   if (!pwc)
     throw InvalidParameter("profile", profile.kind(),
-                           "positioning needs a piecewise-constant table acceleration");
+                           "positioning needs a piecewise-constant or piecewise-linear table acceleration");
   TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
   PositioningAccuracy r;
   r.steady = steady_state(profile, o.steady);
@@ -48,11 +49,9 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, double wid
     return r;
   }
   // Δx: the largest displacement in one steady period (Sect. 7.1), from x = 0 at phase 0.
-  const UniformFriction uniform;
-  const ExactSetup setup{*pwc, *uniform.piecewise_affine()};
-  ExactState s = make_exact_state(setup, {0, 0, r.steady.x_dot_0s});
+  const PeriodMap map(profile);
   MaxPosition max_position;
-  advance_exact(setup, s, profile.period(), &max_position);
+  map(0, r.steady.x_dot_0s, &max_position);
   r.x_mu = max_position.max_x;
 
   const TwoRegionFriction friction(r.x_mu, width, c_mu);

@@ -5,9 +5,7 @@
 #include <memory>
 
 #include "selfalign/error.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
-#include "selfalign/simulate/exact.hpp"
-#include "selfalign/simulate/time_stepping.hpp"
+#include "selfalign/analysis/period_map.hpp"
 
 namespace selfalign {
 
@@ -15,62 +13,30 @@ double objective_f(double v_bar, double c) {
   return v_bar == 0 ? std::numeric_limits<double>::infinity() : 1.0 / (c * v_bar * v_bar);
 }
 
-namespace {
-
-// Time-stepping census: stick / forward / backward seen over one period of samples. A stick
-// counts once x' = 0 holds for two consecutive steps: a slip reversal can land one step on
-// x' = 0 (|v*| <= h m while the velocity crosses zero), which is not a stick of the response.
-struct SampleCensus final : StepSink {
-  MotionCensus census;
-  int zero_run = 0;
-  void on_step(const TimeSteppingState& s) override {
-    const double v = s.object.xd;
-    zero_run = v == 0 ? zero_run + 1 : 0;
-    if (v != 0 || zero_run == 2) {
-      Arc a;
-      a.t0 = 0;
-      a.t1 = 1;
-      a.kind = v == 0 ? ArcKind::stick : ArcKind::parabolic;
-      a.direction = static_cast<std::int8_t>(v > 0 ? 1 : v < 0 ? -1 : 0);
-      census.on_arc(a);
-    }
-  }
-};
-
-}  // namespace
-
 SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& o) {
+  return steady_state(profile, CoulombFriction{}, o);
+}
+
+SteadyState steady_state(const TableProfile& profile, const CoulombFriction& law,
+                         const SteadyStateOptions& o) {
+  if (o.steps_per_period < 1)
+    throw InvalidParameter("steps_per_period", o.steps_per_period, "must be >= 1");
+  const PeriodMap map(profile, law, {o.steps_per_period, o.theta});
+  return steady_state(map, o);
+}
+
+SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   if (o.max_periods < 2) throw InvalidParameter("max_periods", o.max_periods, "must be >= 2");
   require_positive("velocity_tol", o.velocity_tol);
-  const UniformFriction friction(1.0);
+  const TableProfile& profile = map.profile();
   const double P = profile.period();
   SteadyState r;
-
-  // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0.
-  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  r.method = map.method();
   double tol = o.velocity_tol;
-  const long long steps = o.steps_per_period;
-  const TimeSteppingOptions stepping{P / static_cast<double>(steps), o.theta};
-  if (!pwc) {
-    if (steps < 1)
-      throw InvalidParameter("steps_per_period", static_cast<double>(steps), "must be >= 1");
-    validate(stepping);
-    r.method = Method::time_stepping;
-    tol = o.stepping_tol > 0 ? o.stepping_tol : 10 * stepping.step;
-  }
-  auto period_map = [&](double v, MotionCensus* census) -> ObjectState {
-    if (pwc) {
-      const ExactSetup setup{*pwc, *friction.piecewise_affine()};
-      ExactState s = make_exact_state(setup, {0, 0, v});
-      advance_exact(setup, s, P, census);
-      return s.object;
-    }
-    SampleCensus samples;
-    TimeSteppingState s = make_time_stepping_state(profile, {0, 0, v});
-    advance_time_stepping(profile, friction, stepping, s, steps, census ? &samples : nullptr);
-    if (census) *census = samples.census;
-    return s.object;
-  };
+  if (r.method == Method::time_stepping)
+    tol = o.stepping_tol > 0 ? o.stepping_tol : 10 * map.step();
+  // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0.
+  auto period_map = [&](double v, MotionCensus* census) { return map(0, v, nullptr, census); };
 
   // Secant iteration on g(v) = P(v) - v, started from rest: plain iterates first (they reach
   // the stick-determined fixed point exactly), then secant steps (affine slip-slip maps).
@@ -153,6 +119,7 @@ SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& 
   const ObjectState end = period_map(v, &census);
   r.displacement = end.x;
   r.motion_case = census.motion_case();
+  r.pattern = census.pattern();
   ++r.periods;
   r.v_bar = r.displacement / P;  // eq. (10)
   r.f = objective_f(r.v_bar);    // eq. (11)

@@ -6,9 +6,9 @@
 
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
-#include "selfalign/simulate/exact.hpp"
+#include "selfalign/analysis/period_map.hpp"
 
 namespace selfalign {
 
@@ -69,10 +69,10 @@ struct StopWatch final : ArcSink {
 
 StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
                          const ObjectState& start, const StoppingOptions& o) {
-  const PiecewiseConstantProfile* pwc = profile.piecewise_constant();
+  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
   if (!pwc)
     throw InvalidParameter("profile", profile.kind(),
-                           "a stopping run needs a piecewise-constant table acceleration");
+                           "a stopping run needs a piecewise-constant or piecewise-linear table acceleration");
   if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");
   for (double p : o.fractions)
     if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");
@@ -106,21 +106,21 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
         break;
       }
 
-  const ExactSetup setup{*pwc, *friction.piecewise_affine()};
-  ExactState s = make_exact_state(setup, start);
+  const PeriodMap period_map(profile, friction, CoulombFriction{});
+  PeriodMap::Run run = period_map.start(start);
   StopWatch watch(friction.x_mu(), targets, r);
   watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
   const double P_segments = pwc->period();
-  long long n_first = s.period_index;
+  long long n_first = run.exact_state().period_index;
   if (static_cast<double>(n_first) * P_segments + phase <= start.t) ++n_first;
   ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};
   long long look = n_first;
   auto advance_to_look = [&] {  // the next look (phase t1)
-    advance_exact(setup, s, static_cast<double>(look++) * P_segments + phase, &watch);
+    run.advance_to(static_cast<double>(look++) * P_segments + phase, &watch);
   };
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
     advance_to_look();
-    const ObjectState& obj = s.object;
+    const ObjectState& obj = run.state();
     if (obj.x == previous.x && obj.xd == previous.xd) break;  // periodic orbit, not a stop
     previous = obj;
     if (obj.xd != 0 || obj.x < friction.x_mu()) continue;
@@ -141,7 +141,7 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
     for (int k = 0; k < o.max_periods; ++k) {
       bool pending = false;
       for (double target : targets)
-        pending = pending || (s.object.x < target && target < r.end_position);
+        pending = pending || (run.state().x < target && target < r.end_position);
       if (!pending) break;
       advance_to_look();
     }

@@ -99,12 +99,12 @@ std::unique_ptr<TableProfile> ThreePhaseFamily::make(double period, double strok
   return std::make_unique<ThreePhaseProfile>(p);
 }
 
-ScaledShapeFamily::ScaledShapeFamily(PiecewiseConstantProfile shape) : shape_(std::move(shape)) {}
+ScaledShapeFamily::ScaledShapeFamily(PiecewisePolynomialProfile shape) : shape_(std::move(shape)) {}
 
 ScaledShapeFamily ScaledShapeFamily::paper_like() {
   const double durations[3] = {0.35, 0.35, 0.30}, accels[3] = {0.0, -6.0 / 7.0, 1.0};
   return ScaledShapeFamily(
-      PiecewiseConstantProfile::from_accelerations(durations, accels, "scaled-shape"));
+      PiecewisePolynomialProfile::from_accelerations(durations, accels, "scaled-shape"));
 }
 
 std::unique_ptr<TableProfile> ScaledShapeFamily::make(double period, double stroke) const {
@@ -118,8 +118,8 @@ std::unique_ptr<TableProfile> ScaledShapeFamily::make(double period, double stro
     durations.push_back(s.duration * time_scale);
     accels.push_back(s.accel * accel_scale);
   }
-  return std::make_unique<PiecewiseConstantProfile>(
-      PiecewiseConstantProfile::from_accelerations(durations, accels, "scaled-shape"));
+  return std::make_unique<PiecewisePolynomialProfile>(
+      PiecewisePolynomialProfile::from_accelerations(durations, accels, "scaled-shape"));
 }
 
 ScaledFourierFamily::ScaledFourierFamily(std::vector<double> cos_coeffs,

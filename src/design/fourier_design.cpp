@@ -90,7 +90,7 @@ class FourierEvaluator {
       accels_[static_cast<std::size_t>(i)] =
           p.scale * (buf_[static_cast<std::size_t>((i + 1) % m_)] - buf_[static_cast<std::size_t>(i)]) / h;
     const auto profile =
-        PiecewiseConstantProfile::from_accelerations(durations_, accels_, "fourier-approximation");
+        PiecewisePolynomialProfile::from_accelerations(durations_, accels_, "fourier-approximation");
     p.v_bar = trusted_v_bar(steady_state(profile), max_abs_velocity(profile), l_.period);
     p.valid = std::isfinite(p.v_bar);
     return p;
@@ -148,7 +148,7 @@ void normalise(std::vector<double>& x) {
 
 }  // namespace
 
-PiecewiseConstantProfile fourier_approximation(const TableProfile& profile, int segments) {
+PiecewisePolynomialProfile fourier_approximation(const TableProfile& profile, int segments) {
   if (segments < 2)
     throw InvalidParameter("approximation_segments", static_cast<double>(segments),
                            "must be >= 2");
@@ -157,7 +157,7 @@ PiecewiseConstantProfile fourier_approximation(const TableProfile& profile, int 
   for (int i = 0; i < segments; ++i) v[static_cast<std::size_t>(i)] = profile.velocity(i * h);
   std::vector<double> d(v.size(), h), a(v.size());
   for (std::size_t i = 0; i < v.size(); ++i) a[i] = (v[(i + 1) % v.size()] - v[i]) / h;
-  return PiecewiseConstantProfile::from_accelerations(d, a, "fourier-approximation");
+  return PiecewisePolynomialProfile::from_accelerations(d, a, "fourier-approximation");
 }
 
 SteadyState approximate_steady_state(const TableProfile& profile, int segments) {
@@ -172,7 +172,7 @@ double max_abs_velocity(const FourierProfile& profile) {
   return std::max(-e.min, e.max);
 }
 
-void fourier_series_of(const PiecewiseConstantProfile& profile, int order,
+void fourier_series_of(const PiecewisePolynomialProfile& profile, int order,
                        std::vector<double>& cos_coeffs, std::vector<double>& sin_coeffs) {
   const double dt = profile.period(), w = 2 * std::numbers::pi / dt;
   const auto segs = profile.segments();
@@ -230,7 +230,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   const OptimizationResult three = three_phase_seed(l, o, three_phase_start, r.evaluations);
   if (three.feasible) {
     std::vector<double> a, b;
-    fourier_series_of(*rebuild_profile(three)->piecewise_constant(), n, a, b);
+    fourier_series_of(*rebuild_profile(three)->piecewise_polynomial(), n, a, b);
     a.insert(a.end(), b.begin(), b.end());
     normalise(a);
     starts.push_back(std::move(a));

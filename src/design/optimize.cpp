@@ -5,7 +5,7 @@
 #include "selfalign/design/three_phase_design.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
 namespace selfalign {
@@ -49,7 +49,7 @@ std::unique_ptr<TableProfile> rebuild_profile(const OptimizationResult& r) {
         ThreePhaseParameters{r.limits.period, r.limits.stroke, x[0], x[1]});
   if (r.family == "piecewise-constant" && x.size() >= 4 && x.size() % 2 == 0) {
     const std::size_t k = x.size() / 2;
-    return std::make_unique<PiecewiseConstantProfile>(PiecewiseConstantProfile::from_accelerations(
+    return std::make_unique<PiecewisePolynomialProfile>(PiecewisePolynomialProfile::from_accelerations(
         std::span<const double>(x.data(), k), std::span<const double>(x.data() + k, k),
         "piecewise-constant"));
   }

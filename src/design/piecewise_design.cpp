@@ -43,7 +43,7 @@ std::vector<double> embed_segments(std::vector<double> d, std::vector<double> a,
 // A three-phase optimum as a K-segment start (K >= 3).
 std::vector<double> embed_three_phase(const OptimizationResult& three, int k) {
   const auto profile = rebuild_profile(three);
-  const auto segs = profile->piecewise_constant()->segments();
+  const auto segs = profile->piecewise_polynomial()->segments();
   std::vector<double> d, a;
   for (std::size_t i = 0; i < segs.size(); ++i) {
     const double end = i + 1 < segs.size() ? segs[i + 1].begin : profile->period();
@@ -75,13 +75,13 @@ bool piecewise_design_profile(const ActuatorLimits& l, std::span<const double> x
   if (!(amax > 1e-9)) return false;
   for (double& a : accels) a /= amax;
   // The stroke is linear in a common acceleration scale at fixed durations.
-  const double s = PiecewiseConstantProfile::from_accelerations(durations, accels).stroke();
+  const double s = PiecewisePolynomialProfile::from_accelerations(durations, accels).stroke();
   if (!(s > 0)) return false;
   for (double& a : accels) a *= l.stroke / s;
   return true;
 }
 
-double max_abs_velocity(const PiecewiseConstantProfile& profile) {
+double max_abs_velocity(const PiecewisePolynomialProfile& profile) {
   double m = 0;  // y' is piecewise linear and periodic: its extrema are at segment starts
   for (const AccelerationSegment& s : profile.segments()) m = std::max(m, std::abs(s.yd));
   return m;
@@ -151,7 +151,7 @@ OptimizationResult optimize_segments(const ActuatorLimits& l, const OptimizeOpti
       e.constraints = {1.0, 1.0};
       return e;
     }
-    const auto profile = PiecewiseConstantProfile::from_accelerations(d, a, "piecewise-constant");
+    const auto profile = PiecewisePolynomialProfile::from_accelerations(d, a, "piecewise-constant");
     e.objective = design_objective(
         trusted_v_bar(steady_state(profile), max_abs_velocity(profile), l.period), l.period,
         l.stroke);
@@ -188,7 +188,7 @@ OptimizationResult optimize_segments(const ActuatorLimits& l, const OptimizeOpti
   }
   std::vector<double> d, a;
   piecewise_design_profile(l, best.x, d, a);
-  const auto profile = PiecewiseConstantProfile::from_accelerations(d, a, "piecewise-constant");
+  const auto profile = PiecewisePolynomialProfile::from_accelerations(d, a, "piecewise-constant");
   const SteadyState st = steady_state(profile);
   r.parameters = d;
   r.parameters.insert(r.parameters.end(), a.begin(), a.end());

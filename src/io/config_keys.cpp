@@ -19,7 +19,7 @@ const ConfigKey kKeys[] = {
     {"units", &C::units, D::none, "", "", "run",
      "unit system of every input and output: dimensionless (Sect. 3.2) or si"},
     {"method", &C::method, D::none, "", "", "run",
-     "solver: exact (event-driven; piecewise-constant y'' only) or time-stepping (Moreau)"},
+     "solver: exact (event-driven; piecewise-constant or piecewise-linear y'') or time-stepping (Moreau)"},
     {"profile", &C::profile, D::none, "", "", "profile",
      "table motion: three-phase (Sect. 4.4.3), quadratic-sequence (durations, accelerations), "
      "fourier (fourier_cos, fourier_sin), samples (CSV file)"},

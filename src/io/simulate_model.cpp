@@ -2,7 +2,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/sampled.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
@@ -36,8 +36,8 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem u
     if (c.durations->empty())
       throw InvalidParameter("durations", "none",
                              "must list the segment durations when profile = quadratic-sequence");
-    return std::make_unique<PiecewiseConstantProfile>(
-        PiecewiseConstantProfile::from_accelerations(*c.durations, *c.accelerations));
+    return std::make_unique<PiecewisePolynomialProfile>(
+        PiecewisePolynomialProfile::from_accelerations(*c.durations, *c.accelerations));
   }
   if (kind == "fourier")
     return std::make_unique<FourierProfile>(*c.period, *c.fourier_cos, *c.fourier_sin);

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
 namespace selfalign {
@@ -34,7 +34,7 @@ json profile_json(const TableProfile& p, const OutputUnits& u) {
     for (double s : fp->sin_coeffs()) sin.push_back(u.length(s));
     j["fourier_cos"] = cos;
     j["fourier_sin"] = sin;
-  } else if (const PiecewiseConstantProfile* pc = p.piecewise_constant()) {
+  } else if (const PiecewisePolynomialProfile* pc = p.piecewise_polynomial()) {
     json durations = json::array(), accelerations = json::array();
     const auto segments = pc->segments();
     for (const AccelerationSegment& s : segments) {

@@ -9,7 +9,7 @@
 #include "periodic_extrema.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -110,8 +110,8 @@ std::unique_ptr<TableProfile> make_sampled_profile(const AccelerationSamples& s,
     durations.push_back(s.t[i + 1] - s.t[i]);
     accels.push_back(s.ydd[i]);
   }
-  return std::make_unique<PiecewiseConstantProfile>(
-      PiecewiseConstantProfile::from_accelerations(durations, accels, "samples-constant"));
+  return std::make_unique<PiecewisePolynomialProfile>(
+      PiecewisePolynomialProfile::from_accelerations(durations, accels, "samples-constant"));
 }
 
 LinearAccelerationProfile::LinearAccelerationProfile(const AccelerationSamples& s)

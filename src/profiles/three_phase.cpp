@@ -38,7 +38,7 @@ ThreePhaseSolution solve_three_phase(const ThreePhaseParameters& p) {
 }
 
 namespace {
-PiecewiseConstantProfile three_phase_shape(const ThreePhaseParameters& p,
+PiecewisePolynomialProfile three_phase_shape(const ThreePhaseParameters& p,
                                            const ThreePhaseSolution& r) {
   if (!r.physical)
     throw InvalidParameter(
@@ -50,7 +50,7 @@ PiecewiseConstantProfile three_phase_shape(const ThreePhaseParameters& p,
   // difference would carry Δt's rounding into the net velocity change -y2''(t2-t1) + y3''(t3-t2).
   const double durations[3] = {r.t1, r.velocity_swing / p.a2, r.velocity_swing / p.a3};
   const double accels[3] = {0.0, -p.a2, p.a3};
-  return PiecewiseConstantProfile::from_accelerations(durations, accels, "three-phase");
+  return PiecewisePolynomialProfile::from_accelerations(durations, accels, "three-phase");
 }
 }  // namespace
 

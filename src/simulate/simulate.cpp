@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "selfalign/error.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
@@ -33,9 +33,9 @@ class Runner {
 
 class ExactRunner final : public Runner {
  public:
-  ExactRunner(const PiecewiseConstantProfile& p, const PiecewiseAffineFriction& f,
-              const ObjectState& s0)
-      : setup_{p, f}, state_(make_exact_state(setup_, s0)) {}
+  ExactRunner(const PiecewisePolynomialProfile& p, const PiecewiseAffineFriction& f,
+              const CoulombFriction& law, const ObjectState& s0)
+      : setup_{p, f, law}, state_(make_exact_state(setup_, s0)) {}
   ObjectState advance_to(double t) override {
     work_ += advance_exact(setup_, state_, t);
     return state_.object;
@@ -50,13 +50,14 @@ class ExactRunner final : public Runner {
 
 class SteppingRunner final : public Runner {
  public:
-  SteppingRunner(const TableProfile& p, const FrictionMap& f, const TimeSteppingOptions& o,
-                 const ObjectState& s0)
-      : profile_(p), friction_(f), options_(o), state_(make_time_stepping_state(p, s0)) {}
+  SteppingRunner(const TableProfile& p, const FrictionMap& f, const CoulombFriction& law,
+                 const TimeSteppingOptions& o, const ObjectState& s0)
+      : profile_(p), friction_(f), law_(law), options_(o), state_(make_time_stepping_state(p, s0)) {}
   ObjectState advance_to(double t) override {
     const long long target = std::llround((t - state_.t0) / options_.step);
     if (target > state_.step_index)
-      advance_time_stepping(profile_, friction_, options_, state_, target - state_.step_index);
+      advance_time_stepping(profile_, friction_, law_, options_, state_,
+                            target - state_.step_index);
     return state_.object;
   }
   std::size_t work() const override { return static_cast<std::size_t>(state_.step_index); }
@@ -64,6 +65,7 @@ class SteppingRunner final : public Runner {
  private:
   const TableProfile& profile_;
   const FrictionMap& friction_;
+  CoulombFriction law_;
   TimeSteppingOptions options_;
   TimeSteppingState state_;
 };
@@ -81,6 +83,12 @@ double require_simulatable_duration(const std::string& name, double duration, do
 
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const ObjectState& initial, const SimulationOptions& o) {
+  return simulate(profile, friction, CoulombFriction{}, initial, o);
+}
+
+SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
+                          const CoulombFriction& law, const ObjectState& initial,
+                          const SimulationOptions& o) {
   require_simulatable_duration("duration", o.duration, profile.period());
   require_non_negative("output_step", o.output_step);
   if (!(std::abs(initial.t) <= kMaxSimulatedPeriods * profile.period()))
@@ -91,16 +99,16 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   std::unique_ptr<Runner> runner;
   double grid = o.output_step;
   if (o.method == Method::exact) {
-    const PiecewiseConstantProfile* p = profile.piecewise_constant();
+    const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
     const PiecewiseAffineFriction* f = friction.piecewise_affine();
     if (!p)
       throw InvalidParameter("method", "exact",
-                             "needs a piecewise-constant acceleration profile (" + profile.kind() +
+                             "needs a piecewise-constant or piecewise-linear acceleration profile (" + profile.kind() +
                                  " is not); use time-stepping");
     if (!f)
       throw InvalidParameter("method", "exact",
                              "needs a piecewise-affine friction map; use time-stepping");
-    runner = std::make_unique<ExactRunner>(*p, *f, initial);
+    runner = std::make_unique<ExactRunner>(*p, *f, law, initial);
     if (grid == 0) grid = profile.period() / 200;
   } else {
     validate(ts);
@@ -115,7 +123,7 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
     // Whole steps fill the run exactly: h' = duration / ceil(duration / h) <= h, so the run ends
     // at t0 + duration, not up to h/2 beside it (1e-9: a ratio that is whole up to rounding).
     ts.step = o.duration / std::ceil(o.duration / o.step - 1e-9);
-    runner = std::make_unique<SteppingRunner>(profile, friction, ts, initial);
+    runner = std::make_unique<SteppingRunner>(profile, friction, law, ts, initial);
     if (grid == 0) grid = ts.step;
     grid = std::max(1.0, std::round(grid / ts.step)) * ts.step;  // a whole number of steps
   }

@@ -24,9 +24,11 @@ TimeSteppingState make_time_stepping_state(const TableProfile& profile, const Ob
 }
 
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
-                           const TimeSteppingOptions& o, TimeSteppingState& state,
-                           long long steps, StepSink* sink) {
+                           const CoulombFriction& law, const TimeSteppingOptions& o,
+                           TimeSteppingState& state, long long steps, StepSink* sink) {
   const double h = o.step, theta = o.theta;
+  const double s = law.static_coefficient(), kf = law.kinetic_forward(),
+               kb = law.kinetic_backward();
   double x = state.object.x, v = state.object.xd, yd = state.table_velocity;
   long long k = state.step_index;
   for (long long i = 0; i < steps; ++i) {
@@ -34,11 +36,14 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
     const double t = state.t0 + static_cast<double>(k) * h;
     const double yd1 = profile.velocity(t);
     const double x_mid = x + 0.5 * h * v;
-    const double impulse = h * friction.bound(x_mid);  // largest friction impulse
-    const double v_free = v - (yd1 - yd);              // velocity without friction
+    const double m = friction.bound(x_mid);
+    const double v_free = v - (yd1 - yd);  // velocity without friction
+    // Largest friction impulses: static to hold or catch, kinetic while sliding on.
+    const bool sliding_on = (v > 0 && v_free > 0) || (v < 0 && v_free < 0);
+    const double hold = h * ((sliding_on ? (v_free > 0 ? kf : kb) : s) * m);
     double v1 = 0;
-    if (v_free > impulse) v1 = v_free - impulse;
-    else if (v_free < -impulse) v1 = v_free + impulse;
+    if (v_free > hold) v1 = v_free - h * (kf * m);
+    else if (v_free < -hold) v1 = v_free + h * (kb * m);
     x += h * ((1 - theta) * v + theta * v1);
     v = v1;
     yd = yd1;

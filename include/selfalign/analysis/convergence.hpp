@@ -15,6 +15,8 @@
 
 #include "selfalign/profiles/table_profile.hpp"
 
+#include "selfalign/friction/coulomb_friction.hpp"
+
 namespace selfalign {
 
 /// A maximal time interval on which the selected friction forces are equal (v̂1 = v̂2, the
@@ -44,6 +46,10 @@ struct ConvergenceOptions {
 /// Runs both trajectories with the exact solver (the profile must be piecewise constant).
 /// Throws InvalidParameter otherwise or on bad options.
 VelocityConvergence velocity_convergence(const TableProfile& profile,
+                                         const ConvergenceOptions& options = {});
+/// The same under `law` (static >= kinetic, direction-dependent kinetic; any
+/// piecewise-polynomial profile, finite jerk included).
+VelocityConvergence velocity_convergence(const TableProfile& profile, const CoulombFriction& law,
                                          const ConvergenceOptions& options = {});
 
 }  // namespace selfalign

@@ -25,6 +25,8 @@
 
 namespace selfalign {
 
+class PeriodMap;
+
 /// A monodromy matrix Φ(t0 + Δt, t0) acting on (Δx, Δx') and its eigenvalues.
 struct Monodromy {
   Eigen::Matrix2d matrix = Eigen::Matrix2d::Identity();
@@ -54,6 +56,12 @@ struct FloquetAnalysis {
 /// Throws InvalidParameter for other profiles or bad options. The analytic matrix needs the
 /// three-phase parameters: use the ThreePhaseProfile overload.
 FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FloquetOptions& options = {});
+/// Saltation and finite differences on the uniform table under `law` (any piecewise-polynomial
+/// profile, finite jerk included; the analytic matrix needs the paper's law and profile).
+FloquetAnalysis floquet_multipliers(const TableProfile& profile, const CoulombFriction& law,
+                                    const FloquetOptions& options = {});
+/// Saltation and finite differences of a period map's steady state (exact maps only).
+FloquetAnalysis floquet_multipliers(const PeriodMap& map, const FloquetOptions& options = {});
 FloquetAnalysis floquet_multipliers(const ThreePhaseProfile& profile,
                                     const FloquetOptions& options = {});
 

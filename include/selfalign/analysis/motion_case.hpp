@@ -43,9 +43,17 @@ struct MotionCensus final : ArcSink {
   int stick = 0;     ///< stick arcs of positive length
   int forward = 0;   ///< forward-slip arcs (x' > 0)
   int backward = 0;  ///< backward-slip arcs (x' < 0)
+  /// The window's classes in time order, consecutive repeats merged: 0 stick, +1, -1 slip.
+  std::string sequence;
   void on_arc(const Arc& a) override;
   /// Table 1 case of the window: 5 only stick, 4 no stick, 1 no backward, 2 no forward, else 3.
   StickSlipCase motion_case() const;
+  /// The window's stick/slip sequence as a cyclic pattern (a period: the first class merged
+  /// with the last when equal), rotated to start at a stick where there is one: e.g.
+  /// "stick,forward", "stick,forward,backward", "forward,backward", "stick,forward,stick,
+  /// backward" (a pattern Table 1 has no name for: two sticks a period, possible with
+  /// static > kinetic or finite jerk). Empty for an empty window.
+  std::string pattern() const;
 };
 
 }  // namespace selfalign

@@ -13,11 +13,16 @@
 /// residual from falling further, at that floor. Exact solver where the table acceleration is
 /// piecewise constant, time-stepping otherwise.
 
+#include <string>
+
 #include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/simulate.hpp"
 
 namespace selfalign {
+
+class PeriodMap;
 
 /// The normalising constant c of eq. (11).
 inline constexpr double kObjectiveScale = 10'000.0;
@@ -51,9 +56,20 @@ struct SteadyState {
   /// A posteriori Table 1 case of the steady period: from the exact arcs, or from the
   /// time-stepping samples (stick where x' = 0 for two or more consecutive steps, slip by sign).
   StickSlipCase motion_case = StickSlipCase::pure_stick;
+  /// The steady period's stick/slip sequence, cyclic and compressed (MotionCensus::pattern):
+  /// e.g. "stick,forward,backward" (Table 1 case 3) or "forward,backward" (case 4).
+  std::string pattern;
 };
 
-/// Steady state on the uniform table (friction bound 1). Throws InvalidParameter on bad options.
+/// Steady state on the uniform table (friction level 1) under the paper's law. Throws
+/// InvalidParameter on bad options.
 SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& options = {});
+/// Steady state on the uniform table under `law` (static >= kinetic, direction-dependent).
+SteadyState steady_state(const TableProfile& profile, const CoulombFriction& law,
+                         const SteadyStateOptions& options = {});
+/// Steady state of any period map (its friction level should not vary along the path: the
+/// steady state is of the velocity; x is started at 0). options.steps_per_period and theta are
+/// the map's own.
+SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& options = {});
 
 }  // namespace selfalign

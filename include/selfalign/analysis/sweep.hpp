@@ -16,7 +16,7 @@
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -90,7 +90,7 @@ class ThreePhaseFamily final : public ProfileFamily {
 /// Δt, accelerations with Δy / Δt^2.
 class ScaledShapeFamily final : public ProfileFamily {
  public:
-  explicit ScaledShapeFamily(PiecewiseConstantProfile shape);
+  explicit ScaledShapeFamily(PiecewisePolynomialProfile shape);
   /// The default shape: three-phase-like fractions (0.35, 0.35, 0.30) of the period with
   /// accelerations (0, -6/7, +1), i.e. velocity-periodic (0.35·6/7 = 0.30·1).
   static ScaledShapeFamily paper_like();
@@ -98,7 +98,7 @@ class ScaledShapeFamily final : public ProfileFamily {
   std::string name() const override { return "scaled-shape"; }
 
  private:
-  PiecewiseConstantProfile shape_;
+  PiecewisePolynomialProfile shape_;
 };
 
 /// One Fourier shape (Sect. 4.4.2) with its coefficients scaled to the stroke: the members

@@ -27,13 +27,13 @@
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/design/optimize.hpp"
 #include "selfalign/profiles/fourier.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
 /// The M-segment piecewise-constant approximation of any profile described above
 /// (segments >= 2; throws InvalidParameter otherwise).
-PiecewiseConstantProfile fourier_approximation(const TableProfile& profile, int segments);
+PiecewisePolynomialProfile fourier_approximation(const TableProfile& profile, int segments);
 
 /// Steady state of the M-segment approximation (exact solver).
 SteadyState approximate_steady_state(const TableProfile& profile, int segments);
@@ -43,7 +43,7 @@ double max_abs_velocity(const FourierProfile& profile);
 
 /// Fourier coefficients (A, B) of order `order` of a piecewise-constant profile's y, with
 /// Lanczos sigma factors to damp the Gibbs overshoot of y''.
-void fourier_series_of(const PiecewiseConstantProfile& profile, int order,
+void fourier_series_of(const PiecewisePolynomialProfile& profile, int order,
                        std::vector<double>& cos_coeffs, std::vector<double>& sin_coeffs);
 
 /// Optimises order N = options.order. When three_phase_start is given and feasible it seeds

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "selfalign/design/optimize.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -31,7 +31,7 @@ bool piecewise_design_profile(const ActuatorLimits& limits, std::span<const doub
                               std::vector<double>& durations, std::vector<double>& accels);
 
 /// max |y'| over the period of a piecewise-constant profile: at its segment ends (exact).
-double max_abs_velocity(const PiecewiseConstantProfile& profile);
+double max_abs_velocity(const PiecewisePolynomialProfile& profile);
 
 /// Optimises K = options.segments segments, after K - 1, ..., 2 (each started from the one
 /// before); when three_phase_start is given and feasible, it is a start of K = 3 (else the

@@ -11,7 +11,7 @@
 
 namespace selfalign {
 
-class PiecewiseConstantProfile;
+class PiecewisePolynomialProfile;
 
 /// Table position, velocity and acceleration at one time [-].
 struct TableState {
@@ -37,9 +37,10 @@ class TableProfile {
   virtual double stroke() const = 0;
   /// Short family name ("three-phase", "fourier", ...), for summaries.
   virtual std::string kind() const = 0;
-  /// The profile as a piecewise-constant acceleration, when it is one (then the exact
-  /// event-driven solver applies); nullptr otherwise.
-  virtual const PiecewiseConstantProfile* piecewise_constant() const { return nullptr; }
+  /// The profile as a piecewise-polynomial acceleration of degree <= 1 (piecewise constant or
+  /// piecewise linear in time), when it is one (then the exact event-driven solver applies);
+  /// nullptr otherwise.
+  virtual const PiecewisePolynomialProfile* piecewise_polynomial() const { return nullptr; }
 };
 
 }  // namespace selfalign

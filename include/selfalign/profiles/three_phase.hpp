@@ -19,7 +19,7 @@
 
 #include <string>
 
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -67,12 +67,12 @@ class ThreePhaseProfile final : public TableProfile {
   double peak_acceleration() const override { return shape_.peak_acceleration(); }
   double stroke() const override { return shape_.stroke(); }
   std::string kind() const override { return "three-phase"; }
-  const PiecewiseConstantProfile* piecewise_constant() const override { return &shape_; }
+  const PiecewisePolynomialProfile* piecewise_polynomial() const override { return &shape_; }
 
  private:
   ThreePhaseParameters params_;
   ThreePhaseSolution solution_;
-  PiecewiseConstantProfile shape_;
+  PiecewisePolynomialProfile shape_;
 };
 
 }  // namespace selfalign

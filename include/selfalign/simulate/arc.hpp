@@ -1,49 +1,128 @@
 #pragma once
 /// \file arc.hpp
-/// One closed-form piece of the exact solution: between two events the table acceleration A,
-/// the slip direction sigma and the friction piece m(x) = m0 + k (x - x_b) are fixed, and
-/// eq. (6) with the map of eqs. (7)-(9) reads   x'' = -sigma m(x) - A,   an ODE with constant
-/// coefficients:
-///   k = 0           parabolic arc, x'' = alpha                          (eqs. 12-24)
-///   -sigma k < 0    harmonic arc,  x'' = -omega^2 (x - x_e)             (eqs. 42-47)
-///   -sigma k > 0    hyperbolic arc, x'' = +omega^2 (x - x_e)  (backward slip on rising friction)
-///   stick           x' = 0, x constant (|A| <= m(x))
+/// One closed-form piece of the exact solution. Between two events the table acceleration is
+/// affine in time, A(tau) = A0 + J tau (J = 0 for the paper's profiles), the motion is either
+/// stick or slip in one direction sigma, and the friction level is one affine piece
+/// m(x) = m0 + k (x - x0) of the table's field averaged over the object's footprint. With the
+/// Coulomb law (coulomb_friction.hpp) eq. (6) then reads
+///   slip:   x'' = -sigma k_sigma m(x) - A0 - J tau          (a linear ODE, constant coefficients)
+///   stick:  x' = 0, x constant, while |A0 + J tau| <= s m(x)
+/// and its solution is one of a closed set of shapes, an ArcShape:
+///   StickArc        x constant
+///   PolynomialArc   k = 0:  x'' = a + b tau (parabolic for b = 0: eqs. 12-24; cubic in x with
+///                   finite jerk)
+///   HarmonicArc     kappa = sigma k_sigma k > 0: x'' = -omega^2 (x - c - d tau)  (eqs. 42-47;
+///                   d = 0 for constant A: the drift of the centre comes from the jerk)
+///   HyperbolicArc   kappa < 0: x'' = +omega^2 (x - c - d tau) (slip against rising friction)
+/// Each shape supplies its state at tau, its acceleration and its state-transition matrix; the
+/// exact solver, the saltation-matrix Floquet method and every analysis use these through
+/// std::visit, never through a switch on a kind.
 
 #include <cstddef>
 #include <cstdint>
+#include <variant>
 
 #include "selfalign/simulate/object_state.hpp"
 
 namespace selfalign {
 
+/// Position and velocity relative to the table [-].
+struct PosVel {
+  double x, xd;
+};
+
+/// The 2x2 state-transition matrix d(x, x')(t1) / d(x, x')(t0) of one arc, row-major.
+struct Transition {
+  double xx = 1, xv = 0, vx = 0, vv = 1;
+};
+
+/// The object sticks to the table: x' = 0, x constant.
+struct StickArc {
+  PosVel state(double x0, double, double) const noexcept { return {x0, 0.0}; }
+  double acceleration(double, double, double) const noexcept { return 0.0; }
+  /// A stuck object forgets a velocity perturbation.
+  Transition transition(double) const noexcept { return {1, 0, 0, 0}; }
+};
+
+/// Slip on a constant friction piece: x'' = accel + jerk tau (eqs. 15-20; cubic for jerk != 0).
+struct PolynomialArc {
+  double accel = 0;  ///< x'' at the arc's start [-]
+  double jerk = 0;   ///< x''' on the arc (= -J, the table's jerk reversed) [-]
+
+  PosVel state(double x0, double v0, double tau) const noexcept {
+    if (jerk == 0) return {x0 + tau * (v0 + 0.5 * accel * tau), v0 + accel * tau};
+    return {x0 + tau * (v0 + tau * (0.5 * accel + tau * jerk / 6.0)),
+            v0 + tau * (accel + 0.5 * jerk * tau)};
+  }
+  double acceleration(double, double, double tau) const noexcept { return accel + jerk * tau; }
+  Transition transition(double tau) const noexcept { return {1, tau, 0, 1}; }
+};
+
+/// Slip on falling friction (or forward on rising friction): x'' = -omega^2 (x - c(tau)),
+/// c(tau) = center + drift tau (eqs. 43-47 for drift = 0).
+struct HarmonicArc {
+  double omega = 1;   ///< [-], > 0
+  double center = 0;  ///< c(0) [-]
+  double drift = 0;   ///< dc/dtau [-]; nonzero only under finite jerk
+
+  PosVel state(double x0, double v0, double tau) const noexcept;
+  double acceleration(double x, double, double tau) const noexcept {
+    return -omega * omega * (x - center - drift * tau);
+  }
+  Transition transition(double tau) const noexcept;
+};
+
+/// Slip against rising friction: x'' = +omega^2 (x - c(tau)), c(tau) = center + drift tau.
+struct HyperbolicArc {
+  double omega = 1;
+  double center = 0;
+  double drift = 0;
+
+  PosVel state(double x0, double v0, double tau) const noexcept;
+  double acceleration(double x, double, double tau) const noexcept {
+    return omega * omega * (x - center - drift * tau);
+  }
+  Transition transition(double tau) const noexcept;
+};
+
+/// The closed set of arc shapes. Add a shape here (with state, acceleration, transition and
+/// its events in src/simulate/arc_events.hpp) and every visitor must handle it.
+using ArcShape = std::variant<StickArc, PolynomialArc, HarmonicArc, HyperbolicArc>;
+
+/// The shape's index, for tables and bindings (ArcKind(shape.index())).
 enum class ArcKind : std::uint8_t { stick, parabolic, harmonic, hyperbolic };
 
 /// What ended an arc.
 enum class ArcEnd : std::uint8_t {
-  acceleration_switch,  ///< the table acceleration changed (segment end)
+  acceleration_switch,  ///< the table acceleration's segment ended
   velocity_zero,        ///< x' reached 0 (the stick/slip decision follows)
   friction_boundary,    ///< x reached the end of a friction piece (e.g. x_mu or x_mu + w)
-  horizon               ///< the requested end time
+  horizon,              ///< the requested end time
+  stick_break           ///< |y''| reached the static bound s m(x) inside a segment (finite jerk)
 };
 
 struct Arc {
   double t0 = 0, t1 = 0;    ///< start and end time [-]
   double x0 = 0, xd0 = 0;   ///< state at t0 [-]
   double x1 = 0, xd1 = 0;   ///< state at t1 [-]
-  double table_accel = 0;   ///< table acceleration A = y'' on the arc [-]
-  double bound0 = 0;        ///< friction bound m(x0) [-]
-  double slope = 0;         ///< friction slope k = dm/dx on the arc's piece [-]
-  double alpha = 0;         ///< parabolic: x'' [-]
-  double omega = 0;         ///< harmonic / hyperbolic: omega [-]
-  double center = 0;        ///< harmonic / hyperbolic: x_e [-]
-  ArcKind kind = ArcKind::stick;
+  double table_accel = 0;   ///< table acceleration A = y'' at t0 [-]
+  double table_jerk = 0;    ///< table jerk J = y''' on the arc [-]
+  double bound0 = 0;        ///< friction level m(x0) of the field over the footprint [-]
+  double slope = 0;         ///< dm/dx on the arc's friction piece [-]
+  ArcShape shape;           ///< the closed-form solution
   std::int8_t direction = 0;  ///< slip direction sigma: +1, -1, or 0 for stick
   ArcEnd end = ArcEnd::horizon;
   std::size_t segment = 0;  ///< index of the table-acceleration segment
   std::size_t piece = 0;    ///< index of the friction piece
 
+  ArcKind kind() const noexcept { return static_cast<ArcKind>(shape.index()); }
   /// The closed-form state at time t in [t0, t1].
   ObjectState at(double t) const noexcept;
+  /// x'' at the arc's start (right limit) and end (left limit), from (x0, xd0) and (x1, xd1).
+  double start_acceleration() const noexcept;
+  double end_acceleration() const noexcept;
+  /// State-transition matrix over [t0, t1].
+  Transition transition() const noexcept;
 };
 
 }  // namespace selfalign

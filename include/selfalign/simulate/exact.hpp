@@ -1,21 +1,26 @@
 #pragma once
 /// \file exact.hpp
-/// Exact event-driven solution of eq. (6) with a position-dependent friction bound (eq. 38)
-/// for a table whose acceleration is piecewise constant.
+/// Exact event-driven solution of eq. (6) with a position-dependent friction level (eq. 38)
+/// and a Coulomb law with static >= kinetic coefficients, for a table whose acceleration is
+/// piecewise polynomial of degree <= 1 (constant or affine in time on each segment).
 ///
-/// Between events the motion is one closed-form Arc (arc.hpp). Every event is located in
-/// closed form and polished by Newton steps on the same closed form:
-///   - table acceleration switches (segment ends): exact by construction;
+/// Between events the motion is one closed-form Arc (arc.hpp). Every event is located as a
+/// root of a closed form:
+///   - table segment ends: exact by construction;
 ///   - x' = 0: parabolic -x'/x'' (eq. 21); harmonic via atan2 (eq. 47, valid on all quadrants);
-///     hyperbolic via atanh;
+///     hyperbolic via atanh; under finite jerk, in the certified bracket between consecutive
+///     zeros of x'' (src/simulate/arc_events.hpp), where x' is monotone;
 ///   - entering or leaving a friction piece (x_mu, x_mu + w): a root of the arc's quadratic,
-///     cosine or exponential-quadratic;
-///   - at x' = 0 the set-valued law decides: stick if |y''| <= m(x), else slip in the direction
-///     of -y'' (eqs. 2, 6).
+///     cosine or exponential-quadratic, or under finite jerk in its certified bracket (x is
+///     monotone until x' = 0);
+///   - stick breaking inside a segment (finite jerk): |y''(t)| = s m(x), linear in t;
+///   - at x' = 0 the set-valued law decides: stick if |y''| <= s m(x) (static coefficient s),
+///     else slip in the direction of -y'' with the kinetic coefficient (eqs. 2, 6).
 /// Between events x is monotone, so exactly one friction boundary can be next.
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/friction/friction_map.hpp"
-#include "selfalign/profiles/piecewise_constant.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/arc.hpp"
 
 namespace selfalign {
@@ -28,10 +33,12 @@ class ArcSink {
 };
 
 /// The fixed system the exact solver integrates: a profile and a friction map, both borrowed
-/// (they must outlive the setup).
+/// (they must outlive the setup), and the friction law (the paper's static = kinetic = 1 by
+/// default).
 struct ExactSetup {
-  const PiecewiseConstantProfile& profile;
+  const PiecewisePolynomialProfile& profile;
   const PiecewiseAffineFriction& friction;
+  CoulombFriction law{};
 };
 
 /// Mutable state of the exact solver: the object state plus where it is in the profile.
@@ -53,7 +60,7 @@ std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_e
                           ArcSink* sink = nullptr);
 
 /// Is the object, at rest relative to the table at position x under table acceleration A,
-/// held by friction? The set-valued law (2): stick iff |A| <= m(x).
+/// held by friction? The set-valued law (2): stick iff |A| <= bound, the static bound s m(x).
 inline bool sticks(double table_accel, double bound) noexcept {
   return table_accel <= bound && -table_accel <= bound;
 }

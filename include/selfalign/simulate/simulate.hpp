@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <string>
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
@@ -12,7 +13,7 @@
 namespace selfalign {
 
 enum class Method {
-  exact,         ///< event-driven closed form (exact.hpp): piecewise-constant y'', piecewise-affine m(x)
+  exact,         ///< event-driven closed form (exact.hpp): piecewise-polynomial y'' (degree <= 1), piecewise-affine m(x)
   time_stepping  ///< Moreau time-stepping (time_stepping.hpp): any profile and friction map
 };
 
@@ -59,5 +60,9 @@ struct SimulationResult {
 /// before anything is allocated.
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const ObjectState& initial, const SimulationOptions& options);
+/// The same under a Coulomb law with static >= kinetic (direction-dependent) coefficients.
+SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
+                          const CoulombFriction& law, const ObjectState& initial,
+                          const SimulationOptions& options);
 
 }  // namespace selfalign

@@ -1,6 +1,7 @@
 #pragma once
 /// \file time_stepping.hpp
-/// Moreau's time-stepping method (Sect. 4.1) for eq. (6) with any TableProfile and FrictionMap.
+/// Moreau's time-stepping method (Sect. 4.1) for eq. (6) with any TableProfile, FrictionMap and
+/// Coulomb law.
 ///
 /// One step from t_k to t_{k+1} = t_k + h:
 ///   x_M      = x_k + (h/2) x'_k                              (midpoint: where friction is read)
@@ -11,9 +12,18 @@
 /// set-valued velocity equation has the closed-form solution (a projection, no fixed-point
 /// iteration): with v* = x'_k - Δy' and P = h m(x_M),
 ///   |v*| <= P  ->  x'_{k+1} = 0 (stick);   otherwise  x'_{k+1} = v* - P sign(v*).
+/// With static coefficient s above the kinetic k_sigma (coulomb_friction.hpp) the projection
+/// uses the static bound P_s = h s m(x_M) for sticking and the kinetic impulse
+/// P_k = h k_sigma m(x_M), sigma = sign(v*), for sliding:
+///   from rest or reversing (x'_k = 0 or sign v* != sign x'_k): stick iff |v*| <= P_s;
+///   sliding on (sign v* = sign x'_k):                           stop  iff |v*| <= P_k;
+///   otherwise x'_{k+1} = v* - P_k sigma.
+/// The scheme stays first order (tests/test_friction_law.cpp measures it); for s = k it is the
+/// projection above, term for term.
 
 #include <cstddef>
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
@@ -47,9 +57,15 @@ class StepSink {
 /// Starts a stepper at an object state.
 TimeSteppingState make_time_stepping_state(const TableProfile& profile, const ObjectState& object);
 
-/// Advances by `steps` steps; calls sink (if any) after each. Allocates nothing.
+/// Advances by `steps` steps under `law`; calls sink (if any) after each. Allocates nothing.
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
-                           const TimeSteppingOptions& options, TimeSteppingState& state,
-                           long long steps, StepSink* sink = nullptr);
+                           const CoulombFriction& law, const TimeSteppingOptions& options,
+                           TimeSteppingState& state, long long steps, StepSink* sink = nullptr);
+/// The same under the paper's law (static = kinetic = 1).
+inline void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
+                                  const TimeSteppingOptions& options, TimeSteppingState& state,
+                                  long long steps, StepSink* sink = nullptr) {
+  advance_time_stepping(profile, friction, CoulombFriction{}, options, state, steps, sink);
+}
 
 }  // namespace selfalign

@@ -1,0 +1,107 @@
+#pragma once
+/// \file period_map.hpp
+/// The one period map every analysis uses: a table profile, the friction level m(x) of the
+/// table's field over the object's footprint, and the friction law, integrated over one table
+/// period (or any horizon) by the exact solver when the profile's acceleration is piecewise
+/// polynomial and the level piecewise affine, by Moreau time-stepping otherwise.
+///
+///   P : (x, x') at t0  ->  (x, x') at t0 + Δt,
+/// with its arcs (exact), its stick/slip census, and its sensitivity dP/d(x, x'): the monodromy
+/// matrix by saltation (arcs' transition matrices coupled at events) or by central finite
+/// differences. Steady state, Floquet, convergence, stopping, positioning and the sweeps take a
+/// PeriodMap (or the profile and law to build one); none builds a friction law or a period loop
+/// itself.
+
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/simulate.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
+
+namespace selfalign {
+
+struct PeriodMapOptions {
+  /// Time-stepping (profiles or levels the exact solver cannot take): h = Δt / steps_per_period.
+  int steps_per_period = 4000;
+  double theta = 0.5;  ///< time-stepping theta, in [0, 1]
+};
+
+class PeriodMap {
+ public:
+  /// The uniform low-friction table (m = 1) under `law`. Borrows profile.
+  explicit PeriodMap(const TableProfile& profile, const CoulombFriction& law = {},
+                     const PeriodMapOptions& options = {});
+  /// A table whose level is `friction` (borrowed: it must outlive the map) under `law`.
+  PeriodMap(const TableProfile& profile, const FrictionMap& friction, const CoulombFriction& law,
+            const PeriodMapOptions& options = {});
+  PeriodMap(const PeriodMap&) = delete;
+  PeriodMap& operator=(const PeriodMap&) = delete;
+
+  const TableProfile& profile() const noexcept { return profile_; }
+  const FrictionMap& friction() const noexcept { return *friction_; }
+  const CoulombFriction& law() const noexcept { return law_; }
+  Method method() const noexcept { return exact_ ? Method::exact : Method::time_stepping; }
+  double period() const noexcept { return profile_.period(); }
+  /// Time-stepping step h [-] (0 when exact).
+  double step() const noexcept { return exact_ ? 0.0 : stepping_.step; }
+  const TimeSteppingOptions& stepping() const noexcept { return stepping_; }
+
+  /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only)
+  /// receives every arc; a census (either method) the stick/slip classes of the period.
+  ObjectState operator()(double x0, double v0, ArcSink* sink = nullptr,
+                         MotionCensus* census = nullptr) const;
+  /// The arcs of one period from (x0, x'0) at phase 0 (exact only; throws otherwise).
+  std::vector<Arc> arcs(double x0, double v0) const;
+  /// Monodromy matrix of the period from (x0, x'0) by saltation: the arcs' transition
+  /// matrices (arc.hpp) coupled by the saltation matrices of their events (exact only).
+  Eigen::Matrix2d saltation_monodromy(double x0, double v0) const;
+  /// Monodromy matrix by central finite differences of step h in x and x' (either method).
+  Eigen::Matrix2d finite_difference_monodromy(double x0, double v0, double h) const;
+
+  /// A run from `start` across as many periods as wanted (stopping, positioning, convergence).
+  class Run {
+   public:
+    /// Advances to t_end >= the current time; every arc goes to sink (exact only; the
+    /// time-stepping run takes whole steps, ending at the step nearest t_end).
+    const ObjectState& advance_to(double t_end, ArcSink* sink = nullptr);
+    const ObjectState& state() const noexcept;
+    /// The exact solver's state (segment and period index; exact only).
+    const ExactState& exact_state() const noexcept { return exact_; }
+
+   private:
+    friend class PeriodMap;
+    Run(const PeriodMap& map, const ObjectState& start);
+    const PeriodMap* map_;
+    ExactState exact_{};
+    TimeSteppingState stepping_{};
+  };
+  Run start(const ObjectState& state) const { return Run(*this, state); }
+
+  /// The exact solver's setup (exact only; throws otherwise).
+  const ExactSetup& exact_setup() const;
+
+ private:
+  const TableProfile& profile_;
+  std::unique_ptr<FrictionMap> owned_;
+  const FrictionMap* friction_;
+  CoulombFriction law_;
+  PeriodMapOptions options_;
+  TimeSteppingOptions stepping_;
+  std::unique_ptr<ExactSetup> exact_;
+};
+
+/// The saltation matrix at the end of arc `a` when arc `next` follows (Leine & Nijmeijer): the
+/// jump of the linearised flow across the event that ended `a`.
+///   velocity_zero:      [[1, 0], [0, a+/a-]]  (0 when next sticks)          (eqs. 28-31)
+///   friction_boundary:  [[1, 0], [(a+ - a-)/x', 1]]
+///   stick_break:        [[1, 0], [-a+ s k / (sign(A) J), 1]]  (k = dm/dx, J the table jerk)
+///   segment ends:       identity (the event time does not depend on the state)
+Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const CoulombFriction& law);
+
+}  // namespace selfalign

@@ -1,0 +1,194 @@
+#include "selfalign/analysis/period_map.hpp"
+
+#include <cmath>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
+
+namespace selfalign {
+
+namespace {
+
+struct ArcList final : ArcSink {
+  std::vector<Arc> arcs;
+  void on_arc(const Arc& a) override { arcs.push_back(a); }
+};
+
+struct CensusSink final : ArcSink {
+  ArcSink* inner;
+  MotionCensus* census;
+  void on_arc(const Arc& a) override {
+    if (census) census->on_arc(a);
+    if (inner) inner->on_arc(a);
+  }
+};
+
+// Time-stepping census: a stick counts once x' = 0 holds for two consecutive steps: a slip
+// reversal can land one step on x' = 0 (|v*| <= h m while the velocity crosses zero), which is
+// not a stick of the response.
+struct SampleCensus final : StepSink {
+  MotionCensus* census;
+  int zero_run = 0;
+  void on_step(const TimeSteppingState& s) override {
+    const double v = s.object.xd;
+    zero_run = v == 0 ? zero_run + 1 : 0;
+    if (v != 0 || zero_run == 2) {
+      Arc a;
+      a.t0 = s.object.t;
+      a.t1 = s.object.t + 1;  // a class sample, not a timed arc
+      if (v != 0) a.shape = PolynomialArc{};
+      a.direction = static_cast<std::int8_t>(v > 0 ? 1 : v < 0 ? -1 : 0);
+      census->on_arc(a);
+    }
+  }
+};
+
+}  // namespace
+
+PeriodMap::PeriodMap(const TableProfile& profile, const CoulombFriction& law,
+                     const PeriodMapOptions& options)
+    : profile_(profile),
+      owned_(std::make_unique<UniformFriction>(1.0)),
+      friction_(owned_.get()),
+      law_(law),
+      options_(options) {
+  const PiecewisePolynomialProfile* pwp = profile.piecewise_polynomial();
+  if (pwp) exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *friction_->piecewise_affine(), law_});
+  else {
+    if (options.steps_per_period < 1)
+      throw InvalidParameter("steps_per_period", options.steps_per_period, "must be >= 1");
+    stepping_ = {profile.period() / options.steps_per_period, options.theta};
+    validate(stepping_);
+  }
+}
+
+PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
+                     const CoulombFriction& law, const PeriodMapOptions& options)
+    : profile_(profile), friction_(&friction), law_(law), options_(options) {
+  const PiecewisePolynomialProfile* pwp = profile.piecewise_polynomial();
+  const PiecewiseAffineFriction* affine = friction.piecewise_affine();
+  if (pwp && affine) exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
+  else {
+    if (options.steps_per_period < 1)
+      throw InvalidParameter("steps_per_period", options.steps_per_period, "must be >= 1");
+    stepping_ = {profile.period() / options.steps_per_period, options.theta};
+    validate(stepping_);
+  }
+}
+
+const ExactSetup& PeriodMap::exact_setup() const {
+  if (!exact_)
+    throw InvalidParameter("profile", profile_.kind(),
+                           "needs a piecewise-constant or piecewise-linear table acceleration and a "
+                           "piecewise-affine friction level for the exact solver");
+  return *exact_;
+}
+
+ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
+                                  MotionCensus* census) const {
+  const double P = profile_.period();
+  if (exact_) {
+    ExactState s = make_exact_state(*exact_, {0, x0, v0});
+    if (census) {
+      CensusSink both;
+      both.inner = sink;
+      both.census = census;
+      advance_exact(*exact_, s, P, &both);
+    } else {
+      advance_exact(*exact_, s, P, sink);
+    }
+    return s.object;
+  }
+  TimeSteppingState s = make_time_stepping_state(profile_, {0, x0, v0});
+  SampleCensus samples;
+  samples.census = census;
+  advance_time_stepping(profile_, *friction_, law_, stepping_, s, options_.steps_per_period,
+                        census ? &samples : nullptr);
+  return s.object;
+}
+
+std::vector<Arc> PeriodMap::arcs(double x0, double v0) const {
+  const ExactSetup& setup = exact_setup();
+  ArcList list;
+  ExactState s = make_exact_state(setup, {0, x0, v0});
+  advance_exact(setup, s, profile_.period(), &list);
+  return std::move(list.arcs);
+}
+
+Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const CoulombFriction& law) {
+  Eigen::Matrix2d s = Eigen::Matrix2d::Identity();
+  switch (a.end) {
+    case ArcEnd::velocity_zero: {
+      const double before = a.end_acceleration(), after = next.start_acceleration();
+      s(1, 1) = next.kind() == ArcKind::stick || before == 0 ? 0.0 : after / before;
+      break;
+    }
+    case ArcEnd::friction_boundary:
+      if (a.xd1 != 0) s(1, 0) = (next.start_acceleration() - a.end_acceleration()) / a.xd1;
+      break;
+    case ArcEnd::stick_break: {
+      // h = s m(x) - sign(A) A(t): dh/dx = s k, dh/dt = -sign(A) J along the stick (x' = 0).
+      const double A = next.table_accel, J = a.table_jerk;
+      const double k = next.slope;
+      if (J != 0 && A != 0)
+        s(1, 0) = -next.start_acceleration() * law.static_coefficient() * k /
+                  (std::copysign(1.0, A) * J);
+      break;
+    }
+    case ArcEnd::acceleration_switch:
+    case ArcEnd::horizon:
+      break;
+  }
+  return s;
+}
+
+Eigen::Matrix2d PeriodMap::saltation_monodromy(double x0, double v0) const {
+  const std::vector<Arc> list = arcs(x0, v0);
+  Eigen::Matrix2d m = Eigen::Matrix2d::Identity();
+  // The arc that follows the period's last one is the next period's first.
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const Transition t = list[i].transition();
+    Eigen::Matrix2d phi;
+    phi << t.xx, t.xv, t.vx, t.vv;
+    m = phi * m;
+    const Arc& next = i + 1 < list.size() ? list[i + 1] : list.front();
+    m = saltation(list[i], next, law_) * m;
+  }
+  return m;
+}
+
+Eigen::Matrix2d PeriodMap::finite_difference_monodromy(double x0, double v0, double h) const {
+  Eigen::Matrix2d fd;
+  for (int col = 0; col < 2; ++col) {
+    const double dx = col == 0 ? h : 0, dv = col == 1 ? h : 0;
+    const ObjectState plus = (*this)(x0 + dx, v0 + dv);
+    const ObjectState minus = (*this)(x0 - dx, v0 - dv);
+    fd(0, col) = (plus.x - minus.x) / (2 * h);
+    fd(1, col) = (plus.xd - minus.xd) / (2 * h);
+  }
+  return fd;
+}
+
+PeriodMap::Run::Run(const PeriodMap& map, const ObjectState& start) : map_(&map) {
+  if (map.exact_) exact_ = make_exact_state(*map.exact_, start);
+  else stepping_ = make_time_stepping_state(map.profile_, start);
+}
+
+const ObjectState& PeriodMap::Run::state() const noexcept {
+  return map_->exact_ ? exact_.object : stepping_.object;
+}
+
+const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
+  if (map_->exact_) {
+    advance_exact(*map_->exact_, exact_, t_end, sink);
+    return exact_.object;
+  }
+  const double h = map_->stepping_.step;
+  const long long target = std::llround((t_end - stepping_.t0) / h);
+  if (target > stepping_.step_index)
+    advance_time_stepping(map_->profile_, *map_->friction_, map_->law_, map_->stepping_,
+                          stepping_, target - stepping_.step_index);
+  return stepping_.object;
+}
+
+}  // namespace selfalign
