@@ -45,7 +45,8 @@ void MotionCensus::on_arc(const Arc& a) {
 std::string MotionCensus::pattern() const {
   std::string cyc = sequence;
   if (cyc.size() > 1 && cyc.front() == cyc.back()) cyc.pop_back();
-  const std::size_t s = cyc.find('0');
+  std::size_t s = cyc.find('0');  // start at a stick, else at a forward slip
+  if (s == std::string::npos) s = cyc.find('+');
   if (s != std::string::npos) std::rotate(cyc.begin(), cyc.begin() + static_cast<long>(s), cyc.end());
   std::string out;
   for (char c : cyc) {

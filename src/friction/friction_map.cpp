@@ -1,5 +1,6 @@
 #include "selfalign/friction/friction_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -35,15 +36,18 @@ PiecewiseAffineFriction::PiecewiseAffineFriction(std::span<const AffinePiece> pi
     const double at_end = std::isinf(p.end) ? p.bound_at_begin : p.bound(p.end);
     if (p.bound_at_begin < 0.0 || at_end < 0.0)
       throw InvalidParameter("friction bound", std::min(p.bound_at_begin, at_end), "must be >= 0");
-    pieces_[i] = p;
   }
-  count_ = pieces.size();
+  pieces_.assign(pieces.begin(), pieces.end());
 }
 
 std::size_t PiecewiseAffineFriction::piece_index(double x) const noexcept {
-  std::size_t i = 0;
-  while (i + 1 < count_ && x >= pieces_[i].end) ++i;
-  return i;
+  // The first piece whose end exceeds x; the last piece (end +inf) when none does. A NaN x
+  // gives piece 0, as the former linear scan did.
+  if (!(x >= pieces_.front().end)) return 0;  // also the single-piece case (end = +inf)
+  const auto last = pieces_.end() - 1;
+  const auto it = std::upper_bound(pieces_.begin() + 1, last, x,
+                                   [](double v, const AffinePiece& p) { return v < p.end; });
+  return static_cast<std::size_t>(it - pieces_.begin());
 }
 
 namespace {

@@ -49,7 +49,7 @@ struct MotionCensus final : ArcSink {
   /// Table 1 case of the window: 5 only stick, 4 no stick, 1 no backward, 2 no forward, else 3.
   StickSlipCase motion_case() const;
   /// The window's stick/slip sequence as a cyclic pattern (a period: the first class merged
-  /// with the last when equal), rotated to start at a stick where there is one: e.g.
+  /// with the last when equal), rotated to start at a stick where there is one, else at a forward slip: e.g.
   /// "stick,forward", "stick,forward,backward", "forward,backward", "stick,forward,stick,
   /// backward" (a pattern Table 1 has no name for: two sticks a period, possible with
   /// static > kinetic or finite jerk). Empty for an empty window.

@@ -8,9 +8,9 @@
 /// pieces, which lets the exact event-driven solver integrate them in closed form
 /// (constant piece: parabolic arcs; affine piece: harmonic or hyperbolic arcs, eqs. 42-47).
 
-#include <array>
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace selfalign {
 
@@ -27,23 +27,25 @@ struct AffinePiece {
   }
 };
 
-/// A piecewise-affine friction map: at most kMaxPieces pieces, sorted, covering the real line.
+/// A piecewise-affine friction map: 1 to kMaxPieces pieces, sorted, covering the real line.
+/// piece_index is a binary search (O(log n)), so fields of many pieces (friction_field.hpp)
+/// stay fast; a single piece is answered without searching.
 class PiecewiseAffineFriction {
  public:
-  static constexpr std::size_t kMaxPieces = 8;
+  /// A sanity bound on the piece count (memory), far above any tabulated friction field.
+  static constexpr std::size_t kMaxPieces = 50'000'000;
 
   /// \param pieces sorted, contiguous (pieces[i].end == pieces[i+1].begin), first begins at
   ///        -inf and last ends at +inf, bound >= 0 everywhere. Throws InvalidParameter otherwise.
   explicit PiecewiseAffineFriction(std::span<const AffinePiece> pieces);
 
-  std::span<const AffinePiece> pieces() const noexcept { return {pieces_.data(), count_}; }
+  std::span<const AffinePiece> pieces() const noexcept { return pieces_; }
   /// Index of the piece containing x (pieces are closed on the left).
   std::size_t piece_index(double x) const noexcept;
   double bound(double x) const noexcept { return pieces_[piece_index(x)].bound(x); }
 
  private:
-  std::array<AffinePiece, kMaxPieces> pieces_{};
-  std::size_t count_ = 0;
+  std::vector<AffinePiece> pieces_;
 };
 
 /// Interface for friction laws m(x) = mu_bar(x)/mu_1. Implement it for new friction laws.

@@ -1,0 +1,141 @@
+#pragma once
+/// \file friction_field.hpp
+/// The table's friction field and the object's footprint, kept apart: eq. (7) is the average of
+/// the field over the footprint (docs/friction-field.md).
+///
+///   m(x) = mu_bar(x)/mu_1 = integral of field(xi) p(x - xi) dxi,   field = mu(xi)/mu_1,
+///
+/// with p the footprint's normalised contact pressure and x the object's LEADING edge. A point
+/// footprint gives m(x) = field(x); a uniform footprint of width w gives the window average
+/// m(x) = (1/w) * integral over [x - w, x] of field, which for the two-region field (mu_1 before
+/// x_mu, mu_2 = c_mu mu_1 after) is exactly TwoRegionFriction, eqs. (7)-(9).
+
+#include <optional>
+#include <span>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "selfalign/friction/friction_map.hpp"
+
+namespace selfalign {
+
+/// One node of a piecewise-linear friction field: at `position` the field jumps from `left`
+/// (its limit from the left) to `right` (its value at and just after the node; the field is
+/// right-continuous). left == right on a continuous (ramp) node.
+struct FieldNode {
+  double position;  ///< table position xi [-]
+  double left;      ///< limit of mu/mu_1 from the left [-]
+  double right;     ///< mu/mu_1 at the node and just after it [-]
+  bool operator==(const FieldNode&) const = default;
+};
+
+/// How tabulated samples (position, level) become a field.
+enum class FieldInterpolation {
+  steps,  ///< each sample's level holds until the next position (piecewise constant)
+  linear  ///< straight lines between samples (ramps)
+};
+
+/// "steps" or "linear"; throws InvalidParameter("interpolation", text, ...) otherwise.
+FieldInterpolation parse_field_interpolation(const std::string& text);
+
+/// The table's relative friction mu(xi)/mu_1 over table position xi, piecewise linear: between
+/// consecutive nodes it goes straight from the first node's `right` to the next node's `left`;
+/// before the first node it is the first node's `left`, after the last the last node's `right`.
+/// Valid fields: >= 1 node; positions finite, |position| <= 1e50, strictly increasing; levels
+/// finite, within [0, 1e50], and > 0 somewhere. Every factory throws InvalidParameter otherwise.
+class FrictionField {
+ public:
+  /// The general form; validated as above.
+  explicit FrictionField(std::vector<FieldNode> nodes);
+
+  /// Piecewise constant: levels[0] for xi < positions[0], levels[i] on
+  /// [positions[i-1], positions[i]), levels.back() from positions.back() on.
+  /// Needs levels.size() == positions.size() + 1 (no positions: a uniform field).
+  static FrictionField steps(const std::vector<double>& positions,
+                             const std::vector<double>& levels);
+  /// Piecewise linear through (positions[i], levels[i]), constant outside; levels.size() ==
+  /// positions.size() >= 1.
+  static FrictionField ramps(const std::vector<double>& positions,
+                             const std::vector<double>& levels);
+  /// Reads a CSV of rows "position,level" (one leading header line, blank lines and '#'
+  /// comments allowed; positions strictly increasing; levels finite, in [0, 1e50], > 0
+  /// somewhere). steps: each level holds from its position to the next (the first also before
+  /// it); linear: ramps through the samples. Bad input throws a one-line InvalidParameter naming
+  /// "<path>:<line>", e.g. "invalid friction field f.csv:4 level = -0.2: must be >= 0".
+  static FrictionField from_csv(const std::string& path, FieldInterpolation interpolation);
+  static FrictionField from_csv(const std::string& path, const std::string& interpolation);
+
+  std::span<const FieldNode> nodes() const noexcept { return nodes_; }
+  /// mu(xi)/mu_1 (right-continuous at jumps). O(log n).
+  double operator()(double xi) const noexcept;
+  /// The integral of the field over [a, b] (a <= b; 0 for a >= b). O(log n + nodes inside).
+  double integral(double a, double b) const noexcept;
+  /// True when every stretch between nodes is flat (the field is a step function).
+  bool piecewise_constant() const noexcept { return piecewise_constant_; }
+  double min_level() const noexcept { return min_level_; }
+  double max_level() const noexcept { return max_level_; }
+
+  bool operator==(const FrictionField& other) const { return nodes_ == other.nodes_; }
+
+ private:
+  std::vector<FieldNode> nodes_;
+  bool piecewise_constant_ = true;
+  double min_level_ = 0, max_level_ = 0;
+};
+
+/// A point contact: m(x) = field(x).
+struct PointFootprint {
+  bool operator==(const PointFootprint&) const = default;
+};
+/// Uniform contact pressure over [x - width, x] (x the leading edge): m(x) is the field's
+/// average over that window. width [-] in [1e-50, 1e50].
+struct UniformFootprint {
+  double width;
+  bool operator==(const UniformFootprint&) const = default;
+};
+/// The object's contact footprint (closed set of shapes).
+using Footprint = std::variant<PointFootprint, UniformFootprint>;
+
+/// m(x) = the field averaged over the footprint (eq. 7), for any field and footprint.
+///
+/// bound(x) is exact (up to rounding): O(log n) for a point footprint, O(log n + nodes under the
+/// window) for a uniform one. piecewise_affine() is non-null exactly when m is piecewise
+/// affine:
+///  - point footprint, any field: the field's own pieces (jumps allowed);
+///  - uniform footprint on a piecewise-constant (steps) field: breakpoints at the positions and
+///    the positions + w, merged and sorted; each step k adds (right_k - left_k)/w (x - p_k) while
+///    p_k < x < p_k + w, which is eq. (9) for one step;
+///  - uniform footprint on a field with ramps: m is piecewise QUADRATIC, piecewise_affine() is
+///    nullptr and only the time-stepping solver can use the map.
+/// Breakpoints closer than 4 ulps are merged (a sliver piece would stall the exact solver; the
+/// merged piece is off by at most slope x 4 ulps there).
+///
+/// Resolvability (as TwoRegionFriction): the slopes of m must be <= 1e12 in magnitude, and its
+/// sloped stretches must be wide enough to resolve in double precision: a ramp under a point
+/// footprint at least 1e-9 |position| wide, a uniform footprint's width >= 1e-9 max |position|.
+/// Violations throw a one-line InvalidParameter.
+class FieldFriction final : public FrictionMap {
+ public:
+  FieldFriction(FrictionField field, Footprint footprint);
+
+  double bound(double x) const override;
+  const PiecewiseAffineFriction* piecewise_affine() const override {
+    return affine_ ? &*affine_ : nullptr;
+  }
+
+  const FrictionField& field() const noexcept { return field_; }
+  const Footprint& footprint() const noexcept { return footprint_; }
+
+ private:
+  double window_average_of_steps(double x) const noexcept;
+
+  FrictionField field_;
+  Footprint footprint_;
+  double width_ = 0;                      // 0 for a point footprint
+  std::vector<double> window_ends_;       // p_k + w (uniform footprint on steps)
+  std::vector<double> jump_per_width_;    // (right_k - left_k)/w (uniform footprint on steps)
+  std::optional<PiecewiseAffineFriction> affine_;
+};
+
+}  // namespace selfalign

@@ -1,0 +1,145 @@
+// Tests for the exact solver under finite jerk (piecewise-linear table acceleration), against
+// independent numbers:
+//  - a stick that breaks inside a ramp, at the time the linear |y''(t)| reaches the static
+//    bound (closed form), and the whole trajectory against Moreau time-stepping at h = 1e-5
+//    and 1e-6 (first order: the error falls by about 10x);
+//  - v̄ of the jerk-limited three-phase profile tends to the jump profile's v̄ like 1/j;
+//  - saltation and finite-difference monodromy matrices agree for every stick/slip pattern
+//    found over a set of finite-jerk and static > kinetic steady states.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "moreau_order.hpp"
+#include "selfalign/analysis/floquet.hpp"
+#include "selfalign/analysis/period_map.hpp"
+#include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
+
+using namespace selfalign;
+
+namespace {
+struct ArcList final : ArcSink {
+  std::vector<Arc> arcs;
+  void on_arc(const Arc& a) override { arcs.push_back(a); }
+};
+
+// y'' = -3 t on [0, 1], back to 0 at 2, +3 at 3, 0 at 4 (continuous, |jerk| = 3).
+PiecewisePolynomialProfile triangle_profile() {
+  const double t[4] = {0, 1, 2, 3}, a[4] = {0, -3, 0, 3};
+  return PiecewisePolynomialProfile::from_breakpoints(t, a, 4.0);
+}
+}  // namespace
+
+TEST(FiniteJerk, ProfileFromBreakpointsIntegratesTheRamps) {
+  const auto p = triangle_profile();
+  ASSERT_EQ(p.segments().size(), 4u);
+  EXPECT_EQ(p.segments()[0].jerk, -3.0);
+  EXPECT_EQ(p.peak_acceleration(), 3.0);
+  EXPECT_FALSE(p.piecewise_constant());
+  // y'(t) - y'(0) = -3 t^2/2 on [0, 1]: -1.5 at t = 1.
+  EXPECT_NEAR(p.velocity(1.0) - p.velocity(0.0), -1.5, 1e-15);
+  EXPECT_NEAR(p.state(0.5).ydd, -1.5, 1e-15);
+}
+
+// From rest at t = 0 (A = 0), the object sticks until |A| = 3 t = s: t = s/3, mid-ramp.
+TEST(FiniteJerk, StickBreaksInsideARampWhereTheTableAccelerationReachesTheStaticBound) {
+  const auto profile = triangle_profile();
+  const UniformFriction uniform;
+  for (double s : {1.0, 1.2, 2.0}) {
+    const ExactSetup setup{profile, *uniform.piecewise_affine(), CoulombFriction(s, 1.0)};
+    ArcList list;
+    ExactState st = make_exact_state(setup, {0, 0, 0});
+    advance_exact(setup, st, 4.0, &list);
+    ASSERT_GE(list.arcs.size(), 2u);
+    EXPECT_EQ(list.arcs[0].kind(), ArcKind::stick);
+    EXPECT_EQ(list.arcs[0].end, ArcEnd::stick_break);
+    EXPECT_NEAR(list.arcs[0].t1, s / 3, 1e-15);  // closed form of a linear crossing
+    EXPECT_EQ(list.arcs[1].direction, 1);        // A < 0 pushes the object forward
+    // After the break: x'' = 3 t - 1 (kinetic 1) from t = s/3: x'(t) = 1.5 (t^2 - (s/3)^2)
+    // - (t - s/3); at t = 1 (end of the ramp):
+    const double tb = s / 3, expected = 1.5 * (1 - tb * tb) - (1 - tb);
+    EXPECT_NEAR(list.arcs[1].at(1.0).xd, expected, 1e-14);
+  }
+}
+
+// The whole trajectory (2 periods of a trapezoidal acceleration that sticks on its y'' = 0
+// hold and in the ramp up, and breaks loose inside the next ramp, every period) against Moreau
+// at h = 1e-5 and 1e-6, as RMS over 4 grid phases (this profile's event times are binary
+// fractions: on a grid through 0 they fall on step ends and hide the scheme's error): the
+// errors are O(h) (a decade gains >= 0.8 orders) and below 10 h.
+TEST(FiniteJerk, StickBreakingAgreesWithTimeSteppingToFirstOrder) {
+  const double t[6] = {0, 1, 1.5, 2, 3, 3.5}, a[6] = {0, 0, -2, -2, 2, 2};
+  const auto profile = PiecewisePolynomialProfile::from_breakpoints(t, a, 4.0);
+  const UniformFriction uniform;
+  const CoulombFriction law(1.5, 1.0);
+  const ExactSetup setup{profile, *uniform.piecewise_affine(), law};
+  const double t_end = 8.0;
+  ArcList list;
+  ExactState exact = make_exact_state(setup, {0, 0, 0});
+  advance_exact(setup, exact, t_end, &list);
+  int breaks = 0;
+  for (const Arc& arc : list.arcs) {
+    if (arc.end != ArcEnd::stick_break) continue;
+    ++breaks;  // where |y''| = 4 |t - t_ramp| reaches 1.5: at 1 + 1.5/4 or 2 + 3.5/4
+    const double phase = std::fmod(arc.t1, 4.0);
+    EXPECT_NEAR(std::min(std::abs(phase - 1.375), std::abs(phase - 2.875)), 0.0, 1e-13);
+  }
+  ASSERT_GE(breaks, 3);
+  const double e5 = testing_support::moreau_rms_error(profile, law, t_end, 1e-5, 4);
+  const double e6 = testing_support::moreau_rms_error(profile, law, t_end, 1e-6, 4);
+  EXPECT_LT(e5, 10 * 1e-5);
+  EXPECT_LT(e6, 10 * 1e-6);
+  EXPECT_GE(std::log10(e5 / e6), 0.8) << e5 << " " << e6;
+}
+
+// v̄(j) - v̄(inf) = C/j + O(1/j^2): over j = 1e2 .. 1e5 each decade divides the error by
+// about 10 (observed order in [0.85, 1.15]).
+TEST(FiniteJerk, SteadyVelocityTendsToTheJumpProfilesLikeOneOverJerk) {
+  const ThreePhaseParameters base{2.0, 0.1, 2.5, 1.5};
+  const double v_inf = steady_state(ThreePhaseProfile(base)).v_bar;
+  std::vector<double> err;
+  for (double j : {1e2, 1e3, 1e4, 1e5}) {
+    const JerkLimitedThreePhaseProfile p({base.period, base.stroke, base.a2, base.a3, j});
+    err.push_back(std::abs(steady_state(p).v_bar - v_inf));
+  }
+  RecordProperty("errors", testing::PrintToString(err));
+  for (std::size_t i = 0; i + 1 < err.size(); ++i) {
+    const double order = std::log10(err[i] / err[i + 1]);
+    EXPECT_GT(order, 0.85) << i;
+    EXPECT_LT(order, 1.15) << i;
+  }
+}
+
+// Saltation (arcs' transition matrices and event saltations) against central differences of
+// the period map, for every stick/slip pattern found over finite-jerk and static > kinetic
+// steady states. Agreement to 1e-6 (the differences' truncation, fd_step 1e-7).
+TEST(FiniteJerk, SaltationAndFiniteDifferencesAgreeForEveryPatternFound) {
+  constexpr double kSpreadTol = 1e-6;
+  std::set<std::string> patterns;
+  for (double a2 : {0.8, 1.3, 2.5, 4.0})
+    for (double a3 : {0.9, 1.5, 2.2, 4.0})
+      for (const CoulombFriction& law : {CoulombFriction{}, CoulombFriction(1.3, 1.0),
+                                         CoulombFriction(1.3, 1.0, 0.7)})
+        for (double j : {30.0, 300.0}) {
+          const JerkLimitedThreePhaseParameters p{2.0, 0.1, a2, a3, j};
+          if (!solve_jerk_limited_three_phase(p).physical) continue;
+          const JerkLimitedThreePhaseProfile profile(p);
+          const FloquetAnalysis r = floquet_multipliers(profile, law);
+          if (!r.steady.converged) continue;
+          patterns.insert(r.steady.pattern);
+          EXPECT_LE(r.spread, kSpreadTol)
+              << "a2 " << a2 << " a3 " << a3 << " j " << j << " " << law.describe() << " "
+              << r.steady.pattern;
+        }
+  RecordProperty("patterns", testing::PrintToString(patterns));
+  EXPECT_GE(patterns.size(), 4u) << testing::PrintToString(patterns);
+}
