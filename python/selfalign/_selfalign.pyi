@@ -668,9 +668,11 @@ class StoppingRun:
 
 def stopping_run(
     profile: TableProfile,
-    friction: TwoRegionFriction,
+    friction: FrictionMap,
     start: ObjectState,
     options: StoppingOptions = ...,
+    *,
+    law: CoulombFriction = ...,
 ) -> StoppingRun: ...
 
 # ---- positioning -----------------------------------------------------------------------------

@@ -23,7 +23,9 @@ void bind_stick_position(py::module_& m) {
       py::arg("friction"), py::arg("peak_acceleration"), py::arg("x"),
       "eq. (40): True where an object at rest at x [-] is held by friction whatever the table "
       "does, i.e. m(x) >= max |y''| (bool, or a bool ndarray shaped like x).");
-  m.def("stick_position_min", &stick_position_min, py::arg("friction"),
+  m.def("stick_position_min",
+        py::overload_cast<const TwoRegionFriction&, double>(&stick_position_min),
+        py::arg("friction"),
         py::arg("peak_acceleration"), R"doc(
 eq. (41) [-]: x_stick,min = x_mu + w (max|y''| - 1)/(c_mu - 1), the smallest x >= x_mu at
 which eq. (40) holds; x_mu when the peak acceleration is <= 1, +inf when it exceeds c_mu (the
@@ -150,12 +152,24 @@ void bind_stopping_run(py::module_& m) {
         .str();
   });
 
-  m.def("stopping_run", &stopping_run, py::arg("profile"), py::arg("friction"), py::arg("start"),
-        py::arg("options") = StoppingOptions{}, py::call_guard<py::gil_scoped_release>(), R"doc(
-Runs the exact solver from `start` on the two-region table until the object provably stops for
-good (Sect. 7): a permanent stick (eq. 40), or, for three-phase profiles, stick positions that
-the map of eq. (59) drives to its fixed point x_stick,min (accumulation, Sect. 7.3). The
-profile must be piecewise constant; raises InvalidParameter otherwise. Runs without the GIL.)doc");
+  m.def(
+      "stopping_run",
+      [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& start,
+         const StoppingOptions& options, const CoulombFriction& law) {
+        if (const auto* two = dynamic_cast<const TwoRegionFriction*>(&friction);
+            two && law.is_unit())
+          return stopping_run(profile, *two, start, options);
+        return stopping_run(profile, friction, law, start, options);
+      },
+      py::arg("profile"), py::arg("friction"), py::arg("start"),
+      py::arg("options") = StoppingOptions{}, py::kw_only(), py::arg("law") = CoulombFriction{},
+      py::call_guard<py::gil_scoped_release>(), R"doc(
+Runs the exact solver from `start` until the object provably stops for good (Sect. 7): a
+permanent stick (eq. 40: static m(x) >= max|y''|), or, for three-phase profiles on the
+two-region table under the paper's law, stick positions that the map of eq. (59) drives to
+its fixed point x_stick,min (accumulation, Sect. 7.3). Any piecewise-affine friction level
+and CoulombFriction law; the profile must be piecewise constant or piecewise linear in
+acceleration. Raises InvalidParameter otherwise. Runs without the GIL.)doc");
 }
 
 }  // namespace

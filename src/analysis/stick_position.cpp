@@ -18,6 +18,38 @@ bool sticks_permanently(const FrictionMap& friction, double peak_acceleration, d
   return friction.bound(x) >= peak_acceleration;  // eq. (40)
 }
 
+bool sticks_permanently(const FrictionMap& friction, const CoulombFriction& law,
+                        double peak_acceleration, double x) {
+  return law.static_coefficient() * friction.bound(x) >= peak_acceleration;
+}
+
+double friction_rise(const PiecewiseAffineFriction& f) {
+  const auto pieces = f.pieces();
+  for (const AffinePiece& p : pieces)
+    if (p.slope != 0 || p.bound_at_begin != pieces.front().bound_at_begin) return p.begin;
+  return std::numeric_limits<double>::infinity();
+}
+
+double stick_position_min(const PiecewiseAffineFriction& f, const CoulombFriction& law,
+                          double peak) {
+  const auto pieces = f.pieces();
+  const double s = law.static_coefficient();
+  double x = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = pieces.size(); i-- > 0;) {  // from the right: the level must hold on
+    const AffinePiece& p = pieces[i];
+    const double at_begin = s * p.bound(p.begin), at_end = s * p.bound(p.end);
+    if (std::isinf(p.end)) {
+      if (s * p.bound_at_begin < peak) return std::numeric_limits<double>::infinity();
+      continue;
+    }
+    if (at_begin >= peak && at_end >= peak) continue;
+    // The level crosses peak inside the piece (affine: one crossing) or fails at its end.
+    x = at_end >= peak ? p.begin + (peak / s - p.bound_at_begin) / p.slope : p.end;
+    break;
+  }
+  return std::max(x, friction_rise(f));
+}
+
 double stick_position_min(const TwoRegionFriction& f, double peak) {
   if (peak <= 1) return f.x_mu();
   if (peak > f.c_mu()) return std::numeric_limits<double>::infinity();

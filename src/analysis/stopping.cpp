@@ -69,6 +69,12 @@ struct StopWatch final : ArcSink {
 
 StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
                          const ObjectState& start, const StoppingOptions& o) {
+  return stopping_run(profile, friction, CoulombFriction{}, start, o);
+}
+
+StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
+                         const CoulombFriction& law, const ObjectState& start,
+                         const StoppingOptions& o) {
   const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
   if (!pwc)
     throw InvalidParameter("profile", profile.kind(),
@@ -77,16 +83,25 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
   for (double p : o.fractions)
     if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");
 
+  const PiecewiseAffineFriction* pieces = friction.piecewise_affine();
+  if (!pieces)
+    throw InvalidParameter("friction", "not piecewise affine",
+                           "a stopping run needs a piecewise-affine friction level (exact solver)");
   const double peak = profile.peak_acceleration(), P = profile.period();
+  // The paper's table under the paper's law: eqs. (41), (59), (60) as written; otherwise their
+  // general forms (the rise of the level, s m(x) >= peak), and no accumulation proof.
+  const auto* two = dynamic_cast<const TwoRegionFriction*>(&friction);
+  const bool paper = two && law.is_unit();
+  const double x_mu = two ? two->x_mu() : friction_rise(*pieces);
   StoppingRun r;
-  r.x_stick_min = stick_position_min(friction, peak);
+  r.x_stick_min = paper ? stick_position_min(*two, peak) : stick_position_min(*pieces, law, peak);
   r.entry_time = kNaN;
   r.end_position = r.process_time = kNaN;  // absent until a proof of the stop is found
   r.time_to_fraction.assign(o.fractions.size(), kNaN);
   r.periods_to_fraction.assign(o.fractions.size(), -1);
   std::vector<double> targets;
   for (double p : o.fractions)
-    targets.push_back(friction.x_mu() + p * (r.x_stick_min - friction.x_mu()));
+    targets.push_back(x_mu + p * (r.x_stick_min - x_mu));
 
   // The accumulation proof needs the three-phase structure behind eq. (59). Its stick
   // positions are where the object rests through [t0, t1], so the run looks at the object at
@@ -97,7 +112,7 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
   // it lands on the switch itself, not an ulp past it (where the slip under -y2'' has begun).
   const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(&profile);
   std::unique_ptr<StickPositionMap> map;
-  if (three_phase) map = std::make_unique<StickPositionMap>(*three_phase, friction);
+  if (three_phase && paper) map = std::make_unique<StickPositionMap>(*three_phase, *two);
   double phase = 0;
   if (three_phase)
     for (const AccelerationSegment& seg : pwc->segments())
@@ -106,9 +121,9 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
         break;
       }
 
-  const PeriodMap period_map(profile, friction, CoulombFriction{});
+  const PeriodMap period_map(profile, friction, law);
   PeriodMap::Run run = period_map.start(start);
-  StopWatch watch(friction.x_mu(), targets, r);
+  StopWatch watch(x_mu, targets, r);
   watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
   const double P_segments = pwc->period();
   long long n_first = run.exact_state().period_index;
@@ -123,8 +138,8 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
     const ObjectState& obj = run.state();
     if (obj.x == previous.x && obj.xd == previous.xd) break;  // periodic orbit, not a stop
     previous = obj;
-    if (obj.xd != 0 || obj.x < friction.x_mu()) continue;
-    if (sticks_permanently(friction, peak, obj.x)) {  // eq. (40)
+    if (obj.xd != 0 || obj.x < x_mu) continue;
+    if (sticks_permanently(friction, law, peak, obj.x)) {  // eq. (40)
       r.kind = StopKind::permanent_stick;
       r.end_position = obj.x;
       r.process_time = watch.last_stop_time;

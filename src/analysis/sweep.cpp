@@ -8,6 +8,7 @@
 
 #include "parallel_cells.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
 namespace selfalign {
@@ -72,7 +73,7 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
       c.v_bar = c.f = c.x_dot_0s = kNaN;
       return;
     }
-    const SteadyState s = steady_state(ThreePhaseProfile(p), o.steady);
+    const SteadyState s = steady_state(ThreePhaseProfile(p), o.law, o.steady);
     c.observed = s.motion_case;
     c.v_bar = s.v_bar;
     c.f = s.f;
@@ -99,6 +100,18 @@ std::unique_ptr<TableProfile> ThreePhaseFamily::make(double period, double strok
   return std::make_unique<ThreePhaseProfile>(p);
 }
 
+JerkLimitedThreePhaseFamily::JerkLimitedThreePhaseFamily(double a2, double a3, double jerk)
+    : a2_(a2), a3_(a3), jerk_(jerk) {
+  validate(JerkLimitedThreePhaseParameters{1.0, 1.0, a2, a3, jerk});
+}
+
+std::unique_ptr<TableProfile> JerkLimitedThreePhaseFamily::make(double period,
+                                                                double stroke) const {
+  const JerkLimitedThreePhaseParameters p{period, stroke, a2_, a3_, jerk_};
+  if (!solve_jerk_limited_three_phase(p).physical) return nullptr;
+  return std::make_unique<JerkLimitedThreePhaseProfile>(p);
+}
+
 ScaledShapeFamily::ScaledShapeFamily(PiecewisePolynomialProfile shape) : shape_(std::move(shape)) {}
 
 ScaledShapeFamily ScaledShapeFamily::paper_like() {
@@ -113,13 +126,15 @@ std::unique_ptr<TableProfile> ScaledShapeFamily::make(double period, double stro
   const double time_scale = period / shape_.period();
   const double accel_scale = stroke / shape_.stroke() / (time_scale * time_scale);
   const auto segs = shape_.segments();
-  std::vector<double> durations, accels;
+  std::vector<double> durations, begin, end;
   for (const AccelerationSegment& s : segs) {
     durations.push_back(s.duration * time_scale);
-    accels.push_back(s.accel * accel_scale);
+    begin.push_back(s.accel * accel_scale);
+    end.push_back(s.jerk == 0 ? s.accel * accel_scale : s.end_accel() * accel_scale);
   }
   return std::make_unique<PiecewisePolynomialProfile>(
-      PiecewisePolynomialProfile::from_accelerations(durations, accels, "scaled-shape"));
+      PiecewisePolynomialProfile::from_linear_accelerations(durations, begin, end,
+                                                            "scaled-shape"));
 }
 
 ScaledFourierFamily::ScaledFourierFamily(std::vector<double> cos_coeffs,
@@ -154,7 +169,7 @@ std::vector<FamilyPoint> sweep_family(const ProfileFamily& family,
       return;
     }
     pt.physical = true;
-    const SteadyState s = steady_state(*profile, o.steady);
+    const SteadyState s = steady_state(*profile, o.law, o.steady);
     pt.observed = s.motion_case;
     pt.v_bar = s.v_bar;
     pt.f = s.f;

@@ -15,6 +15,7 @@
 
 #include <vector>
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
@@ -59,5 +60,15 @@ struct StoppingRun {
 /// (the profile must be piecewise constant). Throws InvalidParameter otherwise.
 StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
                          const ObjectState& start, const StoppingOptions& options = {});
+/// The same on any piecewise-affine friction level (a FieldFriction, several steps, ...)
+/// under a Coulomb law. The paper's x_mu becomes the rise of the level (friction_rise), eq.
+/// (40) becomes s m(x) >= peak and eq. (41) its smallest such x from which the level stays
+/// high enough (stick_position_min of the pieces); the accumulation proof (eqs. 59, 60) is the
+/// paper's and applies to the two-region table with a three-phase profile under the paper's
+/// law only (elsewhere an accumulating run ends not_stopped). Throws InvalidParameter for a
+/// level that is not piecewise affine.
+StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
+                         const CoulombFriction& law, const ObjectState& start,
+                         const StoppingOptions& options = {});
 
 }  // namespace selfalign

@@ -15,6 +15,7 @@
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
@@ -36,6 +37,7 @@ struct SweepOptions {
   int threads = 0;              ///< worker threads, >= 0; 0: all cores (see worker_threads)
   ProgressCallback progress;    ///< optional
   SteadyStateOptions steady;    ///< per-cell steady-state search
+  CoulombFriction law;          ///< the friction law of every cell (the paper's by default)
 };
 
 /// The number of workers a study runs on for `requested` threads: all the cores available to
@@ -85,9 +87,23 @@ class ThreePhaseFamily final : public ProfileFamily {
   double a2_, a3_;
 };
 
-/// One shape of piecewise-constant acceleration (a Fig. 3 style sequence of quadratics),
+/// Jerk-limited three-phase profiles (trapezoidal acceleration) with fixed (y2'', y3'') and
+/// jerk limit j; a member that does not exist (case 0, e.g. a jerk too low for the period
+/// and stroke) is nullptr.
+class JerkLimitedThreePhaseFamily final : public ProfileFamily {
+ public:
+  /// \param jerk j > 0 [-] (+inf: the ThreePhaseFamily). Throws InvalidParameter otherwise.
+  JerkLimitedThreePhaseFamily(double a2, double a3, double jerk);
+  std::unique_ptr<TableProfile> make(double period, double stroke) const override;
+  std::string name() const override { return "jerk-limited-three-phase"; }
+
+ private:
+  double a2_, a3_, jerk_;
+};
+
+/// One shape of piecewise-polynomial acceleration (a Fig. 3 style sequence of quadratics),
 /// stretched in time to the period and scaled in amplitude to the stroke: durations scale with
-/// Δt, accelerations with Δy / Δt^2.
+/// Δt, accelerations with Δy / Δt^2 (and a finite jerk with Δy / Δt^3).
 class ScaledShapeFamily final : public ProfileFamily {
  public:
   explicit ScaledShapeFamily(PiecewisePolynomialProfile shape);
