@@ -98,7 +98,7 @@ void run_accuracy(const ConfigFlags& flags, const AccuracyFlags& f) {
   options.stopping.max_periods = f.max_periods;
   options.stopping.fractions = {0.99, 0.999};  // the CSV's periods_p99, periods_p999
   const PositioningAccuracy a =
-      positioning_accuracy(*model.profile, friction.width(), friction.c_mu(), options);
+      positioning_accuracy(*model.profile, model.law, friction.width(), friction.c_mu(), options);
   const json report = accuracy_json(model, a, f.max_periods);
   deliver_csv_and_report(paths, paths.csv ? entries_csv(a, model.output_units()) : "", report,
                          accuracy_table(report, model.units));

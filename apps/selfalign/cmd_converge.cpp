@@ -84,7 +84,7 @@ void run_converge(const ConfigFlags& flags, const ConvergeFlags& f) {
   const ProfileModel model = build_profile_model(config);
   const SimulateConfig resolved = resolve_simulate_config(config);  // t0, periods as given
   const ConvergenceOptions options = convergence_options(resolved, model, f);
-  const VelocityConvergence r = velocity_convergence(*model.profile, options);
+  const VelocityConvergence r = velocity_convergence(*model.profile, model.law, options);
 
   const std::string summary =
       convergence_json(model, *resolved.periods, options, r, paths).dump(2) + "\n";

@@ -57,9 +57,11 @@ json floquet_json(const ProfileModel& model, const FloquetAnalysis& a, double fd
   j["spread"] = number_or_null(a.spread);
   j["fd_step"] = fd_step;  // [-] in both systems: it perturbs x0 and x'_0s alike
   j["slip_slip_lambda2_formula"] =
-      model.three_phase
+      model.three_phase && !model.jerk && model.law.is_unit()
           ? number_or_null(slip_slip_multiplier(model.three_phase->a2, model.three_phase->a3))
           : json(nullptr);
+  j["law"] = law_json(model.law);
+  j["pattern"] = a.steady.pattern;
   return j;
 }
 
@@ -99,8 +101,10 @@ void run_floquet(const ConfigFlags& flags, const FloquetFlags& f) {
   FloquetOptions options;
   options.fd_step = require_in_half_open("fd-step", f.fd_step, 0.0, 0.1);
   const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(model.profile.get());
-  const FloquetAnalysis analysis = three_phase ? floquet_multipliers(*three_phase, options)
-                                               : floquet_multipliers(*model.profile, options);
+  // The analytic matrix (eqs. 25-33) is the paper's law's; any other law: saltation and FD.
+  const FloquetAnalysis analysis = three_phase && model.law.is_unit()
+                                       ? floquet_multipliers(*three_phase, options)
+                                       : floquet_multipliers(*model.profile, model.law, options);
   const json report = floquet_json(model, analysis, options.fd_step);
   deliver_report(report, floquet_table(report, model.units), f.as_json, config.out);
 }

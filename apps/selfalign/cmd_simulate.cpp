@@ -23,7 +23,7 @@ void run_simulate(const ConfigFlags& flags) {
   const SimulateModel model = build_simulate_model(config);
   SimulationOptions options = model.options;
   options.record = paths.trajectory.has_value();  // samples only when a CSV is written (P01)
-  const SimulationResult result = simulate(*model.profile, *model.friction, model.initial, options);
+  const SimulationResult result = simulate(*model.profile, *model.friction, model.law, model.initial, options);
 
   const std::string summary =
       simulate_summary_json(model, result, paths.trajectory).dump(2) + "\n";

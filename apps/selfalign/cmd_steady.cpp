@@ -31,7 +31,8 @@ void add_profile(json& j, const ProfileModel& model) {
   j["a2"] = p ? json(u.acceleration(p->a2)) : json(nullptr);
   j["a3"] = p ? json(u.acceleration(p->a3)) : json(nullptr);
   for (const char* key : {"t1", "t2", "t3", "y_ini", "y_dot_ini"}) j[key] = nullptr;
-  if (!p) return;
+  j["jerk"] = model.jerk ? json(model.from_model_units(Dimension::jerk, *model.jerk)) : json(nullptr);
+  if (!p || model.jerk) return;
   const ThreePhaseSolution s = solve_three_phase(*p);  // Appendix, eqs. (61)-(67)
   if (!s.physical) return;
   j["t1"] = u.time(s.t1);
@@ -39,6 +40,12 @@ void add_profile(json& j, const ProfileModel& model) {
   j["t3"] = u.time(s.t3);
   j["y_ini"] = u.length(s.y_ini);
   j["y_dot_ini"] = u.velocity(s.yd_ini);
+}
+
+// The paper's jump-acceleration formulas (switch times, a-priori case) describe the profile
+// only without a jerk limit and under the paper's law.
+bool paper_three_phase(const ProfileModel& model) {
+  return model.three_phase && !model.jerk && model.law.is_unit();
 }
 
 json steady_json(const ProfileModel& model, const std::optional<SteadyState>& steady) {
@@ -49,12 +56,15 @@ json steady_json(const ProfileModel& model, const std::optional<SteadyState>& st
   const StickSlipCase observed = steady ? steady->motion_case : StickSlipCase::non_physical;
   j["case"] = static_cast<int>(observed);
   j["case_name"] = describe(observed);
-  j["case_a_priori"] =
-      model.three_phase ? json(static_cast<int>(predict_case(*model.three_phase))) : json(nullptr);
+  j["case_a_priori"] = paper_three_phase(model)
+                           ? json(static_cast<int>(predict_case(*model.three_phase)))
+                           : json(nullptr);
+  j["law"] = law_json(model.law);
   for (const char* key : {"v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
-                          "periods", "method"})
+                          "periods", "method", "pattern"})
     j[key] = nullptr;
   if (!steady) return j;
+  j["pattern"] = steady->pattern;  // the stick/slip sequence, e.g. "stick,forward,backward"
   j["v_bar"] = u.velocity(steady->v_bar);
   j["f"] = number_or_null(steady->f);  // [-] always: f of the dimensionless v̄
   j["x_dot_0s"] = u.velocity(steady->x_dot_0s);
@@ -101,7 +111,7 @@ void run_steady(const ConfigFlags& flags, bool as_json) {
   if (config.out) require_output_path("out", *config.out, config.samples.value_or(""), "--samples");
   const ProfileModel model = build_profile_model(config, NonPhysicalProfile::allow);
   std::optional<SteadyState> steady;
-  if (model.profile) steady = steady_state(*model.profile);
+  if (model.profile) steady = steady_state(*model.profile, model.law);
   const json report = steady_json(model, steady);
   deliver_report(report, steady_table(report, model.units), as_json, config.out);
 }

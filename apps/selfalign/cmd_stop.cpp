@@ -112,14 +112,14 @@ void run_stop(const ConfigFlags& flags, const StopFlags& f) {
   StoppingOptions options;
   options.max_periods = f.max_periods;
   options.fractions = f.fractions;
-  const StoppingRun run = stopping_run(*model.profile, friction, model.initial, options);
+  const StoppingRun run = stopping_run(*model.profile, friction, model.law, model.initial, options);
 
   std::string csv;
   if (paths.csv) {  // the same run, sampled by simulate() with the exact solver
     SimulationOptions o = model.options;
     o.duration = trajectory_end(run, model.initial.t, model.profile->period(), f.max_periods) -
                  model.initial.t;
-    csv = phase_portrait_csv(simulate(*model.profile, friction, model.initial, o).trajectory,
+    csv = phase_portrait_csv(simulate(*model.profile, friction, model.law, model.initial, o).trajectory,
                              model.output_units());
   }
   const json report = stop_json(model, options, run);

@@ -80,7 +80,7 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
     cells = sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model,
-                                sweep_options(*f.common, *bar));
+                                sweep_options(*f.common, *bar, model));
   }
   write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
                       cells_summary(config, model, f, g.r2, g.r3, cells));

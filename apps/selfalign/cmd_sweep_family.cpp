@@ -25,6 +25,9 @@ struct FamilyFlags {
 };
 
 std::unique_ptr<ProfileFamily> make_family(const std::string& name, const ProfileModel& model) {
+  if (name == "three-phase" && model.jerk)
+    return std::make_unique<JerkLimitedThreePhaseFamily>(model.three_phase->a2,
+                                                         model.three_phase->a3, *model.jerk);
   if (name == "three-phase")
     return std::make_unique<ThreePhaseFamily>(model.three_phase->a2, model.three_phase->a3);
   if (name == "scaled-shape")
@@ -66,7 +69,7 @@ void run_sweep_family(const FamilyFlags& f) {
   std::vector<FamilyPoint> points;
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
-    const SweepOptions options = sweep_options(*f.common, *bar);
+    const SweepOptions options = sweep_options(*f.common, *bar, model);
     points = by_period ? sweep_period(*family, p.stroke, values_model, options)
                        : sweep_stroke(*family, p.period, values_model, options);
   }
@@ -84,7 +87,8 @@ void run_sweep_family(const FamilyFlags& f) {
   j["units"] = to_string(model.units);
   j["family"] = family->name();
   j[by_period ? "stroke" : "period"] = fixed;
-  const bool three_phase = family->name() == "three-phase";
+  const bool three_phase = family->name() == "three-phase" ||
+                           family->name() == "jerk-limited-three-phase";
   j["a2"] = three_phase ? json(*given.a2) : json(nullptr);
   j["a3"] = three_phase ? json(*given.a3) : json(nullptr);
   j["grid"] = {{by_period ? "period" : "stroke", grid_json(range)},

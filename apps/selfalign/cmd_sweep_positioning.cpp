@@ -106,7 +106,7 @@ void run_sweep_positioning(const PositioningFlags& f) {
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
     cells = positioning_surfaces(p.period, p.stroke, width, c_mu, g.a2_model, g.a3_model, options,
-                                 sweep_options(*f.common, *bar));
+                                 sweep_options(*f.common, *bar, model));
   }
   write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
                       cells_summary(config, model, f, g.r2, g.r3, cells));

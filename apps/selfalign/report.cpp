@@ -9,6 +9,12 @@
 
 namespace selfalign::cli {
 
+nlohmann::json law_json(const CoulombFriction& law) {
+  return {{"static", law.static_coefficient()},
+          {"kinetic_forward", law.kinetic_forward()},
+          {"kinetic_backward", law.kinetic_backward()}};
+}
+
 nlohmann::json number_or_null(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }

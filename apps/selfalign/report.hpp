@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/unit_system.hpp"
 
@@ -16,6 +17,10 @@ namespace selfalign::cli {
 
 /// The value as a JSON number, or null for NaN and ±inf (JSON has neither).
 nlohmann::json number_or_null(double value);
+
+/// The friction law as report fields, ratios to mu (mu_1): {"static", "kinetic_forward",
+/// "kinetic_backward"}; all 1 for the paper's law.
+nlohmann::json law_json(const CoulombFriction& law);
 
 /// A CSV field: shortest text that reads back as the same double; "nan", "inf", "-inf".
 std::string csv_number(double value);

@@ -83,8 +83,10 @@ ProfileModel sweep_model(const SimulateConfig& config) {
   return build_profile_model(three_phase, NonPhysicalProfile::allow);
 }
 
-SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar) {
+SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar, const ProfileModel& model) {
   SweepOptions o;
+  o.law = model.law;
+  if (model.jerk) o.jerk = *model.jerk;
   o.threads = flags.threads;
   o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
   return o;

@@ -98,7 +98,7 @@ void add_acceleration_range_flags(CLI::App& command, std::string& a2_range,
 ProfileModel sweep_model(const SimulateConfig& config);
 
 /// The library's options: --threads, and progress reported to `bar`.
-SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar);
+SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar, const ProfileModel& model);
 
 /// A progress bar on stderr, drawn when stderr is a terminal and --quiet was not given.
 std::unique_ptr<ProgressBar> sweep_progress_bar(const SweepFlags& flags);

@@ -722,7 +722,12 @@ class PositioningAccuracy:
     def all_stopped(self) -> bool: ...
 
 def positioning_accuracy(
-    profile: TableProfile, width: float, c_mu: float, options: PositioningOptions = ...
+    profile: TableProfile,
+    width: float,
+    c_mu: float,
+    options: PositioningOptions = ...,
+    *,
+    law: CoulombFriction = ...,
 ) -> PositioningAccuracy: ...
 def positioning_surfaces(
     period: float,

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "parallel_cells.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/analysis/period_map.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -35,6 +37,12 @@ struct MaxPosition final : ArcSink {
 
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
                                          const PositioningOptions& o) {
+  return positioning_accuracy(profile, CoulombFriction{}, width, c_mu, o);
+}
+
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const CoulombFriction& law,
+                                         double width, double c_mu,
+                                         const PositioningOptions& o) {
   validate(o);
   const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
   if (!pwc)
@@ -42,27 +50,30 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, double wid
                            "positioning needs a piecewise-constant or piecewise-linear table acceleration");
   TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
   PositioningAccuracy r;
-  r.steady = steady_state(profile, o.steady);
+  r.steady = steady_state(profile, law, o.steady);
   r.reaches = r.steady.v_bar > 0;
   if (!r.reaches) {
     r.x_mu = r.x_stick_min = r.overshoot_min = r.overshoot_max = r.dx_d = r.x_d = kNaN;
     return r;
   }
   // Δx: the largest displacement in one steady period (Sect. 7.1), from x = 0 at phase 0.
-  const PeriodMap map(profile);
+  const PeriodMap map(profile, law);
   MaxPosition max_position;
   map(0, r.steady.x_dot_0s, &max_position);
   r.x_mu = max_position.max_x;
 
   const TwoRegionFriction friction(r.x_mu, width, c_mu);
-  r.x_stick_min = stick_position_min(friction, profile.peak_acceleration());
+  r.x_stick_min =
+      law.is_unit() ? stick_position_min(friction, profile.peak_acceleration())
+                    : stick_position_min(*friction.piecewise_affine(), law, profile.peak_acceleration());
   const double span = r.steady.v_bar * profile.period();
   r.entries = o.entries == 1 ? std::vector<double>{0.0} : linear_grid(-span, 0.0, o.entries);
   r.overshoot_min = std::numeric_limits<double>::infinity();
   r.overshoot_max = -std::numeric_limits<double>::infinity();
   r.all_stopped = true;
   for (double x0 : r.entries) {
-    r.runs.push_back(stopping_run(profile, friction, {0, x0, r.steady.x_dot_0s}, o.stopping));
+    r.runs.push_back(
+        stopping_run(profile, friction, law, {0, x0, r.steady.x_dot_0s}, o.stopping));
     const StoppingRun& run = r.runs.back();
     if (run.kind == StopKind::not_stopped) {
       r.all_stopped = false;
@@ -103,12 +114,17 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
     c.a2 = a2[k / a3.size()];
     c.a3 = a3[k % a3.size()];
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
-    if (!solve_three_phase(p).physical) {
+    const JerkLimitedThreePhaseParameters jp{period, stroke, c.a2, c.a3, sweep.jerk};
+    const bool jumps = std::isinf(sweep.jerk);
+    if (!(jumps ? solve_three_phase(p).physical : solve_jerk_limited_three_phase(jp).physical)) {
       c.f = c.dx_d = kNaN;
       return;
     }
-    const ThreePhaseProfile profile(p);
-    const PositioningAccuracy acc = positioning_accuracy(profile, width, c_mu, per_cell);
+    const std::unique_ptr<TableProfile> profile =
+        jumps ? std::unique_ptr<TableProfile>(std::make_unique<ThreePhaseProfile>(p))
+              : std::make_unique<JerkLimitedThreePhaseProfile>(jp);
+    const PositioningAccuracy acc =
+        positioning_accuracy(*profile, sweep.law, width, c_mu, per_cell);
     c.motion_case = acc.steady.motion_case;
     c.f = acc.steady.f;
     c.accumulates = acc.accumulates;

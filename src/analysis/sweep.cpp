@@ -58,6 +58,7 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
   require_positive("stroke", stroke);
   for (double v : a2) require_positive("a2", v);
   for (double v : a3) require_positive("a3", v);
+  if (!(o.jerk > 0)) throw InvalidParameter("jerk", o.jerk, "must be > 0 (+inf: jump accelerations)");
   if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) > kMaxCells)
     throw InvalidParameter("cells", static_cast<double>(a2.size()) * static_cast<double>(a3.size()),
                            "len(a2) x len(a3) must be <= 1e7");
@@ -68,12 +69,17 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
     c.a3 = a3[k % a3.size()];
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
     c.predicted = predict_case(p);
-    if (c.predicted == StickSlipCase::non_physical) {
+    const JerkLimitedThreePhaseParameters jp{period, stroke, c.a2, c.a3, o.jerk};
+    const bool physical = std::isinf(o.jerk) ? c.predicted != StickSlipCase::non_physical
+                                             : solve_jerk_limited_three_phase(jp).physical;
+    if (!physical) {
       c.observed = StickSlipCase::non_physical;
       c.v_bar = c.f = c.x_dot_0s = kNaN;
       return;
     }
-    const SteadyState s = steady_state(ThreePhaseProfile(p), o.law, o.steady);
+    const SteadyState s = std::isinf(o.jerk)
+                              ? steady_state(ThreePhaseProfile(p), o.law, o.steady)
+                              : steady_state(JerkLimitedThreePhaseProfile(jp), o.law, o.steady);
     c.observed = s.motion_case;
     c.v_bar = s.v_bar;
     c.f = s.f;

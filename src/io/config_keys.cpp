@@ -21,8 +21,9 @@ const ConfigKey kKeys[] = {
     {"method", &C::method, D::none, "", "", "run",
      "solver: exact (event-driven; piecewise-constant or piecewise-linear y'') or time-stepping (Moreau)"},
     {"profile", &C::profile, D::none, "", "", "profile",
-     "table motion: three-phase (Sect. 4.4.3), quadratic-sequence (durations, accelerations), "
-     "fourier (fourier_cos, fourier_sin), samples (CSV file)"},
+     "table motion: three-phase (Sect. 4.4.3; with jerk: trapezoidal acceleration), "
+     "quadratic-sequence (durations, accelerations), piecewise-linear (times, accelerations, "
+     "period), fourier (fourier_cos, fourier_sin), samples (CSV file)"},
     {"period", &C::period, D::time, "[-]", "[s]", "profile",
      "table period Δt (three-phase, fourier), > 0"},
     {"stroke", &C::stroke, D::length, "[-]", "[m]", "profile",
@@ -31,12 +32,20 @@ const ConfigKey kKeys[] = {
      "y2'': the table accelerates with -y2'' on [t1, t2] (three-phase), > 0"},
     {"a3", &C::a3, D::acceleration, "[-]", "[m/s^2]", "profile",
      "y3'': the table accelerates with +y3'' on [t2, t3] (three-phase), > 0"},
+    {"jerk", &C::jerk, D::jerk, "[-]", "[m/s^3]", "profile",
+     "jerk limit j of the three-phase profile: each switch becomes a ramp of duration "
+     "Δa/j (docs/jerk-limited-three-phase.md), > 0; unset: jump accelerations (the paper's)"},
     {"durations", &C::durations, D::time, "[-]", "[s]", "profile",
      "durations of the constant-acceleration segments of one period (quadratic-sequence), "
      "comma-separated"},
     {"accelerations", &C::accelerations, D::acceleration, "[-]", "[m/s^2]", "profile",
-     "table acceleration y'' on each segment (quadratic-sequence), comma-separated; "
-     "sum of acceleration*duration must be 0"},
+     "table acceleration y'' on each segment (quadratic-sequence; sum of "
+     "acceleration*duration must be 0) or at each breakpoint (piecewise-linear), "
+     "comma-separated"},
+    {"times", &C::times, D::time, "[-]", "[s]", "profile",
+     "breakpoint times of a piecewise-linear (finite-jerk) table acceleration "
+     "(piecewise-linear): 0 first, increasing, < period; y'' goes linearly between breakpoints "
+     "and back to the first value at period; comma-separated"},
     {"fourier_cos", &C::fourier_cos, D::length, "[-]", "[m]", "profile",
      "cosine coefficients A_1..A_N of y(t) (fourier), comma-separated"},
     {"fourier_sin", &C::fourier_sin, D::length, "[-]", "[m]", "profile",
@@ -54,6 +63,12 @@ const ConfigKey kKeys[] = {
      "object width w (two-region), > 0"},
     {"c_mu", &C::c_mu, D::none, "[-]", "[-]", "friction",
      "friction ratio c_mu = mu_2/mu_1 (two-region), > 1"},
+    {"mu_static", &C::mu_static, D::none, "[-]", "[-]", "law",
+     "static friction coefficient, >= mu and mu_backward (default: mu, static = kinetic); it "
+     "holds a part at rest: stick while |y''| <= mu_static/mu m(x)"},
+    {"mu_backward", &C::mu_backward, D::none, "[-]", "[-]", "law",
+     "kinetic friction coefficient of backward slip (x' < 0), > 0 (default: mu; the forward "
+     "one is mu)"},
     {"mu", &C::mu, D::none, "[-]", "[-]", "scales",
      "low-friction coefficient mu_1; with g and length_scale sets T = sqrt(L/(mu g)), > 0"},
     {"g", &C::g, D::none, "[m/s^2]", "[m/s^2]", "scales", "gravitational acceleration, > 0"},
@@ -83,6 +98,7 @@ std::string_view conversion_factor(Dimension d) {
     case D::time: return "T";
     case D::velocity: return "L/T";
     case D::acceleration: return "mu g";
+    case D::jerk: return "mu g / T";
     case D::none: break;
   }
   return "";

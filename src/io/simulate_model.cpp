@@ -2,6 +2,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/sampled.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -31,7 +32,19 @@ ThreePhaseParameters three_phase_parameters(const SimulateConfig& c) {
 std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem units,
                                            const Scales& scales) {
   const std::string& kind = *c.profile;
-  if (kind == "three-phase") return std::make_unique<ThreePhaseProfile>(three_phase_parameters(c));
+  if (kind == "three-phase") {
+    if (c.jerk)
+      return std::make_unique<JerkLimitedThreePhaseProfile>(JerkLimitedThreePhaseParameters{
+          *c.period, *c.stroke, *c.a2, *c.a3, *c.jerk});
+    return std::make_unique<ThreePhaseProfile>(three_phase_parameters(c));
+  }
+  if (kind == "piecewise-linear") {
+    if (!c.times || c.times->empty())
+      throw InvalidParameter("times", "none",
+                             "must list the breakpoint times when profile = piecewise-linear");
+    return std::make_unique<PiecewisePolynomialProfile>(PiecewisePolynomialProfile::from_breakpoints(
+        *c.times, *c.accelerations, *c.period));
+  }
   if (kind == "quadratic-sequence") {
     if (c.durations->empty())
       throw InvalidParameter("durations", "none",
@@ -51,7 +64,8 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem u
     }
   }
   throw InvalidParameter("profile", kind,
-                         "must be one of: three-phase, quadratic-sequence, fourier, samples");
+                         "must be one of: three-phase, quadratic-sequence, piecewise-linear, "
+                         "fourier, samples");
 }
 
 // The friction map m(x) named by `friction` (eqs. 7-9), from dimensionless values.
@@ -61,6 +75,26 @@ std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c) {
   if (*c.friction == "uniform") return std::make_unique<UniformFriction>(1.0);
   throw InvalidParameter("friction", *c.friction, "must be one of: two-region, uniform");
 }
+
+}  // namespace
+
+CoulombFriction friction_law(const SimulateConfig& c) {
+  const SimulateConfig r = resolve_simulate_config(c);
+  const double mu = require_positive("mu", *r.mu);
+  const double s = r.mu_static.value_or(mu), back = r.mu_backward.value_or(mu);
+  require_positive("mu_static", s);
+  require_positive("mu_backward", back);
+  if (!(s >= mu))
+    throw InvalidParameter("mu_static", s, "must be >= mu = " + format_number(mu) +
+                                               " (the static coefficient is >= the kinetic one)");
+  if (!(s >= back))
+    throw InvalidParameter("mu_backward", back,
+                           "must be <= mu_static = " + format_number(s) +
+                               " (the static coefficient is >= the kinetic one)");
+  return CoulombFriction(s / mu, 1.0, back / mu);
+}
+
+namespace {
 
 void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.periods = require_positive("periods", *c.periods);
@@ -72,6 +106,7 @@ void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.options.theta = *c.theta;
   m.options.output_step = require_non_negative("output_step", *c.output_step);
   m.friction = make_friction(c);
+  m.law = friction_law(c);
   m.profile = make_profile(c, m.units, m.scales);
   m.initial = {require_finite("t0", *c.t0), require_finite("x0", *c.x0),
                require_finite("v0", *c.v0)};
@@ -124,10 +159,17 @@ ProfileModel build_profile_model(const SimulateConfig& config, NonPhysicalProfil
   const bool si = m.units == UnitSystem::si;
   try {
     const SimulateConfig c = si ? to_dimensionless(resolved, m.scales) : resolved;
+    m.law = friction_law(c);
     if (*c.profile == "three-phase") {
       const ThreePhaseParameters p = three_phase_parameters(c);
       validate(p);
       m.three_phase = p;
+      if (c.jerk) {  // case 0 of a jerk-limited profile is refused, naming jerk
+        validate(JerkLimitedThreePhaseParameters{p.period, p.stroke, p.a2, p.a3, *c.jerk});
+        m.jerk = *c.jerk;
+        m.profile = make_profile(c, m.units, m.scales);
+        return m;
+      }
       if (non_physical == NonPhysicalProfile::allow && !solve_three_phase(p).physical) return m;
     }
     m.profile = make_profile(c, m.units, m.scales);

@@ -178,7 +178,7 @@ SlipEvent scan_events(const Shape& arc, double x0, double v0, int sigma, double 
 inline SlipEvent next_event(const PolynomialArc& arc, double x0, double v0, int sigma, double X,
                             double T, double time_scale) {
   if (arc.jerk != 0) return scan_events(arc, x0, v0, sigma, X, T, time_scale);
-  const double vs = sigma * v0, as = sigma * arc.accel;
+  const double vs = sigma * v0 + 0.0, as = sigma * arc.accel;  // + 0.0: never -0.0
   SlipEvent e;
   const double tau_b = std::isfinite(X) ? parabolic_reach(vs, as, sigma * (X - x0)) : kInf;
   const double tau_v = parabolic_stop(vs, as);
@@ -191,7 +191,10 @@ template <class Curved>
 SlipEvent curved_event(const Curved& arc, double x0, double v0, int sigma, double X, double T,
                        double time_scale, bool harmonic) {
   if (arc.drift != 0) return scan_events(arc, x0, v0, sigma, X, T, time_scale);
-  const double C = sigma * (x0 - arc.center), S = sigma * v0 / arc.omega, w = arc.omega;
+  // + 0.0: from rest, sigma x'0 is -0.0 for sigma = -1, and atan2 / the hyperbolic stop read
+  // its sign (a negative stop time: a backward slip from rest on falling friction ran time
+  // backwards; tests/test_friction_field.cpp, staircase).
+  const double C = sigma * (x0 - arc.center), S = sigma * v0 / arc.omega + 0.0, w = arc.omega;
   const double tau_v = harmonic ? harmonic_stop(C, S, w) : hyperbolic_stop(C, S, w);
   double tau_b = kInf;
   if (std::isfinite(X)) {

@@ -50,6 +50,12 @@ struct PositioningAccuracy {
 /// (x_mu is placed at Δx). Throws InvalidParameter on bad inputs.
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
                                          const PositioningOptions& options = {});
+/// The same under a Coulomb law (static >= kinetic, direction-dependent) and for any
+/// piecewise-polynomial profile (finite jerk included): the steady state, Δx, x_stick,min
+/// (s m(x) >= peak) and the stopping runs all take the law.
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const CoulombFriction& law,
+                                         double width, double c_mu,
+                                         const PositioningOptions& options = {});
 
 /// One cell of the Fig. 17 surfaces.
 struct PositioningCell {
@@ -68,7 +74,7 @@ struct PositioningCell {
 };
 
 /// Fig. 17 over the grid a2 x a3 (row-major, a2 outer) at (Δt, Δy, w, c_mu); parallel,
-/// deterministic (SweepOptions as for sweep_accelerations). Cells whose object never comes to
+/// deterministic (SweepOptions as for sweep_accelerations, its law and jerk included). Cells whose object never comes to
 /// rest (e.g. y3'' > y2'': it rattles in the transition region, never reaching the x where
 /// m >= y3'') get Δx_d = NaN; options.stopping.max_periods bounds the search per entry (a few
 /// hundred periods is far beyond the few periods a stop takes).

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,9 @@ struct SweepOptions {
   ProgressCallback progress;    ///< optional
   SteadyStateOptions steady;    ///< per-cell steady-state search
   CoulombFriction law;          ///< the friction law of every cell (the paper's by default)
+  /// sweep_accelerations: the jerk limit of every cell's three-phase profile [-], > 0; +inf:
+  /// the paper's jump accelerations. A cell with no jerk-limited profile is case 0.
+  double jerk = std::numeric_limits<double>::infinity();
 };
 
 /// The number of workers a study runs on for `requested` threads: all the cores available to
@@ -49,7 +53,8 @@ int worker_threads(int requested);
 /// One cell of a (y2'', y3'') study of the three-phase profile.
 struct AccelerationCell {
   double a2 = 0, a3 = 0;                                   ///< y2'', y3'' [-]
-  StickSlipCase predicted = StickSlipCase::non_physical;  ///< a priori (Fig. 8 rules)
+  /// a priori (Fig. 8 rules: jump accelerations under the paper's law, whatever the options)
+  StickSlipCase predicted = StickSlipCase::non_physical;
   StickSlipCase observed = StickSlipCase::non_physical;   ///< a posteriori (steady period)
   double v_bar = 0;    ///< eq. (10) [-]; NaN for case 0
   double f = 0;        ///< eq. (11) [-]; +inf for v̄ = 0, NaN for case 0

@@ -27,11 +27,13 @@ struct SimulateConfig {
   std::optional<std::string> units;   ///< "dimensionless" | "si"
   std::optional<std::string> method;  ///< "exact" | "time-stepping"
   // ---- table profile ----
-  std::optional<std::string> profile;  ///< "three-phase" | "quadratic-sequence" | "fourier" | "samples"
+  std::optional<std::string> profile;  ///< "three-phase" | "quadratic-sequence" | "piecewise-linear" | "fourier" | "samples"
   std::optional<double> period;  ///< Δt [-] | [s] (three-phase, fourier)
   std::optional<double> stroke;  ///< Δy [-] | [m] (three-phase)
   std::optional<double> a2;      ///< y2'' [-] | [m/s^2] (three-phase)
   std::optional<double> a3;      ///< y3'' [-] | [m/s^2] (three-phase)
+  std::optional<double> jerk;    ///< jerk limit j [-] | [m/s^3] (three-phase); unset: jumps
+  std::optional<std::vector<double>> times;  ///< breakpoints [-] | [s] (piecewise-linear)
   std::optional<std::vector<double>> durations;      ///< [-] | [s] (quadratic-sequence)
   std::optional<std::vector<double>> accelerations;  ///< [-] | [m/s^2] (quadratic-sequence)
   std::optional<std::vector<double>> fourier_cos;    ///< A_1..A_N [-] | [m] (fourier)
@@ -43,6 +45,9 @@ struct SimulateConfig {
   std::optional<double> x_mu;   ///< start of the high-friction region [-] | [m]
   std::optional<double> width;  ///< object width w [-] | [m]
   std::optional<double> c_mu;   ///< mu_2 / mu_1 [-]
+  // ---- friction law ----
+  std::optional<double> mu_static;    ///< static coefficient [-], >= mu; unset: mu
+  std::optional<double> mu_backward;  ///< kinetic coefficient of backward slip [-]; unset: mu
   // ---- scales (Sect. 3.2) ----
   std::optional<double> mu;            ///< mu_1 [-]
   std::optional<double> g;             ///< gravity [m/s^2]
@@ -70,7 +75,8 @@ enum class Dimension {
   length,       ///< [m] = L [-]
   time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
   velocity,     ///< [m/s] = L/T [-]
-  acceleration  ///< [m/s^2] = mu g [-]
+  acceleration, ///< [m/s^2] = mu g [-]
+  jerk          ///< [m/s^3] = mu g / T [-]
 };
 
 using TextField = std::optional<std::string> SimulateConfig::*;
@@ -84,7 +90,7 @@ struct ConfigKey {
   Dimension dimension;     ///< SI conversion of the value
   std::string_view unit;     ///< unit in dimensionless runs, e.g. "[-]"
   std::string_view unit_si;  ///< unit in SI runs, e.g. "[m]"
-  std::string_view group;    ///< "run", "profile", "friction", "scales", "initial", "solver", "output"
+  std::string_view group;    ///< "run", "profile", "friction", "law", "scales", "initial", "solver", "output"
   std::string_view help;     ///< meaning, and which profile / friction map uses it
 };
 

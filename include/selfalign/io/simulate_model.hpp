@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/unit_system.hpp"
@@ -26,6 +27,7 @@ struct SimulateModel {
   double periods;                          ///< number of table periods simulated [-]
   std::unique_ptr<TableProfile> profile;   ///< [-]
   std::unique_ptr<FrictionMap> friction;   ///< [-]
+  CoulombFriction law;                     ///< (mu_static, mu, mu_backward) / mu [-]
   ObjectState initial;                     ///< t0, x0, v0 [-]
   SimulationOptions options;               ///< [-]; duration = periods * Δt
 
@@ -42,6 +44,11 @@ struct SimulateModel {
 /// not use are ignored.
 SimulateModel build_simulate_model(const SimulateConfig& config);
 
+/// The run's friction law in model units: CoulombFriction(mu_static/mu, 1, mu_backward/mu),
+/// the unit being mu = mu_1, the forward kinetic coefficient of the low-friction region.
+/// Throws InvalidParameter naming mu_static (< mu) or mu_backward (> mu_static, <= 0).
+CoulombFriction friction_law(const SimulateConfig& config);
+
 /// The table profile of a run and its unit system, for the analyses of the uniform table
 /// (steady state, Floquet multipliers, convergence, sweeps), which take no friction map,
 /// initial state or solver settings: those keys are ignored (not validated).
@@ -53,6 +60,10 @@ struct ProfileModel {
   std::unique_ptr<TableProfile> profile;
   /// The three-phase parameters [-] when profile = three-phase (physical or not), else none.
   std::optional<ThreePhaseParameters> three_phase;
+  /// The three-phase profile's jerk limit [-] when one is given (the profile is then the
+  /// jerk-limited one, and the paper's jump-acceleration formulas do not apply), else none.
+  std::optional<double> jerk;
+  CoulombFriction law;                     ///< (mu_static, mu, mu_backward) / mu [-]
 
   /// Converts results back to the run's unit system.
   OutputUnits output_units() const {

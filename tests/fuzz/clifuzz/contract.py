@@ -45,7 +45,8 @@ NULLABLE = {
                  "friction.x_mu", "friction.width", "friction.c_mu"},
     # docs/cli.md "steady" key table and the case-0 paragraph.
     "steady": {"case_a_priori", "v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
-               "periods", "method", "a2", "a3", "t1", "t2", "t3", "y_ini", "y_dot_ini"},
+               "periods", "method", "a2", "a3", "t1", "t2", "t3", "y_ini", "y_dot_ini", "jerk",
+               "pattern"},
     # docs/cli.md "floquet": matrix, multipliers "null where available is false";
     # slip_slip_lambda2_formula "null otherwise".
     "floquet": {"analytic.matrix", "analytic.multipliers", "saltation.matrix",
