@@ -16,7 +16,9 @@ std::string group_title(std::string_view group) {
 
 std::string_view type_name(const ConfigKey& key) {
   switch (key.field.index()) {
-    case 0: return key.name == "out" || key.name == "summary" || key.name == "samples" ? "FILE"
+    case 0: return key.name == "out" || key.name == "summary" || key.name == "samples" ||
+                           key.name == "field_file"
+                       ? "FILE"
                                                                                        : "TEXT";
     case 1: return "NUMBER";
     default: return "LIST";

@@ -56,7 +56,17 @@ const ConfigKey kKeys[] = {
     {"interpolation", &C::interpolation, D::none, "", "", "profile",
      "interpolation of the samples: constant (exact solver applies) or linear"},
     {"friction", &C::friction, D::none, "", "", "friction",
-     "friction map: two-region (eqs. 7-9) or uniform (mu_1 everywhere)"},
+     "friction map: two-region (eqs. 7-9), uniform (mu_1 everywhere), or field (a measured or "
+     "designed mu(xi)/mu_1 from field_file, averaged over the footprint: eq. 7)"},
+    {"field_file", &C::field_file, D::none, "", "", "friction",
+     "CSV of 'position,level' rows (field): the table's mu/mu_1 over table position, positions "
+     "[-] or, in SI, [m], strictly increasing; levels finite, >= 0 (docs/friction-field.md)"},
+    {"field_interpolation", &C::field_interpolation, D::none, "", "", "friction",
+     "how the field's samples fill the table (field): steps (each level holds to the next "
+     "position) or linear (ramps)"},
+    {"footprint", &C::footprint, D::none, "", "", "friction",
+     "the object's contact (field): uniform (pressure spread over its width w: the field "
+     "averaged over [x - w, x]) or point (m = the field at x)"},
     {"x_mu", &C::x_mu, D::length, "[-]", "[m]", "friction",
      "start x_mu of the high-friction region (two-region)"},
     {"width", &C::width, D::length, "[-]", "[m]", "friction",

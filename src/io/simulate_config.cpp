@@ -90,6 +90,8 @@ SimulateConfig simulate_config_defaults() {
   d.fourier_sin = std::vector<double>{};
   d.interpolation = "constant";
   d.friction = "two-region";
+  d.field_interpolation = "steps";
+  d.footprint = "uniform";
   d.x_mu = 0.5;
   d.width = 0.05;     // w, Sect. 7.2
   d.c_mu = 2.5;       // mu_2 = 2.5 mu_1, Sect. 7.2

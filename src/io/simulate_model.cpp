@@ -1,6 +1,7 @@
 #include "selfalign/io/simulate_model.hpp"
 
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
@@ -68,12 +69,33 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem u
                          "fourier, samples");
 }
 
+// The table's field from field_file, positions converted to [-] in SI runs (m -> x/L).
+FrictionField load_field(const SimulateConfig& c, UnitSystem units, const Scales& scales) {
+  if (!c.field_file)
+    throw InvalidParameter("field_file", "none",
+                           "must name a CSV file of 'position,level' rows when friction = field");
+  const FrictionField field = FrictionField::from_csv(*c.field_file, *c.field_interpolation);
+  if (units == UnitSystem::dimensionless) return field;
+  std::vector<FieldNode> nodes(field.nodes().begin(), field.nodes().end());
+  for (FieldNode& n : nodes) n.position = scales.length_from_si(n.position);
+  return FrictionField(std::move(nodes));
+}
+
+Footprint make_footprint(const SimulateConfig& c) {
+  if (*c.footprint == "uniform") return UniformFootprint{require_positive_moderate("width", *c.width)};
+  if (*c.footprint == "point") return PointFootprint{};
+  throw InvalidParameter("footprint", *c.footprint, "must be one of: uniform, point");
+}
+
 // The friction map m(x) named by `friction` (eqs. 7-9), from dimensionless values.
-std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c) {
+std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c, UnitSystem units,
+                                           const Scales& scales) {
   if (*c.friction == "two-region")
     return std::make_unique<TwoRegionFriction>(*c.x_mu, *c.width, *c.c_mu);
   if (*c.friction == "uniform") return std::make_unique<UniformFriction>(1.0);
-  throw InvalidParameter("friction", *c.friction, "must be one of: two-region, uniform");
+  if (*c.friction == "field")
+    return std::make_unique<FieldFriction>(load_field(c, units, scales), make_footprint(c));
+  throw InvalidParameter("friction", *c.friction, "must be one of: two-region, uniform, field");
 }
 
 }  // namespace
@@ -105,7 +127,7 @@ void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.options.step = *c.step;
   m.options.theta = *c.theta;
   m.options.output_step = require_non_negative("output_step", *c.output_step);
-  m.friction = make_friction(c);
+  m.friction = make_friction(c, m.units, m.scales);
   m.law = friction_law(c);
   m.profile = make_profile(c, m.units, m.scales);
   m.initial = {require_finite("t0", *c.t0), require_finite("x0", *c.x0),

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "selfalign/profiles/fourier.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
@@ -53,6 +54,16 @@ json friction_json(const FrictionMap& f, const OutputUnits& u) {
             {"x_mu", u.length(two->x_mu())},    // [-] | [m]
             {"width", u.length(two->width())},  // [-] | [m]
             {"c_mu", two->c_mu()}};             // [-]
+  if (const auto* field = dynamic_cast<const FieldFriction*>(&f)) {
+    const auto* uniform = std::get_if<UniformFootprint>(&field->footprint());
+    return {{"kind", "field"},
+            {"x_mu", nullptr},
+            {"width", uniform ? json(u.length(uniform->width)) : json(nullptr)},
+            {"c_mu", nullptr},
+            {"footprint", uniform ? "uniform" : "point"},
+            {"field_nodes", field->field().nodes().size()},
+            {"exact", field->piecewise_affine() != nullptr}};
+  }
   return {{"kind", "uniform"}, {"x_mu", nullptr}, {"width", nullptr}, {"c_mu", nullptr}};
 }
 
@@ -82,6 +93,9 @@ json simulate_summary_json(const SimulateModel& model, const SimulationResult& r
   j["method"] = to_string(model.options.method);
   j["profile"] = profile_json(*model.profile, u);
   j["friction"] = friction_json(*model.friction, u);
+  j["law"] = {{"static", model.law.static_coefficient()},
+              {"kinetic_forward", model.law.kinetic_forward()},
+              {"kinetic_backward", model.law.kinetic_backward()}};  // ratios to mu [-]
   j["initial"] = state_json(model.initial, u);
   j["final"] = state_json(result.final_state, u);
   j["periods"] = model.periods;

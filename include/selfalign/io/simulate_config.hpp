@@ -41,7 +41,10 @@ struct SimulateConfig {
   std::optional<std::string> samples;        ///< CSV of (t, y'') (samples)
   std::optional<std::string> interpolation;  ///< "constant" | "linear" (samples)
   // ---- friction map ----
-  std::optional<std::string> friction;  ///< "two-region" | "uniform"
+  std::optional<std::string> friction;  ///< "two-region" | "uniform" | "field"
+  std::optional<std::string> field_file;           ///< CSV of (position, level) (field)
+  std::optional<std::string> field_interpolation;  ///< "steps" | "linear" (field)
+  std::optional<std::string> footprint;            ///< "uniform" (width w) | "point" (field)
   std::optional<double> x_mu;   ///< start of the high-friction region [-] | [m]
   std::optional<double> width;  ///< object width w [-] | [m]
   std::optional<double> c_mu;   ///< mu_2 / mu_1 [-]

@@ -1,0 +1,84 @@
+// CLI tests for the friction law, the jerk limit and the friction field: bad inputs exit 2 with
+// one line naming the parameter and its allowed range and write nothing; good ones reach the
+// reports.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_sandbox.hpp"
+
+using selfalign::testing::CliSandbox;
+using selfalign::testing::expect_clean_failure;
+
+namespace {
+std::string write(const CliSandbox& box, const std::string& name, const std::string& text) {
+  const std::string path = box.file(name);  // outside the work directory, which must stay empty
+  std::ofstream(path) << text;
+  return path;
+}
+}  // namespace
+
+TEST(CliLaw, StaticBelowKineticIsRefused) {
+  CliSandbox box;
+  expect_clean_failure(box, box.run({"steady", "--mu-static", "0.2", "--out", "s.json"}),
+                       {"mu_static = 0.2", "must be >= mu = 0.3"});
+  expect_clean_failure(box, box.run({"simulate", "--mu-backward", "0.5", "--out", "t.csv"}),
+                       {"mu_backward = 0.5", "<= mu_static"});
+}
+
+TEST(CliLaw, NegativeOrTooLowJerkIsRefused) {
+  CliSandbox box;
+  expect_clean_failure(box, box.run({"steady", "--jerk", "-1", "--out", "s.json"}),
+                       {"jerk = -1", "must be > 0"});
+  expect_clean_failure(box, box.run({"floquet", "--jerk", "1", "--out", "f.json"}),
+                       {"jerk = 1", "need jerk >= 10.03"});
+  expect_clean_failure(box, box.run({"simulate", "--jerk", "0", "--out", "t.csv"}),
+                       {"jerk = 0", "must be > 0"});
+}
+
+TEST(CliLaw, BadFrictionFieldFilesAreRefusedNamingFileAndLine) {
+  CliSandbox box;
+  const std::string nan = write(box, "nan.csv", "position,level\n0.5,1\n0.6,nan\n");
+  const std::string neg = write(box, "neg.csv", "position,level\n0.5,1\n0.6,-2\n");
+  const std::string uns = write(box, "uns.csv", "position,level\n0.6,1\n0.5,2\n");
+  expect_clean_failure(
+      box, box.run({"simulate", "--friction", "field", "--field-file", nan, "--out", "t.csv"}),
+      {"nan.csv:3 level = nan", "finite"});
+  expect_clean_failure(
+      box, box.run({"simulate", "--friction", "field", "--field-file", neg, "--out", "s.csv"}),
+      {"neg.csv:3 level = -2", ">= 0"});
+  expect_clean_failure(
+      box, box.run({"simulate", "--friction", "field", "--field-file", uns, "--summary", "s.json"}),
+      {"uns.csv:3 position = 0.5", "strictly increasing"});
+}
+
+// A field file equal to the paper's step (1 before x_mu = 0.5, 2.5 after) under a uniform
+// footprint of width w is the two-region table: the same final state to the last digits.
+TEST(CliLaw, StepFieldUnderAUniformFootprintIsTheTwoRegionTable) {
+  CliSandbox box;
+  const std::string step = write(box, "step.csv", "position,level\n0.0,1\n0.5,2.5\n");
+  const auto a = box.run({"simulate", "--friction", "field", "--field-file", step, "--summary",
+                          "-", "--periods", "30"});
+  const auto b = box.run({"simulate", "--summary", "-", "--periods", "30"});
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+  EXPECT_NEAR(ja["final"]["x"].get<double>(), jb["final"]["x"].get<double>(), 1e-12);
+  EXPECT_EQ(ja["friction"]["kind"], "field");
+}
+
+TEST(CliLaw, SteadyReportsTheLawThePatternAndTheJerk) {
+  CliSandbox box;
+  const auto r = box.run({"steady", "--json", "--mu-static", "0.4", "--jerk", "50"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["law"]["static"].get<double>(), 0.4 / 0.3, 1e-15);
+  EXPECT_EQ(j["jerk"].get<double>(), 50.0);
+  EXPECT_EQ(j["profile"], "jerk-limited-three-phase");
+  EXPECT_TRUE(j["case_a_priori"].is_null());
+  EXPECT_FALSE(j["pattern"].get<std::string>().empty());
+}
