@@ -3,6 +3,9 @@
 // reports.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -81,4 +84,32 @@ TEST(CliLaw, SteadyReportsTheLawThePatternAndTheJerk) {
   EXPECT_EQ(j["profile"], "jerk-limited-three-phase");
   EXPECT_TRUE(j["case_a_priori"].is_null());
   EXPECT_FALSE(j["pattern"].get<std::string>().empty());
+}
+
+// design --jerk-max: the recommended motion is jerk-limited. Checked on the profile CSV the
+// controller gets (an independent reading): |Δy''/Δt| between samples never exceeds the limit,
+// and reaches it on the ramps (to the sampling's resolution).
+TEST(CliLaw, DesignUnderAJerkLimitRecommendsARampedProfile) {
+  CliSandbox box;
+  const std::string csv = box.file("profile.csv");
+  const auto r = box.run({"design", "--json", "--jerk-max", "2000", "--profile-csv", csv,
+                          "--sample-rate", "20000"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["profile"]["kind"], "jerk-limited-three-phase");
+  EXPECT_EQ(j["profile"]["jerk_m_per_s3"].get<double>(), 2000.0);
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header
+  double t0 = 0, a0 = 0, peak = 0;
+  bool first = true;
+  while (std::getline(in, line)) {
+    double t, y, yd, ydd;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf", &t, &y, &yd, &ydd), 4) << line;
+    if (!first) peak = std::max(peak, std::abs(ydd - a0) / (t - t0));
+    first = false;
+    t0 = t, a0 = ydd;
+  }
+  EXPECT_LE(peak, 2000.0 * (1 + 1e-6));
+  EXPECT_GE(peak, 2000.0 * 0.99);
 }

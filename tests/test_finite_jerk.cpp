@@ -17,6 +17,8 @@
 #include "selfalign/analysis/floquet.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/analysis/stopping.hpp"
+#include "selfalign/simulate/simulate.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
@@ -142,4 +144,28 @@ TEST(FiniteJerk, SaltationAndFiniteDifferencesAgreeForEveryPatternFound) {
         }
   RecordProperty("patterns", testing::PrintToString(patterns));
   EXPECT_GE(patterns.size(), 4u) << testing::PrintToString(patterns);
+}
+
+// Under a jerk limit there is no closed-form stick-position map (eq. 59), but the rest
+// positions still rise to x_stick,min: the run reports an observed (unproven) accumulation
+// there, and time-stepping (a second method) ends at the same place.
+TEST(FiniteJerk, StoppingObservesTheAccumulationAtTheStickPositionMinimum) {
+  const JerkLimitedThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3, 50.0});
+  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const StoppingRun run = stopping_run(profile, friction, CoulombFriction{}, {0, 0, 0});
+  ASSERT_EQ(run.kind, StopKind::accumulation);
+  EXPECT_FALSE(run.accumulation_proven);
+  // eq. (41): x_mu + w (max|y''| - 1)/(c_mu - 1), max|y''| = 2.3 (the plateau is reached).
+  EXPECT_NEAR(run.x_stick_min, 0.5 + 0.05 * 1.3 / 1.5, 1e-15);
+  EXPECT_EQ(run.end_position, run.x_stick_min);
+  const auto& x = run.stick_positions;
+  ASSERT_GE(x.size(), 4u);
+  EXPECT_NEAR(x.back(), run.x_stick_min, 1e-9 * (run.x_stick_min - 0.5));
+  SimulationOptions so;
+  so.method = Method::time_stepping;
+  so.step = 1e-5;
+  so.duration = 60;
+  so.record = false;
+  const SimulationResult ts = simulate(profile, friction, CoulombFriction{}, {0, 0, 0}, so);
+  EXPECT_NEAR(ts.final_state.x, run.x_stick_min, 1e-3);  // O(h) per period, summed
 }

@@ -33,7 +33,8 @@ struct DesignFlags {
 // One period of the recommended profile, SI: t [s], y [m], y' [m/s], y'' [m/s^2].
 std::string profile_csv(const DesignRequest& q, const DesignResult& d, double rate) {
   const Scales sc(q.width, q.mu, q.gravity);
-  const ThreePhaseProfile profile(d.dimensionless);
+  const std::unique_ptr<TableProfile> recommended = recommended_profile(d);
+  const TableProfile& profile = *recommended;
   const long long n = std::max(2LL, std::llround(d.period * rate));
   std::string csv = "t,y,y_dot,y_ddot\n";
   for (long long i = 0; i <= n; ++i) {
@@ -51,7 +52,9 @@ json design_json(const DesignRequest& q, const DesignResult& d) {
   j["units"] = "si";
   j["feasible"] = d.feasible;
   j["message"] = d.message;
-  j["profile"] = {{"kind", "three-phase"}, {"period_s", d.period}, {"frequency_hz", 1 / d.period},
+  j["profile"] = {{"kind", std::isinf(d.jerk) ? "three-phase" : "jerk-limited-three-phase"},
+                  {"jerk_m_per_s3", std::isinf(d.jerk) ? json(nullptr) : json(d.jerk)},
+                  {"period_s", d.period}, {"frequency_hz", 1 / d.period},
                   {"stroke_m", d.stroke}, {"a2_m_per_s2", d.a2}, {"a3_m_per_s2", d.a3},
                   {"t1_s", d.t1}, {"t2_s", d.t2}, {"t3_s", d.t3}, {"y_ini_m", d.y_ini},
                   {"y_dot_ini_m_per_s", d.y_dot_ini}, {"velocity_peak_m_per_s", d.velocity_peak}};
@@ -125,6 +128,16 @@ void add_design_command(CLI::App& app) {
   num("--frequency-max", q.frequency_max, "highest table frequency [Hz].");
   num("--velocity-max", q.velocity_max, "table velocity limit [m/s], > 0.");
   num("--acceleration-max", q.acceleration_max, "table acceleration limit [m/s^2], > 0.");
+  sub->add_option("--jerk-max", q.jerk_max,
+                  "table jerk limit [m/s^3], > 0: each switch becomes a ramp at this jerk "
+                  "(jerk-limited three-phase profile). Default: none (jump accelerations)")
+      ->group("Request");
+  sub->add_option("--mu-static", q.mu_static,
+                  "static friction coefficient [-], >= mu. Default: mu")
+      ->group("Request");
+  sub->add_option("--mu-backward", q.mu_backward,
+                  "kinetic friction coefficient of backward slip [-], <= mu-static. Default: mu")
+      ->group("Request");
   num("--tolerance", q.tolerance,
       "allowed positioning error Δx_d [m]; 0 requires accumulation (Δx_d = 0).");
   sub->add_option("--acceleration-grid", q.acceleration_grid,

@@ -65,6 +65,18 @@ struct StopWatch final : ArcSink {
   }
 };
 
+// Rest positions rising to x_stick,min with shrinking steps (the last three), the latest within
+// kObservedAccumulationTol of the span x_stick,min - x_mu.
+bool observed_accumulation(const std::vector<double>& x, double x_stick_min, double x_mu) {
+  const std::size_t n = x.size();
+  if (n < 4 || !std::isfinite(x_stick_min)) return false;
+  const double span = std::max(x_stick_min - x_mu, 0.0) + 1e-300;
+  for (std::size_t i = n - 3; i < n; ++i)
+    if (!(x[i] >= x[i - 1]) || !(x[i] - x[i - 1] <= x[i - 1] - x[i - 2] || x[i] == x[i - 1]))
+      return false;
+  return std::abs(x_stick_min - x[n - 1]) <= kObservedAccumulationTol * span;
+}
+
 }  // namespace
 
 StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
@@ -145,7 +157,12 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
       r.process_time = watch.last_stop_time;
     } else if (map && map->proves_accumulation_from(obj.x)) {  // eqs. (59), (60)
       r.kind = StopKind::accumulation;
+      r.accumulation_proven = true;
       r.end_position = map->fixed_point();
+      r.process_time = std::numeric_limits<double>::infinity();
+    } else if (!map && observed_accumulation(r.stick_positions, r.x_stick_min, x_mu)) {
+      r.kind = StopKind::accumulation;
+      r.end_position = r.x_stick_min;
       r.process_time = std::numeric_limits<double>::infinity();
     }
   }

@@ -9,6 +9,7 @@
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/units.hpp"
 
 namespace selfalign {
@@ -28,6 +29,9 @@ void validate(const DesignRequest& q) {
   require_positive_moderate("frequency_max", q.frequency_max);
   require_positive_moderate("velocity_max", q.velocity_max);
   require_positive_moderate("acceleration_max", q.acceleration_max);
+  if (!(q.jerk_max > 0) || std::isnan(q.jerk_max))
+    throw InvalidParameter("jerk_max", q.jerk_max, "must be > 0 [m/s^3] (+inf: jump accelerations)");
+  friction_law(q);
   require_non_negative("tolerance", q.tolerance);
   require_moderate("tolerance", q.tolerance);
   if (q.width < 1e-9 * q.distance)  // TwoRegionFriction's resolution bound at x_mu ~ distance
@@ -44,9 +48,38 @@ void validate(const DesignRequest& q) {
     throw InvalidParameter("entries", q.entries, "must be in [2, 1000]");
 }
 
+CoulombFriction friction_law(const DesignRequest& q) {
+  const double s = std::isnan(q.mu_static) ? q.mu : q.mu_static;
+  const double back = std::isnan(q.mu_backward) ? q.mu : q.mu_backward;
+  require_positive_moderate("mu_static", s);
+  require_positive_moderate("mu_backward", back);
+  if (!(s >= q.mu))
+    throw InvalidParameter("mu_static", s, "must be >= mu = " + format_number(q.mu) +
+                                               " (the static coefficient is >= the kinetic one)");
+  if (!(s >= back))
+    throw InvalidParameter("mu_backward", back, "must be <= mu_static = " + format_number(s) +
+                                                    " (the static coefficient is >= the kinetic one)");
+  return CoulombFriction(s / q.mu, 1.0, back / q.mu);
+}
+
+std::unique_ptr<TableProfile> recommended_profile(const DesignResult& r) {
+  if (!r.feasible) throw InvalidParameter("result", "infeasible", "has no recommended profile");
+  const ThreePhaseParameters& p = r.dimensionless;
+  if (std::isinf(r.jerk_dimensionless)) return std::make_unique<ThreePhaseProfile>(p);
+  return std::make_unique<JerkLimitedThreePhaseProfile>(
+      JerkLimitedThreePhaseParameters{p.period, p.stroke, p.a2, p.a3, r.jerk_dimensionless});
+}
+
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A candidate's profile: the paper's jump accelerations, or ramps at the jerk limit.
+std::unique_ptr<TableProfile> candidate_profile(const ThreePhaseParameters& p, double jerk) {
+  if (std::isinf(jerk)) return std::make_unique<ThreePhaseProfile>(p);
+  return std::make_unique<JerkLimitedThreePhaseProfile>(
+      JerkLimitedThreePhaseParameters{p.period, p.stroke, p.a2, p.a3, jerk});
+}
 constexpr double kFraction = 0.999;  // "arrived" for accumulation: p = 0.999 (Sect. 7.3)
 
 struct Candidate {
@@ -72,6 +105,8 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
   const double v_max = sc.velocity_from_si(q.velocity_max);
   const double distance = sc.length_from_si(q.distance);
   const double tolerance = sc.length_from_si(q.tolerance);
+  const double jerk = sc.acceleration_from_si(q.jerk_max) * sc.time();  // [m/s^3] -> [-]
+  const CoulombFriction law = friction_law(q);
   DesignResult r;
   const double a_hi = std::min(q.c_mu, a_max);
   if (a_hi <= 1) {
@@ -94,13 +129,26 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
       for (double a2 : a2s)
         for (double a3 : a3s) {
           const ThreePhaseParameters p{period, stroke, a2, a3};
-          const ThreePhaseSolution s = solve_three_phase(p);
-          if (!s.physical) {
-            ++non_physical;
-            continue;
+          double yd_ini = 0, D = 0;  // y' on the hold (its largest) and the swing (eq. 65)
+          if (std::isinf(jerk)) {
+            const ThreePhaseSolution s = solve_three_phase(p);
+            if (!s.physical) {
+              ++non_physical;
+              continue;
+            }
+            yd_ini = s.yd_ini;
+            D = a2 * (s.t2 - s.t1);
+          } else {
+            const JerkLimitedThreePhaseSolution s =
+                solve_jerk_limited_three_phase({period, stroke, a2, a3, jerk});
+            if (!s.physical) {
+              ++non_physical;
+              continue;
+            }
+            yd_ini = s.yd_ini;
+            D = s.velocity_swing;
           }
-          const double D = a2 * (s.t2 - s.t1);  // velocity swing y'_max - y'_min (eq. 65)
-          if (std::max(s.yd_ini, D - s.yd_ini) > v_max) {
+          if (std::max(yd_ini, D - yd_ini) > v_max) {
             ++too_fast;
             continue;
           }
@@ -110,8 +158,8 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
   r.candidates = static_cast<int>(cands.size());
   if (cands.empty()) {
     r.message = "no three-phase profile fits the limits: " + std::to_string(non_physical) +
-                " candidates cannot reach the stroke (stroke_max, frequency_min and "
-                "acceleration_max bind: case 0), " + std::to_string(too_fast) +
+                " candidates cannot reach the stroke (stroke_max, frequency_min, "
+                "acceleration_max and jerk_max bind: case 0), " + std::to_string(too_fast) +
                 " exceed velocity_max = " + format_number(q.velocity_max) + " m/s";
     return r;
   }
@@ -124,8 +172,8 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
   detail::parallel_cells(cands.size(), sweep, [&](std::size_t i) {
     Candidate& c = cands[i];
     c.evaluated = true;
-    const ThreePhaseProfile profile(c.p);
-    const PositioningAccuracy acc = positioning_accuracy(profile, 1.0, q.c_mu, po);
+    const std::unique_ptr<TableProfile> profile = candidate_profile(c.p, jerk);
+    const PositioningAccuracy acc = positioning_accuracy(*profile, law, 1.0, q.c_mu, po);
     c.motion_case = acc.steady.motion_case;
     c.v_bar = acc.steady.v_bar;
     c.reaches = acc.reaches && acc.all_stopped;
@@ -172,26 +220,41 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
   }
 
   // The recommended design, and its exact stopping run from rest.
-  const ThreePhaseProfile profile(best->p);
+  const std::unique_ptr<TableProfile> profile = candidate_profile(best->p, jerk);
   const TwoRegionFriction friction(best->x_mu, 1.0, q.c_mu);
   StoppingOptions so;
   so.fractions = {kFraction};
-  const StoppingRun run = stopping_run(profile, friction, {0, 0, 0}, so);
-  const ThreePhaseSolution& s = profile.solution();
+  const StoppingRun run = stopping_run(*profile, friction, law, {0, 0, 0}, so);
+  // Switch times: the jump profile's t1, t2, t3; under a jerk limit the starts of the ramps
+  // down to -y2'' and up to +y3'', and the period.
+  double t1 = 0, t2 = 0, t3 = best->p.period, y_ini = 0, yd_ini = 0, swing = 0;
+  if (std::isinf(jerk)) {
+    const ThreePhaseSolution s = solve_three_phase(best->p);
+    t1 = s.t1, t2 = s.t2, t3 = s.t3, y_ini = s.y_ini, yd_ini = s.yd_ini;
+    swing = best->p.a2 * (s.t2 - s.t1);
+  } else {
+    const JerkLimitedThreePhaseSolution s = solve_jerk_limited_three_phase(
+        {best->p.period, best->p.stroke, best->p.a2, best->p.a3, jerk});
+    t1 = s.hold0;
+    t2 = t1 + s.ramp_down + s.hold2;
+    y_ini = profile->state(0).y, yd_ini = s.yd_ini, swing = s.velocity_swing;
+  }
   r.feasible = run.kind != StopKind::not_stopped;
   r.message = r.feasible ? "ok" : "the recommended profile did not stop from rest";
   r.dimensionless = best->p;
+  r.jerk_dimensionless = jerk;
+  r.jerk = q.jerk_max;
   r.x_mu_dimensionless = best->x_mu;
   r.period = sc.time_to_si(best->p.period);
   r.stroke = sc.length_to_si(best->p.stroke);
   r.a2 = sc.acceleration_to_si(best->p.a2);
   r.a3 = sc.acceleration_to_si(best->p.a3);
-  r.t1 = sc.time_to_si(s.t1);
-  r.t2 = sc.time_to_si(s.t2);
-  r.t3 = sc.time_to_si(s.t3);
-  r.y_ini = sc.length_to_si(s.y_ini);
-  r.y_dot_ini = sc.velocity_to_si(s.yd_ini);
-  r.velocity_peak = sc.velocity_to_si(std::max(s.yd_ini, best->p.a2 * (s.t2 - s.t1) - s.yd_ini));
+  r.t1 = sc.time_to_si(t1);
+  r.t2 = sc.time_to_si(t2);
+  r.t3 = sc.time_to_si(t3);
+  r.y_ini = sc.length_to_si(y_ini);
+  r.y_dot_ini = sc.velocity_to_si(yd_ini);
+  r.velocity_peak = sc.velocity_to_si(std::max(yd_ini, swing - yd_ini));
   r.motion_case = best->motion_case;
   r.v_bar = sc.velocity_to_si(best->v_bar);
   r.x_mu = sc.length_to_si(best->x_mu);

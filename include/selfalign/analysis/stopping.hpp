@@ -22,6 +22,11 @@
 
 namespace selfalign {
 
+/// Observed accumulation: rest positions within this fraction of (x_stick,min - x_mu) of
+/// x_stick,min, approached with shrinking steps, count as accumulated there (far above the
+/// rounding of positions, 1e-16, far below any tolerance a process asks of a stop).
+inline constexpr double kObservedAccumulationTol = 1e-9;
+
 enum class StopKind {
   permanent_stick,  ///< stuck for good at end_position (eq. 40)
   accumulation,     ///< stick positions accumulate at end_position = x_stick,min (eq. 60)
@@ -46,6 +51,11 @@ struct StoppingRun {
   double process_time = 0;
   double entry_time = 0;     ///< first time x >= x_mu [-]; NaN if never
   double x_stick_min = 0;    ///< eq. (41) [-]
+  /// For accumulation: true when proven by the map of eqs. (59), (60) (the two-region table,
+  /// a three-phase profile, the paper's law); false when observed: the rest positions rose to
+  /// within kObservedAccumulationTol of x_stick,min, each gap smaller than the one before
+  /// (finite jerk, static > kinetic, other fields: no closed-form map exists).
+  bool accumulation_proven = false;
   /// Successive positions where the object came to rest at x >= x_mu (x_1, x_2, ...) [-].
   std::vector<double> stick_positions;
   /// For each options.fractions[k]: the time from which x >= x_mu + p (x_stick,min - x_mu)

@@ -17,7 +17,11 @@
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/stopping.hpp"
+#include <limits>
+#include <memory>
+
 #include "selfalign/analysis/sweep.hpp"
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
 namespace selfalign {
@@ -35,6 +39,13 @@ struct DesignRequest {
   double frequency_max = 50;       ///< highest table frequency [Hz], >= frequency_min
   double velocity_max = 0.2;       ///< |y'~| limit [m/s], > 0
   double acceleration_max = 10;    ///< |y''~| limit [m/s^2], > 0
+  /// Table jerk limit [m/s^3], > 0: every switch of the profile becomes a ramp at this jerk
+  /// (the jerk-limited three-phase profile); +inf: the paper's jump accelerations.
+  double jerk_max = std::numeric_limits<double>::infinity();
+  /// Static friction coefficient [-], >= mu and mu_backward; NaN: equal to mu.
+  double mu_static = std::numeric_limits<double>::quiet_NaN();
+  /// Kinetic coefficient of backward slip [-], > 0; NaN: equal to mu.
+  double mu_backward = std::numeric_limits<double>::quiet_NaN();
   double tolerance = 0;            ///< allowed Δx_d~ [m]; 0: require accumulation (Δx_d = 0)
   int acceleration_grid = 24;      ///< candidates per acceleration axis, in [2, 200]
   int period_grid = 6;             ///< candidate periods, in [1, 100]
@@ -45,6 +56,10 @@ struct DesignRequest {
 /// Throws InvalidParameter naming the first field out of range (positive scales in [1e-50,
 /// 1e50]).
 void validate(const DesignRequest& request);
+
+/// The request's friction law in model units (ratios to mu). Throws InvalidParameter naming
+/// mu_static or mu_backward.
+CoulombFriction friction_law(const DesignRequest& request);
 
 struct DesignResult {
   bool feasible = false;
@@ -66,10 +81,17 @@ struct DesignResult {
   StopKind stop = StopKind::not_stopped;
   int candidates = 0, feasible_candidates = 0;
   ThreePhaseParameters dimensionless{};  ///< the same profile in model units (L = width)
+  /// Its jerk limit in model units (+inf: jump accelerations) and in SI [m/s^3].
+  double jerk_dimensionless = std::numeric_limits<double>::infinity();
+  double jerk = std::numeric_limits<double>::infinity();
   double x_mu_dimensionless = 0;
 };
 
 /// Runs the search. Infeasible requests return feasible = false with a message.
 DesignResult design_process(const DesignRequest& request, const SweepOptions& sweep = {});
+
+/// The recommended profile of a feasible result, in model units: a ThreePhaseProfile, or the
+/// JerkLimitedThreePhaseProfile under a jerk limit.
+std::unique_ptr<TableProfile> recommended_profile(const DesignResult& result);
 
 }  // namespace selfalign
