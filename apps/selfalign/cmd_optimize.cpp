@@ -32,6 +32,7 @@ struct OptimizeFlags {
   OptimizeOptions options;
   bool as_json = false, quiet = false;
   std::optional<std::string> out;
+  double static_ratio = 1, backward_ratio = 1;  // the law, relative to the forward kinetic
 };
 
 json result_json(const OptimizationResult& r) {
@@ -42,6 +43,7 @@ json result_json(const OptimizationResult& r) {
           {"parameters", r.parameters},
           {"max_velocity", r.max_velocity},
           {"max_acceleration", r.max_acceleration},
+          {"max_jerk", number_or_null(r.max_jerk)},
           {"evaluations", r.evaluations},
           {"starts", r.starts},
           {"message", r.message}};
@@ -51,6 +53,10 @@ json result_json(const OptimizationResult& r) {
 InvalidParameter with_flag_names(const InvalidParameter& e) {
   static const std::pair<const char*, const char*> kFlags[] = {
       {"max_velocity", "velocity-max"}, {"max_acceleration", "acceleration-max"},
+      {"max_jerk", "jerk-max"}, {"mu_static", "static-ratio"},
+      {"mu_kinetic", "static-ratio"}, {"mu_kinetic_backward", "backward-ratio"},
+      {"mu_static, mu_kinetic", "static-ratio"},
+      {"mu_static, mu_kinetic_backward", "backward-ratio"},
       {"max_evaluations", "max-evaluations"}};
   for (const auto& [library, flag] : kFlags)
     if (e.name() == library) return InvalidParameter(flag, e.value(), e.allowed());
@@ -60,6 +66,12 @@ InvalidParameter with_flag_names(const InvalidParameter& e) {
 void run_optimize(OptimizeFlags& f) {
   try {
     validate(f.limits);
+    if (!(f.static_ratio >= 1 && f.static_ratio >= f.backward_ratio))
+      throw InvalidParameter("static-ratio", f.static_ratio,
+                             "must be >= 1 and >= backward-ratio = " +
+                                 format_number(f.backward_ratio) +
+                                 " (the static coefficient is >= the kinetic ones)");
+    f.options.law = CoulombFriction(f.static_ratio, 1.0, f.backward_ratio);
     validate(f.options);
   } catch (const InvalidParameter& e) {
     throw with_flag_names(e);
@@ -83,7 +95,9 @@ void run_optimize(OptimizeFlags& f) {
                   {{"period", f.limits.period},
                    {"stroke", f.limits.stroke},
                    {"max_velocity", f.limits.max_velocity},
-                   {"max_acceleration", f.limits.max_acceleration}}},
+                   {"max_acceleration", f.limits.max_acceleration},
+                   {"max_jerk", number_or_null(f.limits.max_jerk)}}},
+                 {"law", law_json(f.options.law)},
                  {"results", json::array()}};
   TextTable table;
   for (const OptimizationResult& r : results) {
@@ -109,6 +123,15 @@ void add_optimize_command(CLI::App& app) {
   sub->add_option("--velocity-max", f->limits.max_velocity, "|y'| limit [-]. Default: 3.2");
   sub->add_option("--acceleration-max", f->limits.max_acceleration,
                   "|y''| limit [-]. Default: 1275");
+  sub->add_option("--jerk-max", f->limits.max_jerk,
+                  "jerk limit |d3y/dt3| [-], > 0: the three-phase family uses ramps at this jerk, the "
+                  "piecewise-constant one (jumps) is infeasible, a Fourier optimum is checked. "
+                  "Default: none");
+  sub->add_option("--static-ratio", f->static_ratio,
+                  "static friction coefficient / mu_1 (the forward kinetic one) [-], >= 1 and "
+                  ">= --backward-ratio. Default: 1");
+  sub->add_option("--backward-ratio", f->backward_ratio,
+                  "kinetic coefficient of backward slip / mu_1 [-], > 0. Default: 1");
   sub->add_option("--order", f->options.order, "Fourier order N, in [1, 100]. Default: 12");
   sub->add_option("--segments", f->options.segments, "K of piecewise-constant, in [2, 64]. Default: 4");
   sub->add_option("--starts", f->options.starts, "multi-starts, in [1, 1000]. Default: 8");

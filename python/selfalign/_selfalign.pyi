@@ -118,6 +118,49 @@ class TwoRegionFriction(FrictionMap):
     @property
     def b2(self) -> float: ...
 
+class FrictionField:
+    def __init__(self, position: ArrayLike, left: ArrayLike, right: ArrayLike) -> None: ...
+    @staticmethod
+    def steps(positions: ArrayLike, levels: ArrayLike) -> FrictionField: ...
+    @staticmethod
+    def ramps(positions: ArrayLike, levels: ArrayLike) -> FrictionField: ...
+    @staticmethod
+    def from_csv(
+        path: Union[str, os.PathLike[str]], interpolation: str = "steps"
+    ) -> FrictionField: ...
+    def nodes(self) -> dict[str, FloatArray]: ...
+    @overload
+    def __call__(self, xi: float) -> float: ...
+    @overload
+    def __call__(self, xi: ArrayLike) -> FloatArray: ...
+    def integral(self, a: float, b: float) -> float: ...
+    @property
+    def piecewise_constant(self) -> bool: ...
+    @property
+    def min_level(self) -> float: ...
+    @property
+    def max_level(self) -> float: ...
+    def __eq__(self, other: object) -> bool: ...
+
+class PointFootprint:
+    def __init__(self) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+
+class UniformFootprint:
+    def __init__(self, width: float) -> None: ...
+    @property
+    def width(self) -> float: ...
+    def __eq__(self, other: object) -> bool: ...
+
+Footprint: TypeAlias = Union[PointFootprint, UniformFootprint, float]
+
+class FieldFriction(FrictionMap):
+    def __init__(self, field: FrictionField, footprint: Footprint) -> None: ...
+    @property
+    def field(self) -> FrictionField: ...
+    @property
+    def footprint(self) -> Union[PointFootprint, UniformFootprint]: ...
+
 # ---- profiles --------------------------------------------------------------------------------
 
 class TableState:
@@ -255,6 +298,67 @@ class ThreePhaseProfile(TableProfile):
     @property
     def solution(self) -> ThreePhaseSolution: ...
 
+class JerkLimitedCase0(enum.IntEnum):
+    none = 0
+    accelerations_too_low = 1
+    ramps_exceed_period = 2
+    stroke_too_large = 3
+    stroke_too_small = 4
+
+class JerkLimitedThreePhaseParameters:
+    period: float
+    stroke: float
+    a2: float
+    a3: float
+    jerk: float
+    def __init__(
+        self, period: float, stroke: float, a2: float, a3: float, jerk: float
+    ) -> None: ...
+    def validate(self) -> None: ...
+
+class JerkLimitedThreePhaseSolution:
+    @property
+    def physical(self) -> bool: ...
+    @property
+    def reason(self) -> JerkLimitedCase0: ...
+    @property
+    def hold0(self) -> float: ...
+    @property
+    def ramp_down(self) -> float: ...
+    @property
+    def hold2(self) -> float: ...
+    @property
+    def ramp_up(self) -> float: ...
+    @property
+    def hold3(self) -> float: ...
+    @property
+    def ramp_end(self) -> float: ...
+    @property
+    def velocity_swing(self) -> float: ...
+    @property
+    def yd_ini(self) -> float: ...
+    @property
+    def min_jerk(self) -> float: ...
+    @property
+    def closed_form(self) -> bool: ...
+    def durations(self) -> FloatArray: ...
+
+def solve_jerk_limited_three_phase(
+    parameters: JerkLimitedThreePhaseParameters,
+) -> JerkLimitedThreePhaseSolution: ...
+
+class JerkLimitedThreePhaseProfile(TableProfile):
+    @overload
+    def __init__(self, parameters: JerkLimitedThreePhaseParameters) -> None: ...
+    @overload
+    def __init__(
+        self, period: float, stroke: float, a2: float, a3: float, jerk: float
+    ) -> None: ...
+    @property
+    def parameters(self) -> JerkLimitedThreePhaseParameters: ...
+    @property
+    def solution(self) -> JerkLimitedThreePhaseSolution: ...
+
 # ---- simulate --------------------------------------------------------------------------------
 
 class ObjectState:
@@ -390,6 +494,45 @@ def advance_time_stepping(
     state: TimeSteppingState,
     steps: int,
 ) -> None: ...
+
+class PeriodMap:
+    @overload
+    def __init__(
+        self,
+        profile: TableProfile,
+        law: CoulombFriction = ...,
+        *,
+        steps_per_period: int = 4000,
+        theta: float = 0.5,
+    ) -> None: ...
+    @overload
+    def __init__(
+        self,
+        profile: TableProfile,
+        friction: FrictionMap,
+        law: CoulombFriction = ...,
+        *,
+        steps_per_period: int = 4000,
+        theta: float = 0.5,
+    ) -> None: ...
+    @property
+    def profile(self) -> TableProfile: ...
+    @property
+    def friction(self) -> FrictionMap: ...
+    @property
+    def law(self) -> CoulombFriction: ...
+    @property
+    def method(self) -> Method: ...
+    @property
+    def period(self) -> float: ...
+    @property
+    def step(self) -> float: ...
+    def __call__(self, x0: float, v0: float) -> ObjectState: ...
+    def arcs(self, x0: float, v0: float) -> dict[str, npt.NDArray[np.generic]]: ...
+    def saltation_monodromy(self, x0: float, v0: float) -> FloatArray: ...
+    def finite_difference_monodromy(
+        self, x0: float, v0: float, h: float = 1e-7
+    ) -> FloatArray: ...
 
 # ---- motion cases and steady state -----------------------------------------------------------
 
@@ -561,6 +704,8 @@ def sweep_accelerations(
     steady: SteadyStateOptions = ...,
     threads: int = 0,
     progress: Progress = None,
+    law: CoulombFriction = ...,
+    jerk: float = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
 class ProfileFamily:
@@ -570,6 +715,9 @@ class ProfileFamily:
 
 class ThreePhaseFamily(ProfileFamily):
     def __init__(self, a2: float, a3: float) -> None: ...
+
+class JerkLimitedThreePhaseFamily(ProfileFamily):
+    def __init__(self, a2: float, a3: float, jerk: float) -> None: ...
 
 class ScaledShapeFamily(ProfileFamily):
     def __init__(self, shape: PiecewiseConstantProfile) -> None: ...
@@ -587,6 +735,7 @@ def sweep_period(
     steady: SteadyStateOptions = ...,
     threads: int = 0,
     progress: Progress = None,
+    law: CoulombFriction = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 def sweep_stroke(
     family: ProfileFamily,
@@ -596,6 +745,7 @@ def sweep_stroke(
     steady: SteadyStateOptions = ...,
     threads: int = 0,
     progress: Progress = None,
+    law: CoulombFriction = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
 # ---- stick positions and stopping runs -------------------------------------------------------
@@ -761,6 +911,9 @@ class DesignRequest:
     period_grid: int
     stroke_grid: int
     entries: int
+    jerk_max: float
+    mu_static: float
+    mu_backward: float
     @overload
     def __init__(self) -> None: ...
     @overload
@@ -783,6 +936,9 @@ class DesignRequest:
         period_grid: int = 6,
         stroke_grid: int = 3,
         entries: int = 40,
+        jerk_max: float = ...,
+        mu_static: float = ...,
+        mu_backward: float = ...,
     ) -> None: ...
 
 class DesignResult:
@@ -844,6 +1000,7 @@ class ActuatorLimits:
     stroke: float
     max_velocity: float
     max_acceleration: float
+    max_jerk: float
     def __init__(
         self,
         *,
@@ -851,12 +1008,14 @@ class ActuatorLimits:
         stroke: float = 0.021,
         max_velocity: float = 3.2,
         max_acceleration: float = 1275.0,
+        max_jerk: float = ...,
     ) -> None: ...
 
 class OptimizeOptions:
     order: int
     segments: int
     starts: int
+    law: CoulombFriction
     def __init__(
         self,
         *,
@@ -870,6 +1029,7 @@ class OptimizeOptions:
         seed: int = 1,
         fd_step: float = 1e-6,
         progress: Optional[Callable[[int, int], None]] = None,
+        law: CoulombFriction = ...,
     ) -> None: ...
 
 class OptimizationResult:
@@ -889,6 +1049,8 @@ class OptimizationResult:
     def max_velocity(self) -> float: ...
     @property
     def max_acceleration(self) -> float: ...
+    @property
+    def max_jerk(self) -> float: ...
     @property
     def evaluations(self) -> int: ...
     @property

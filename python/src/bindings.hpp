@@ -13,11 +13,11 @@ namespace py = pybind11;
 
 void bind_errors(py::module_& m);        // InvalidParameter -> selfalign.InvalidParameter
 void bind_units(py::module_& m);         // Scales
-void bind_friction(py::module_& m);      // FrictionMap, UniformFriction, TwoRegionFriction
+void bind_friction(py::module_& m);      // CoulombFriction, FrictionMap and its kinds, FrictionField
 void bind_profiles(py::module_& m);      // TableProfile, piecewise-constant, Fourier, sampled
-void bind_three_phase(py::module_& m);   // ThreePhaseParameters/Solution/Profile
+void bind_three_phase(py::module_& m);   // ThreePhase*, JerkLimitedThreePhase*
 void bind_simulate(py::module_& m);      // ObjectState, Method, SimulationOptions, simulate
-void bind_solvers(py::module_& m);       // exact solver (arcs) and time stepping
+void bind_solvers(py::module_& m);       // exact solver (arcs), time stepping, PeriodMap
 void bind_steady_state(py::module_& m);  // StickSlipCase, predict_case, steady_state
 void bind_floquet(py::module_& m);       // floquet_multipliers
 void bind_convergence(py::module_& m);   // velocity_convergence

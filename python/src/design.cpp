@@ -19,11 +19,16 @@ resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc")
                        double distance, double stroke_max, double frequency_min,
                        double frequency_max, double velocity_max, double acceleration_max,
                        double tolerance, int acceleration_grid, int period_grid, int stroke_grid,
-                       int entries) {
-             return DesignRequest{mass, width, mu, c_mu, gravity, distance, stroke_max,
-                                  frequency_min, frequency_max, velocity_max, acceleration_max,
-                                  tolerance, acceleration_grid, period_grid, stroke_grid,
-                                  entries};
+                       int entries, double jerk_max, double mu_static, double mu_backward) {
+             DesignRequest q;
+             q.mass = mass, q.width = width, q.mu = mu, q.c_mu = c_mu, q.gravity = gravity;
+             q.distance = distance, q.stroke_max = stroke_max;
+             q.frequency_min = frequency_min, q.frequency_max = frequency_max;
+             q.velocity_max = velocity_max, q.acceleration_max = acceleration_max;
+             q.tolerance = tolerance, q.acceleration_grid = acceleration_grid;
+             q.period_grid = period_grid, q.stroke_grid = stroke_grid, q.entries = entries;
+             q.jerk_max = jerk_max, q.mu_static = mu_static, q.mu_backward = mu_backward;
+             return q;
            }),
            py::kw_only(), py::arg("mass") = d.mass, py::arg("width") = d.width,
            py::arg("mu") = d.mu, py::arg("c_mu") = d.c_mu, py::arg("gravity") = d.gravity,
@@ -33,7 +38,14 @@ resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc")
            py::arg("acceleration_max") = d.acceleration_max, py::arg("tolerance") = d.tolerance,
            py::arg("acceleration_grid") = d.acceleration_grid,
            py::arg("period_grid") = d.period_grid, py::arg("stroke_grid") = d.stroke_grid,
-           py::arg("entries") = d.entries)
+           py::arg("entries") = d.entries, py::arg("jerk_max") = d.jerk_max,
+           py::arg("mu_static") = d.mu_static, py::arg("mu_backward") = d.mu_backward)
+      .def_readwrite("jerk_max", &DesignRequest::jerk_max,
+                     "table jerk limit [m/s^3] (inf: jump accelerations)")
+      .def_readwrite("mu_static", &DesignRequest::mu_static,
+                     "static friction coefficient [-] (NaN: equal to mu)")
+      .def_readwrite("mu_backward", &DesignRequest::mu_backward,
+                     "kinetic coefficient of backward slip [-] (NaN: equal to mu)")
       .def_readwrite("mass", &DesignRequest::mass, "object mass [kg]")
       .def_readwrite("width", &DesignRequest::width, "object width [m]")
       .def_readwrite("mu", &DesignRequest::mu, "low-friction coefficient mu_1 [-]")

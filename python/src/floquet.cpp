@@ -5,20 +5,13 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "matrix.hpp"
 #include "repr.hpp"
 #include "selfalign/error.hpp"
 
 namespace selfalign::python {
 
 namespace {
-
-py::array_t<double> matrix_array(const Eigen::Matrix2d& a) {
-  py::array_t<double> out({2, 2});
-  auto r = out.mutable_unchecked<2>();
-  for (py::ssize_t i = 0; i < 2; ++i)
-    for (py::ssize_t j = 0; j < 2; ++j) r(i, j) = a(i, j);
-  return out;
-}
 
 Eigen::Matrix2d matrix_from(const py::object& obj) {
   const auto a = DoubleArray::ensure(obj);

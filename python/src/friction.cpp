@@ -1,10 +1,16 @@
-// Friction maps m(x) = mu_bar(x)/mu_1 (eqs. 7-9).
+// Friction laws and maps m(x) = mu_bar(x)/mu_1 (eqs. 7-9): uniform, two-region, and a
+// friction field averaged over a footprint (docs/friction-field.md).
 #include <cstddef>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "repr.hpp"
 #include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 
 namespace selfalign::python {
@@ -28,6 +34,169 @@ py::object pieces(const FrictionMap& f) {
   d["bound_at_begin"] = to_array(std::move(bound));
   d["slope"] = to_array(std::move(slope));
   return d;
+}
+
+
+// A footprint given as a PointFootprint, a UniformFootprint, or a float width (uniform).
+Footprint footprint_from(const py::handle& obj) {
+  if (py::isinstance<PointFootprint>(obj)) return obj.cast<PointFootprint>();
+  if (py::isinstance<UniformFootprint>(obj)) return obj.cast<UniformFootprint>();
+  if (is_scalar(obj)) return UniformFootprint{scalar_value(obj, "footprint width")};
+  throw py::type_error(
+      "footprint: expected a PointFootprint, a UniformFootprint or a float width");
+}
+
+py::object footprint_object(const Footprint& f) {
+  return std::visit([](const auto& shape) { return py::cast(shape); }, f);
+}
+
+std::string footprint_repr(const Footprint& f) {
+  if (const auto* u = std::get_if<UniformFootprint>(&f))
+    return Repr("UniformFootprint")("width", u->width).str();
+  return "PointFootprint()";
+}
+
+py::dict field_nodes(const FrictionField& field) {
+  std::vector<double> position, left, right;
+  for (const FieldNode& n : field.nodes()) {
+    position.push_back(n.position);
+    left.push_back(n.left);
+    right.push_back(n.right);
+  }
+  py::dict d;
+  d["position"] = to_array(std::move(position));
+  d["left"] = to_array(std::move(left));
+  d["right"] = to_array(std::move(right));
+  return d;
+}
+
+void bind_friction_field(py::module_& m) {
+  py::class_<FrictionField>(m, "FrictionField", R"doc(
+The table's relative friction mu(xi)/mu_1 [-] over table position xi [-], piecewise linear
+with jumps (docs/friction-field.md). Its nodes (position, left, right): at `position` the
+field jumps from `left` (limit from the left) to `right` (value at and after the node: the
+field is right-continuous); between nodes it goes straight from one node's right to the next
+node's left; before the first node it is the first left, after the last the last right.
+Valid fields: >= 1 node; positions finite, |position| <= 1e50, strictly increasing; levels
+finite, in [0, 1e50], > 0 somewhere. Every constructor raises InvalidParameter otherwise.
+FieldFriction averages a field over the object's footprint (eq. 7).)doc")
+      .def(py::init([](const py::object& position, const py::object& left,
+                       const py::object& right) {
+             const std::vector<double> p = to_vector(position, "position"),
+                                       l = to_vector(left, "left"), r = to_vector(right, "right");
+             if (l.size() != p.size() || r.size() != p.size())
+               throw InvalidParameter("friction field nodes",
+                                      std::to_string(p.size()) + ", " + std::to_string(l.size()) +
+                                          ", " + std::to_string(r.size()),
+                                      "position, left and right must have the same length");
+             std::vector<FieldNode> nodes;
+             for (std::size_t i = 0; i < p.size(); ++i) nodes.push_back({p[i], l[i], r[i]});
+             return FrictionField(std::move(nodes));
+           }),
+           py::arg("position"), py::arg("left"), py::arg("right"),
+           "The general form from 1-D arrays of equal length: node positions [-] and the "
+           "field's left limits and right values there [-].")
+      .def_static(
+          "steps",
+          [](const py::object& positions, const py::object& levels) {
+            return FrictionField::steps(to_vector(positions, "positions"),
+                                        to_vector(levels, "levels"));
+          },
+          py::arg("positions"), py::arg("levels"), R"doc(
+Piecewise constant: levels[0] for xi < positions[0], levels[i] on [positions[i-1],
+positions[i]), levels[-1] from positions[-1] on. Needs len(levels) = len(positions) + 1 (no
+positions: a uniform field); positions strictly increasing. Raises InvalidParameter naming
+the offending entry, e.g. 'friction field positions[1]'.)doc")
+      .def_static(
+          "ramps",
+          [](const py::object& positions, const py::object& levels) {
+            return FrictionField::ramps(to_vector(positions, "positions"),
+                                        to_vector(levels, "levels"));
+          },
+          py::arg("positions"), py::arg("levels"), R"doc(
+Piecewise linear through (positions[i], levels[i]) [-], constant outside; len(levels) =
+len(positions) >= 1, positions strictly increasing. Raises InvalidParameter otherwise.)doc")
+      .def_static(
+          "from_csv",
+          [](const py::object& path, const std::string& interpolation) {
+            return FrictionField::from_csv(
+                py::str(py::module_::import("os").attr("fspath")(path)), interpolation);
+          },
+          py::arg("path"), py::arg("interpolation") = "steps", R"doc(
+Reads a CSV of rows 'position,level' [-] (one leading header line, blank lines and '#'
+comments allowed; positions strictly increasing; levels finite, in [0, 1e50], > 0 somewhere).
+interpolation 'steps': each level holds from its position to the next (the first also before
+it); 'linear': ramps through the samples. Raises InvalidParameter naming '<path>:<line>' on
+bad input, and naming 'interpolation' for another word.)doc")
+      .def("nodes", &field_nodes,
+           "The nodes as a dict of 1-D float64 arrays 'position', 'left', 'right' [-] (copies).")
+      .def(
+          "__call__",
+          [](const FrictionField& f, const py::object& xi) {
+            return map_elementwise<double>(xi, [&](double v) { return f(v); }, "xi");
+          },
+          py::arg("xi"),
+          "mu(xi)/mu_1 [-] at table position(s) xi [-] (float or ndarray; right-continuous at "
+          "jumps). Raises InvalidParameter for a non-finite xi.")
+      .def(
+          "integral",
+          [](const FrictionField& f, double a, double b) {
+            return f.integral(require_finite("a", a), require_finite("b", b));
+          },
+          py::arg("a"), py::arg("b"),
+          "The integral of the field over [a, b] [-] (0 for a >= b). Raises InvalidParameter "
+          "for a non-finite bound.")
+      .def_property_readonly("piecewise_constant", &FrictionField::piecewise_constant,
+                             "True when the field is a step function (no ramps)")
+      .def_property_readonly("min_level", &FrictionField::min_level, "smallest level [-]")
+      .def_property_readonly("max_level", &FrictionField::max_level, "largest level [-]")
+      .def("__eq__", [](const FrictionField& a, const FrictionField& b) { return a == b; })
+      .def("__repr__", [](const FrictionField& f) {
+        return "<FrictionField nodes=" + std::to_string(f.nodes().size()) +
+               " min_level=" + format_number(f.min_level()) +
+               " max_level=" + format_number(f.max_level()) + ">";
+      });
+
+  py::class_<PointFootprint>(m, "PointFootprint",
+                             "A point contact: the friction level is the field itself, "
+                             "m(x) = field(x).")
+      .def(py::init<>())
+      .def("__eq__", [](const PointFootprint&, const PointFootprint&) { return true; })
+      .def("__repr__", [](const PointFootprint&) { return std::string("PointFootprint()"); });
+
+  py::class_<UniformFootprint>(m, "UniformFootprint", R"doc(
+Uniform contact pressure over [x - width, x], x the object's leading edge: the friction level
+is the field's average over that window (eq. 7). Validated by FieldFriction.)doc")
+      .def(py::init([](double width) { return UniformFootprint{width}; }), py::arg("width"),
+           "width: the object's width w [-], in [1e-50, 1e50].")
+      .def_readonly("width", &UniformFootprint::width, "w [-]")
+      .def("__eq__", [](const UniformFootprint& a, const UniformFootprint& b) { return a == b; })
+      .def("__repr__",
+           [](const UniformFootprint& u) { return Repr("UniformFootprint")("width", u.width).str(); });
+
+  py::class_<FieldFriction, FrictionMap>(m, "FieldFriction", R"doc(
+The friction level m(x) = the table's field averaged over the object's footprint (eq. 7):
+a point footprint gives m = field; a uniform footprint of width w the window average over
+[x - w, x], which for FrictionField.steps([x_mu], [1, c_mu]) is TwoRegionFriction(x_mu, w,
+c_mu). Piecewise affine (so the exact solver applies) for a point footprint, or a uniform one
+on a step field; a uniform footprint on a field with ramps gives a piecewise-quadratic level
+(pieces() is None: time-stepping only).)doc")
+      .def(py::init([](const FrictionField& field, const py::object& footprint) {
+             return FieldFriction(field, footprint_from(footprint));
+           }),
+           py::arg("field"), py::arg("footprint"), R"doc(
+field: a FrictionField; footprint: PointFootprint(), UniformFootprint(width) or a float width
+(uniform). Raises InvalidParameter for a width outside [1e-50, 1e50] or below 1e-9 max
+|position|, or a level that cannot be resolved (slopes above 1e12, ramps narrower than 1e-9
+|position| under a point footprint); TypeError for another footprint type.)doc")
+      .def_property_readonly("field", &FieldFriction::field, "the table's FrictionField")
+      .def_property_readonly(
+          "footprint", [](const FieldFriction& f) { return footprint_object(f.footprint()); },
+          "the object's footprint (PointFootprint or UniformFootprint)")
+      .def("__repr__", [](const FieldFriction& f) {
+        return "<FieldFriction nodes=" + std::to_string(f.field().nodes().size()) +
+               " footprint=" + footprint_repr(f.footprint()) + ">";
+      });
 }
 
 }  // namespace
@@ -61,7 +230,7 @@ object is held as long as |y''| <= static m(x); while slipping in direction sigm
   py::class_<FrictionMap>(m, "FrictionMap", R"doc(
 A friction law m(x) = mu_bar(x)/mu_1 >= 0 [-] (eqs. 7-9): in the dimensionless model
 (Sect. 3.2) the friction force lies in -m(x) Sign(x'); m = 1 on the low-friction table.
-Abstract: use UniformFriction or TwoRegionFriction.)doc")
+Abstract: use UniformFriction, TwoRegionFriction or FieldFriction.)doc")
       .def(
           "bound",
           [](const FrictionMap& f, const py::object& x) {
@@ -106,6 +275,8 @@ Raises InvalidParameter naming the offending argument.)doc")
         return Repr("TwoRegionFriction")("x_mu", f.x_mu())("width", f.width())("c_mu", f.c_mu())
             .str();
       });
+
+  bind_friction_field(m);
 }
 
 }  // namespace selfalign::python

@@ -1,6 +1,6 @@
 #pragma once
 // Library enums whose values the Python API also hands out as plain ints (case numbers in
-// sweep arrays, arc kinds in exact_arcs) are bound as real Python enum.IntEnum classes: they
+// sweep arrays, arc kinds in exact_arcs, case-0 reasons) are bound as real Python enum.IntEnum classes: they
 // compare equal to ints, hash like ints, pickle, and convert from ints. A type caster maps the
 // C++ enum to and from the IntEnum class created by bind_int_enum. Every translation unit of
 // the module sees these casters through bindings.hpp (one definition of each caster).
@@ -13,6 +13,7 @@
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/simulate/arc.hpp"
 
 namespace selfalign::python {
@@ -89,6 +90,10 @@ struct type_caster<selfalign::ArcKind> : int_enum_caster<selfalign::ArcKind> {
 template <>
 struct type_caster<selfalign::ArcEnd> : int_enum_caster<selfalign::ArcEnd> {
   static constexpr auto name = const_name("ArcEnd");
+};
+template <>
+struct type_caster<selfalign::JerkLimitedCase0> : int_enum_caster<selfalign::JerkLimitedCase0> {
+  static constexpr auto name = const_name("JerkLimitedCase0");
 };
 
 }  // namespace pybind11::detail

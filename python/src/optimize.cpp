@@ -17,12 +17,15 @@ void bind_optimize(py::module_& m) {
 Actuator limits of the optimisation (dimensionless; Fig. 6: period 0.072, stroke 0.021,
 max_velocity 3.2, max_acceleration 1275). Period and stroke are exact; |y'| and |y''| are
 bounded over the whole period.)doc")
-      .def(py::init([](double period, double stroke, double v, double a) {
-             return ActuatorLimits{period, stroke, v, a};
+      .def(py::init([](double period, double stroke, double v, double a, double j) {
+             return ActuatorLimits{period, stroke, v, a, j};
            }),
            py::kw_only(), py::arg("period") = dl.period, py::arg("stroke") = dl.stroke,
            py::arg("max_velocity") = dl.max_velocity,
-           py::arg("max_acceleration") = dl.max_acceleration)
+           py::arg("max_acceleration") = dl.max_acceleration, py::arg("max_jerk") = dl.max_jerk)
+      .def_readwrite("max_jerk", &ActuatorLimits::max_jerk,
+                     "jerk limit [-] (inf: none; three-phase then ramps at it, "
+                     "piecewise-constant is infeasible)")
       .def_readwrite("period", &ActuatorLimits::period, "Δt [-]")
       .def_readwrite("stroke", &ActuatorLimits::stroke, "Δy [-]")
       .def_readwrite("max_velocity", &ActuatorLimits::max_velocity, "y'_max [-]")
@@ -35,9 +38,12 @@ objective, multi-starts, evaluations per local run, three-phase scan grid and po
 seed, finite-difference step, and an optional progress(done, total) callable.)doc")
       .def(py::init([](int order, int segments, int approximation_segments, int starts,
                        int max_evaluations, int grid, int polish, unsigned seed, double fd_step,
-                       std::function<void(int, int)> progress) {
-             OptimizeOptions o{order, segments, approximation_segments, starts, max_evaluations,
-                               grid, polish, seed, fd_step, {}};
+                       std::function<void(int, int)> progress, const CoulombFriction& law) {
+             OptimizeOptions o;
+             o.order = order, o.segments = segments;
+             o.approximation_segments = approximation_segments, o.starts = starts;
+             o.max_evaluations = max_evaluations, o.grid = grid, o.polish = polish;
+             o.seed = seed, o.fd_step = fd_step, o.law = law;
              o.progress = std::move(progress);
              return o;
            }),
@@ -45,7 +51,9 @@ seed, finite-difference step, and an optional progress(done, total) callable.)do
            py::arg("approximation_segments") = d.approximation_segments,
            py::arg("starts") = d.starts, py::arg("max_evaluations") = d.max_evaluations,
            py::arg("grid") = d.grid, py::arg("polish") = d.polish, py::arg("seed") = d.seed,
-           py::arg("fd_step") = d.fd_step, py::arg("progress") = py::none())
+           py::arg("fd_step") = d.fd_step, py::arg("progress") = py::none(),
+           py::arg("law") = CoulombFriction{})
+      .def_readwrite("law", &OptimizeOptions::law, "friction law of every steady state")
       .def_readwrite("order", &OptimizeOptions::order, "Fourier order N")
       .def_readwrite("segments", &OptimizeOptions::segments, "K of the piecewise family")
       .def_readwrite("starts", &OptimizeOptions::starts, "multi-starts");
@@ -62,6 +70,8 @@ d_1..d_K, a_1..a_K; Fourier: A_1..A_N, B_1..B_N), the limits, the optimum's max 
       .def_readonly("limits", &OptimizationResult::limits, "the limits")
       .def_readonly("max_velocity", &OptimizationResult::max_velocity, "max |y'| [-]")
       .def_readonly("max_acceleration", &OptimizationResult::max_acceleration, "max |y''| [-]")
+      .def_readonly("max_jerk", &OptimizationResult::max_jerk,
+                    "max |jerk| [-] (inf where the acceleration jumps)")
       .def_readonly("evaluations", &OptimizationResult::evaluations, "objective evaluations")
       .def_readonly("starts", &OptimizationResult::starts,
                     "local runs (piecewise-constant: over the chain K = 2 .. K)")

@@ -80,7 +80,8 @@ void bind_table_profile(py::module_& m) {
 
   py::class_<TableProfile>(m, "TableProfile", R"doc(
 A prescribed periodic table motion y(t) (Sect. 4.4). Abstract: build a ThreePhaseProfile,
-PiecewisePolynomialProfile, FourierProfile or a sampled profile (make_sampled_profile).
+JerkLimitedThreePhaseProfile, PiecewisePolynomialProfile, FourierProfile or a sampled profile
+(make_sampled_profile).
 
 All quantities are dimensionless (Sect. 3.2). A profile is periodic with period Δt; its
 velocity has zero mean, and min y = 0 (Sect. 4.4.3, constraint 1), so the stroke is max y.)doc")

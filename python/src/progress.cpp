@@ -27,11 +27,14 @@ ProgressCallback PythonProgress::callback() const {
 void PythonProgress::rethrow() const { std::rethrow_exception(state_->error); }
 
 SweepOptions sweep_options(int threads, const PythonProgress& progress,
-                           const SteadyStateOptions& steady) {
+                           const SteadyStateOptions& steady, const CoulombFriction& law,
+                           double jerk) {
   SweepOptions o;
   o.threads = threads;
   o.progress = progress.callback();
   o.steady = steady;
+  o.law = law;
+  o.jerk = jerk;
   return o;
 }
 

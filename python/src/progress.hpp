@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 
 #include <exception>
+#include <limits>
 #include <memory>
 
 #include "selfalign/analysis/sweep.hpp"
@@ -49,8 +50,11 @@ class PythonProgress {
   std::shared_ptr<State> state_;
 };
 
-/// The keyword arguments every sweep takes, turned into SweepOptions.
+/// The keyword arguments every sweep takes, turned into SweepOptions (law: every cell's
+/// friction law; jerk: sweep_accelerations' jerk limit, +inf: jump accelerations).
 SweepOptions sweep_options(int threads, const PythonProgress& progress,
-                           const SteadyStateOptions& steady = {});
+                           const SteadyStateOptions& steady = {},
+                           const CoulombFriction& law = {},
+                           double jerk = std::numeric_limits<double>::infinity());
 
 }  // namespace selfalign::python

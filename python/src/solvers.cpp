@@ -1,13 +1,19 @@
 // The two solvers one step below simulate(): the exact event-driven solver (its arcs, eqs.
-// 12-24 and 42-47) and Moreau time-stepping (Sect. 4.1), each with an explicit state.
+// 12-24 and 42-47) and Moreau time-stepping (Sect. 4.1), each with an explicit state; and the
+// period map every analysis iterates (PeriodMap: either solver over one table period).
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <variant>
 #include <utility>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "matrix.hpp"
 #include "repr.hpp"
+#include "selfalign/analysis/period_map.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/simulate.hpp"
@@ -234,11 +240,126 @@ solved in closed form (a projection: stick iff |v*| <= h m(x_M)). Any profile an
 map. Raises InvalidParameter on bad options or steps outside [0, 1e9].)doc");
 }
 
+// Every arc of `arcs` as the column dict of exact_arcs.
+py::dict arc_dict(const std::vector<Arc>& arcs) {
+  ArcColumns columns;
+  for (const Arc& a : arcs) columns.on_arc(a);
+  return std::move(columns).to_dict();
+}
+
+void bind_period_map(py::module_& m) {
+  const PeriodMapOptions d;
+  py::class_<PeriodMap>(m, "PeriodMap", R"doc(
+The map P: (x, x') at phase 0 -> (x, x') one table period Δt later [-], for a table profile,
+a friction level m(x) (FrictionMap; the uniform m = 1 without one) and a friction law
+(CoulombFriction). Integrated by the exact solver when the profile's acceleration is
+piecewise polynomial (constant or finite jerk) and the level piecewise affine, by Moreau
+time-stepping (h = Δt/steps_per_period) otherwise. Every analysis (steady state, Floquet,
+convergence, stopping, positioning, sweeps) iterates this map. The map keeps its profile and
+friction alive.)doc")
+      .def(py::init([](const TableProfile& profile, const CoulombFriction& law,
+                       int steps_per_period, double theta) {
+             return std::make_unique<PeriodMap>(profile, law,
+                                                PeriodMapOptions{steps_per_period, theta});
+           }),
+           py::arg("profile"), py::arg("law") = CoulombFriction{}, py::kw_only(),
+           py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
+           py::keep_alive<1, 2>(), "The uniform low-friction table (m = 1) under `law`.")
+      .def(py::init([](const TableProfile& profile, const FrictionMap& friction,
+                       const CoulombFriction& law, int steps_per_period, double theta) {
+             return std::make_unique<PeriodMap>(profile, friction, law,
+                                                PeriodMapOptions{steps_per_period, theta});
+           }),
+           py::arg("profile"), py::arg("friction"), py::arg("law") = CoulombFriction{},
+           py::kw_only(), py::arg("steps_per_period") = d.steps_per_period,
+           py::arg("theta") = d.theta, py::keep_alive<1, 2>(), py::keep_alive<1, 3>(), R"doc(
+A table whose friction level is `friction` under `law`. steps_per_period (>= 1) and theta (in
+[0, 1]) apply to time-stepping only; raises InvalidParameter for them out of range when the
+map time-steps.)doc")
+      .def_property_readonly("profile", &PeriodMap::profile, "the table profile")
+      .def_property_readonly("friction", &PeriodMap::friction,
+                             "the friction level (UniformFriction(1) when none was given)")
+      .def_property_readonly("law", &PeriodMap::law, "the friction law")
+      .def_property_readonly("method", &PeriodMap::method,
+                             "Method.exact or Method.time_stepping (see the class doc)")
+      .def_property_readonly("period", &PeriodMap::period, "Δt [-]")
+      .def_property_readonly("step", &PeriodMap::step,
+                             "time-stepping step h = Δt/steps_per_period [-]; 0 when exact")
+      .def(
+          "__call__",
+          [](const PeriodMap& map, double x0, double v0) {
+            require_finite("x0", x0), require_finite("v0", v0);
+            py::gil_scoped_release release;
+            return map(x0, v0);
+          },
+          py::arg("x0"), py::arg("v0"),
+          "P(x0, v0): the ObjectState (t = Δt, x, x') one period after (x0, x'0 = v0) at "
+          "phase 0 [-]. Raises InvalidParameter for non-finite x0, v0. Runs without the GIL.")
+      .def(
+          "arcs",
+          [](const PeriodMap& map, double x0, double v0) {
+            require_finite("x0", x0), require_finite("v0", v0);
+            std::vector<Arc> arcs;
+            {
+              py::gil_scoped_release release;
+              arcs = map.arcs(x0, v0);
+            }
+            return arc_dict(arcs);
+          },
+          py::arg("x0"), py::arg("v0"),
+          "The closed-form arcs of one period from (x0, v0) at phase 0, as the dict of 1-D "
+          "arrays exact_arcs returns. Exact maps only: raises InvalidParameter for a "
+          "time-stepping map or non-finite x0, v0.")
+      .def(
+          "saltation_monodromy",
+          [](const PeriodMap& map, double x0, double v0) {
+            require_finite("x0", x0), require_finite("v0", v0);
+            Eigen::Matrix2d a;
+            {
+              py::gil_scoped_release release;
+              a = map.saltation_monodromy(x0, v0);
+            }
+            return matrix_array(a);
+          },
+          py::arg("x0"), py::arg("v0"), R"doc(
+dP/d(x, x') at (x0, v0) as a 2x2 float64 ndarray [-]: the arcs' transition matrices coupled by
+the saltation matrices of their events (Leine & Nijmeijer). Exact maps only: raises
+InvalidParameter for a time-stepping map or non-finite x0, v0.)doc")
+      .def(
+          "finite_difference_monodromy",
+          [](const PeriodMap& map, double x0, double v0, double h) {
+            require_finite("x0", x0), require_finite("v0", v0);
+            if (!(std::isfinite(h) && h > 0 && h <= 0.1))
+              throw InvalidParameter("h", h, "must be in (0, 0.1]");
+            Eigen::Matrix2d a;
+            {
+              py::gil_scoped_release release;
+              a = map.finite_difference_monodromy(x0, v0, h);
+            }
+            return matrix_array(a);
+          },
+          py::arg("x0"), py::arg("v0"), py::arg("h") = 1e-7, R"doc(
+dP/d(x, x') at (x0, v0) by central differences of step h in x and in x' [-] (h in (0, 0.1]),
+as a 2x2 float64 ndarray; either method. Raises InvalidParameter for h out of range or
+non-finite x0, v0.)doc")
+      .def("__repr__", [](const PeriodMap& map) {
+        return "<PeriodMap profile='" + map.profile().kind() +
+               "' period=" + format_number(map.period()) + " method=" +
+               enum_name(map.method()) + " law=" +
+               Repr("CoulombFriction")("static", map.law().static_coefficient())(
+                   "kinetic_forward", map.law().kinetic_forward())(
+                   "kinetic_backward", map.law().kinetic_backward())
+                   .str() +
+               ">";
+      });
+}
+
 }  // namespace
 
 void bind_solvers(py::module_& m) {
   bind_exact(m);
   bind_time_stepping(m);
+  bind_period_map(m);
 }
 
 }  // namespace selfalign::python

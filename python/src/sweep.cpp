@@ -3,6 +3,7 @@
 #include "selfalign/analysis/sweep.hpp"
 
 #include <cstdint>
+#include <limits>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -53,6 +54,14 @@ void bind_families(py::module_& m) {
                                               "(a2, a3).")
       .def(py::init<double, double>(), py::arg("a2"), py::arg("a3"),
            "a2, a3: y2'', y3'' [-], > 0.");
+  py::class_<JerkLimitedThreePhaseFamily, ProfileFamily>(
+      m, "JerkLimitedThreePhaseFamily",
+      "Jerk-limited three-phase profiles (trapezoidal acceleration) with fixed accelerations "
+      "(a2, a3) and jerk limit j; make() gives None where no member exists (case 0, e.g. a "
+      "jerk too low for the period and stroke).")
+      .def(py::init<double, double, double>(), py::arg("a2"), py::arg("a3"), py::arg("jerk"),
+           "a2, a3: y2'', y3'' [-], > 0; jerk: j [-], > 0 (inf: the ThreePhaseFamily). Raises "
+           "InvalidParameter otherwise.");
   py::class_<ScaledShapeFamily, ProfileFamily>(m, "ScaledShapeFamily", R"doc(
 One shape of piecewise-constant acceleration (a Fig. 3 style sequence of quadratics), stretched
 in time to the period and scaled in amplitude to the stroke: durations scale with Δt,
@@ -88,10 +97,11 @@ void bind_sweep(py::module_& m) {
   m.def(
       "sweep_accelerations",
       [](double period, double stroke, const py::object& a2_in, const py::object& a3_in,
-         const SteadyStateOptions& steady, int threads, const py::object& progress_in) {
+         const SteadyStateOptions& steady, int threads, const py::object& progress_in,
+         const CoulombFriction& law, double jerk) {
         const std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
         const PythonProgress progress(progress_in);
-        const SweepOptions options = sweep_options(threads, progress, steady);
+        const SweepOptions options = sweep_options(threads, progress, steady, law, jerk);
         const std::vector<AccelerationCell> cells =
             progress.run([&] { return sweep_accelerations(period, stroke, a2, a3, options); });
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(a2.size()),
@@ -116,7 +126,8 @@ void bind_sweep(py::module_& m) {
       },
       py::arg("period"), py::arg("stroke"), py::arg("a2"), py::arg("a3"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
-      py::arg("progress") = py::none(),
+      py::arg("progress") = py::none(), py::arg("law") = CoulombFriction{},
+      py::arg("jerk") = std::numeric_limits<double>::infinity(),
       (std::string(R"doc(
 f and the motion case of the three-phase profile over the grid a2 × a3 at fixed (Δt, Δy)
 (Figs. 10, 11). Returns a dict of arrays shaped (len(a2), len(a3)) (cell [i, j] is a2[i],
@@ -125,7 +136,11 @@ simulated steady period), 'v_bar' (eq. 10), 'f' (eq. 11; +inf for v̄ = 0), 'x_d
 (float64, NaN for case 0), 'converged' (bool), 'failure' (str: '' for a computed cell, else
 why it could not be computed; its numbers are then NaN — one cell never aborts the sweep);
 plus the 1-D grids 'a2' and 'a3'.
-Raises InvalidParameter on bad inputs.)doc") +
+law: every cell's friction law (CoulombFriction; the paper's by default). jerk: the jerk
+limit of every cell's profile [-], > 0 (JerkLimitedThreePhaseProfile; a cell without one is
+case 0); inf (the default): the paper's jump accelerations. 'predicted' always applies the
+Fig. 8 rules of the jump profile under the paper's law.
+Raises InvalidParameter on bad inputs (jerk <= 0 or NaN included).)doc") +
        kSweepArgs)
           .c_str());
 
@@ -134,39 +149,42 @@ Raises InvalidParameter on bad inputs.)doc") +
   m.def(
       "sweep_period",
       [](const ProfileFamily& family, double stroke, const py::object& periods_in,
-         const SteadyStateOptions& steady, int threads, const py::object& progress_in) {
+         const SteadyStateOptions& steady, int threads, const py::object& progress_in,
+         const CoulombFriction& law) {
         const std::vector<double> periods = to_vector(periods_in, "periods");
         const PythonProgress progress(progress_in);
-        const SweepOptions options = sweep_options(threads, progress, steady);
+        const SweepOptions options = sweep_options(threads, progress, steady, law);
         return family_points(
             progress.run([&] { return sweep_period(family, stroke, periods, options); }));
       },
       py::arg("family"), py::arg("stroke"), py::arg("periods"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
-      py::arg("progress") = py::none(),
+      py::arg("progress") = py::none(), py::arg("law") = CoulombFriction{},
       (std::string(R"doc(
 f against Δt at fixed Δy (Fig. 4). Returns a dict of 1-D arrays, one entry per period:
 'period', 'stroke', 'v_bar' (eq. 10), 'f' (eq. 11) (float64; NaN where the family has no
 member), 'physical' (bool), 'observed' (int32 StickSlipCase values), 'failure' (str: '' for a
-computed point, else why it could not be computed; v_bar and f are then NaN).)doc") +
+computed point, else why it could not be computed; v_bar and f are then NaN).
+law: every point's friction law (CoulombFriction; the paper's by default).)doc") +
        kSweepArgs)
           .c_str());
   m.def(
       "sweep_stroke",
       [](const ProfileFamily& family, double period, const py::object& strokes_in,
-         const SteadyStateOptions& steady, int threads, const py::object& progress_in) {
+         const SteadyStateOptions& steady, int threads, const py::object& progress_in,
+         const CoulombFriction& law) {
         const std::vector<double> strokes = to_vector(strokes_in, "strokes");
         const PythonProgress progress(progress_in);
-        const SweepOptions options = sweep_options(threads, progress, steady);
+        const SweepOptions options = sweep_options(threads, progress, steady, law);
         return family_points(
             progress.run([&] { return sweep_stroke(family, period, strokes, options); }));
       },
       py::arg("family"), py::arg("period"), py::arg("strokes"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
-      py::arg("progress") = py::none(),
+      py::arg("progress") = py::none(), py::arg("law") = CoulombFriction{},
       (std::string(R"doc(
 f against Δy at fixed Δt (Fig. 5). Returns the same dict as sweep_period, one entry per
-stroke.)doc") +
+stroke. law: every point's friction law (CoulombFriction; the paper's by default).)doc") +
        kSweepArgs)
           .c_str());
 }

@@ -23,8 +23,8 @@ constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimis
 // the next derivative from every near-extreme grid point.
 class FourierEvaluator {
  public:
-  FourierEvaluator(const ActuatorLimits& l, int order, int segments)
-      : l_(l), n_(order), m_(segments), w_(2 * std::numbers::pi / l.period) {
+  FourierEvaluator(const ActuatorLimits& l, int order, int segments, const CoulombFriction& law)
+      : l_(l), law_(law), n_(order), m_(segments), w_(2 * std::numbers::pi / l.period) {
     table(kSamplesPerHarmonic * n_, grid_cos_, grid_sin_);
     table(m_, node_cos_, node_sin_);
   }
@@ -91,7 +91,7 @@ class FourierEvaluator {
           p.scale * (buf_[static_cast<std::size_t>((i + 1) % m_)] - buf_[static_cast<std::size_t>(i)]) / h;
     const auto profile =
         PiecewisePolynomialProfile::from_accelerations(durations_, accels_, "fourier-approximation");
-    p.v_bar = trusted_v_bar(steady_state(profile), max_abs_velocity(profile), l_.period);
+    p.v_bar = trusted_v_bar(steady_state(profile, law_), max_abs_velocity(profile), l_.period);
     p.valid = std::isfinite(p.v_bar);
     return p;
   }
@@ -132,6 +132,7 @@ class FourierEvaluator {
   }
 
   ActuatorLimits l_;
+  CoulombFriction law_;
   int n_, m_;
   double w_;
   std::vector<double> grid_cos_, grid_sin_, node_cos_, node_sin_;
@@ -201,7 +202,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   r.family = "fourier";
   r.limits = l;
   const int n = o.order;
-  const FourierEvaluator evaluator(l, n, o.approximation_segments);
+  const FourierEvaluator evaluator(l, n, o.approximation_segments, o.law);
 
   LocalSearchProblem problem;
   problem.lower.assign(static_cast<std::size_t>(2 * n), -1.0);
@@ -270,9 +271,15 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   r.f = objective_f(p.v_bar);
   r.max_velocity = max_abs_velocity(profile);
   r.max_acceleration = profile.peak_acceleration();
+  r.max_jerk = 0;  // |d3y/dt3| sampled at 64 N points of the period (of the scaled series)
+  for (int i = 0; i < 64 * n; ++i) {
+    const double t = l.period * i / (64.0 * n);
+    r.max_jerk = std::max(r.max_jerk, std::abs(p.scale * evaluator.derivative(best.x, 3, t)));
+  }
   const double slack = 1 + 1e-9;
   r.feasible = p.v_bar > 0 && r.max_velocity <= l.max_velocity * slack &&
-               r.max_acceleration <= l.max_acceleration * slack;
+               r.max_acceleration <= l.max_acceleration * slack &&
+               r.max_jerk <= l.max_jerk * slack;
   r.message = r.feasible ? "order-" + std::to_string(n) + " optimum by LD_SLSQP (central FD " +
                                "gradients) from " + std::to_string(best.runs) +
                                " starts; f on the " + std::to_string(o.approximation_segments) +

@@ -1,10 +1,13 @@
 #include "selfalign/design/optimize.hpp"
 
+#include <cmath>
+
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/design/piecewise_design.hpp"
 #include "selfalign/design/three_phase_design.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
@@ -25,6 +28,8 @@ void validate(const ActuatorLimits& l) {
   require_positive_moderate("stroke", l.stroke);
   require_positive_moderate("max_velocity", l.max_velocity);
   require_positive_moderate("max_acceleration", l.max_acceleration);
+  if (!(l.max_jerk > 0) || !(l.max_jerk >= 1 / kMaxMagnitude))
+    throw InvalidParameter("max_jerk", l.max_jerk, "must be in [1e-50, +inf] (+inf: no limit)");
 }
 
 void validate(const OptimizeOptions& o) {
@@ -44,6 +49,9 @@ std::unique_ptr<TableProfile> rebuild_profile(const OptimizationResult& r) {
   if (!r.feasible)
     throw InvalidParameter("result", "infeasible", "rebuild needs a feasible optimum");
   const auto& x = r.parameters;
+  if (r.family == "three-phase" && x.size() == 2 && std::isfinite(r.limits.max_jerk))
+    return std::make_unique<JerkLimitedThreePhaseProfile>(JerkLimitedThreePhaseParameters{
+        r.limits.period, r.limits.stroke, x[0], x[1], r.limits.max_jerk});
   if (r.family == "three-phase" && x.size() == 2)
     return std::make_unique<ThreePhaseProfile>(
         ThreePhaseParameters{r.limits.period, r.limits.stroke, x[0], x[1]});

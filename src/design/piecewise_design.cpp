@@ -143,7 +143,7 @@ OptimizationResult optimize_segments(const ActuatorLimits& l, const OptimizeOpti
   problem.constraint_names = {"max_velocity", "max_acceleration"};
   problem.max_evaluations = o.max_evaluations;
   problem.feasibility_tol = kFeasibilityTol;
-  problem.evaluate = [&l, d = std::vector<double>(), a = std::vector<double>()](
+  problem.evaluate = [&l, &o, d = std::vector<double>(), a = std::vector<double>()](
                          std::span<const double> x) mutable {
     DesignEvaluation e;
     if (!piecewise_design_profile(l, x, d, a)) {
@@ -153,7 +153,7 @@ OptimizationResult optimize_segments(const ActuatorLimits& l, const OptimizeOpti
     }
     const auto profile = PiecewisePolynomialProfile::from_accelerations(d, a, "piecewise-constant");
     e.objective = design_objective(
-        trusted_v_bar(steady_state(profile), max_abs_velocity(profile), l.period), l.period,
+        trusted_v_bar(steady_state(profile, o.law), max_abs_velocity(profile), l.period), l.period,
         l.stroke);
     e.constraints = {max_abs_velocity(profile) / l.max_velocity - 1.0,
                      profile.peak_acceleration() / l.max_acceleration - 1.0};
@@ -189,7 +189,7 @@ OptimizationResult optimize_segments(const ActuatorLimits& l, const OptimizeOpti
   std::vector<double> d, a;
   piecewise_design_profile(l, best.x, d, a);
   const auto profile = PiecewisePolynomialProfile::from_accelerations(d, a, "piecewise-constant");
-  const SteadyState st = steady_state(profile);
+  const SteadyState st = steady_state(profile, o.law);
   r.parameters = d;
   r.parameters.insert(r.parameters.end(), a.begin(), a.end());
   r.v_bar = st.v_bar;
@@ -211,6 +211,15 @@ OptimizationResult optimize_piecewise_constant(const ActuatorLimits& l, const Op
                                                const OptimizationResult* three_phase_start) {
   validate(l);
   validate(o);
+  if (std::isfinite(l.max_jerk)) {  // its accelerations jump: infinite jerk
+    OptimizationResult r;
+    r.family = "piecewise-constant";
+    r.limits = l;
+    r.message = "no feasible piecewise-constant profile: max_jerk = " +
+                format_number(l.max_jerk) +
+                " is binding (piecewise-constant accelerations jump: infinite jerk)";
+    return r;
+  }
   const int k = o.segments;
   OptimizationResult three;
   int evaluations = 0;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/design/local_search.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
 
 namespace selfalign {
 
@@ -28,17 +30,27 @@ ThreePhaseConstraints constraints_of(const ActuatorLimits& l, const ThreePhaseSo
 
 }  // namespace
 
-ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& l, double a2, double a3) {
+ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& l, double a2, double a3,
+                                           const CoulombFriction& law) {
   ThreePhaseDesignPoint p;
   const ThreePhaseParameters params{l.period, l.stroke, a2, a3};
-  const ThreePhaseSolution s = solve_three_phase(params);
-  if (!s.physical) return p;
+  std::unique_ptr<TableProfile> profile;
+  if (std::isfinite(l.max_jerk)) {  // ramps at the jerk limit (jerk_limited_three_phase.hpp)
+    const JerkLimitedThreePhaseParameters jp{l.period, l.stroke, a2, a3, l.max_jerk};
+    const JerkLimitedThreePhaseSolution s = solve_jerk_limited_three_phase(jp);
+    if (!s.physical) return p;
+    p.max_velocity = std::max(s.yd_ini, s.velocity_swing - s.yd_ini);
+    profile = std::make_unique<JerkLimitedThreePhaseProfile>(jp);
+  } else {
+    const ThreePhaseSolution s = solve_three_phase(params);
+    if (!s.physical) return p;
+    // Velocity extrema: y'_ini (on [t0, t1]) and y'_ini - D at t2, D = (t3 - t1) / s.
+    const double swing = (s.t3 - s.t1) / s.inverse_accel_sum;
+    p.max_velocity = std::max(s.yd_ini, swing - s.yd_ini);
+    profile = std::make_unique<ThreePhaseProfile>(params);
+  }
   p.physical = true;
-  // Velocity extrema: y'_ini (on [t0, t1]) and y'_ini - D at t2, D = (t3 - t1) / s.
-  const double swing = (s.t3 - s.t1) / s.inverse_accel_sum;
-  p.max_velocity = std::max(s.yd_ini, swing - s.yd_ini);
-  const ThreePhaseProfile profile(params);
-  const SteadyState st = steady_state(profile);
+  const SteadyState st = steady_state(*profile, law);
   p.v_bar = trusted_v_bar(st, p.max_velocity, l.period);  // NaN when not trustworthy
   p.f = objective_f(p.v_bar);
   p.feasible = std::isfinite(p.v_bar) && p.max_velocity <= l.max_velocity * (1 + kFeasibilityTol) &&
@@ -73,7 +85,7 @@ OptimizationResult optimize_three_phase(const ActuatorLimits& l, const OptimizeO
   std::vector<Cell> cells;
   for (double a2 : g)
     for (double a3 : g) {
-      const ThreePhaseDesignPoint p = evaluate_three_phase(l, a2, a3);
+      const ThreePhaseDesignPoint p = evaluate_three_phase(l, a2, a3, o.law);
       ++r.evaluations;
       if (!p.physical) continue;
       cells.push_back({a2, a3, design_objective(p.v_bar, l.period, l.stroke),
@@ -97,7 +109,7 @@ OptimizationResult optimize_three_phase(const ActuatorLimits& l, const OptimizeO
   problem.constraint_names = {"max_velocity", "case 0 (1/a2 + 1/a3 <= period^2/(8 stroke))"};
   problem.max_evaluations = o.max_evaluations;
   problem.feasibility_tol = kFeasibilityTol;
-  problem.evaluate = [&l, s_max](std::span<const double> x) {
+  problem.evaluate = [&l, &o, s_max](std::span<const double> x) {
     DesignEvaluation e;
     const ThreePhaseSolution s = solve_three_phase({l.period, l.stroke, x[0], x[1]});
     if (!s.physical) {  // case 0: the solution's fields are 0, so compute s here
@@ -105,7 +117,12 @@ OptimizationResult optimize_three_phase(const ActuatorLimits& l, const OptimizeO
       e.constraints = {1e3, (1.0 / x[0] + 1.0 / x[1]) / s_max - 1.0};
       return e;
     }
-    const ThreePhaseDesignPoint p = evaluate_three_phase(l, x[0], x[1]);
+    const ThreePhaseDesignPoint p = evaluate_three_phase(l, x[0], x[1], o.law);
+    if (!p.physical) {  // no ramped profile at this jerk (jerk-limited case 0)
+      e.objective = design_objective(-1.0, l.period, l.stroke);
+      e.constraints = {1e3, 1e3};
+      return e;
+    }
     const ThreePhaseConstraints c = constraints_of(l, s, p.max_velocity);
     e.objective = design_objective(p.v_bar, l.period, l.stroke);
     e.constraints = {c.velocity, c.physical};
@@ -122,8 +139,9 @@ OptimizationResult optimize_three_phase(const ActuatorLimits& l, const OptimizeO
       r.message = "no feasible three-phase profile: " + best.binding + " is binding";
     return r;
   }
-  const ThreePhaseDesignPoint p = evaluate_three_phase(l, best.x[0], best.x[1]);
+  const ThreePhaseDesignPoint p = evaluate_three_phase(l, best.x[0], best.x[1], o.law);
   r.parameters = best.x;
+  r.max_jerk = l.max_jerk;
   r.v_bar = p.v_bar;
   r.f = p.f;
   r.max_velocity = p.max_velocity;

@@ -1,3 +1,4 @@
+#include "../io/csv_fields.hpp"
 #include "selfalign/friction/friction_field.hpp"
 
 #include <algorithm>
@@ -43,29 +44,6 @@ double on_stretch(const FieldNode& a, const FieldNode& b, double xi) noexcept {
   return std::max(0.0, a.right + (b.left - a.right) * t);
 }
 
-// ---- CSV (the conventions of src/profiles/sampled.cpp) ----
-enum class CsvField { number, out_of_range, text };
-
-CsvField parse_double(const std::string& text, double& out) {
-  std::string_view v(text);
-  if (!v.empty() && v.front() == '+') v.remove_prefix(1);
-  if (v.empty()) return CsvField::text;
-  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-  if (end != v.data() + v.size()) return CsvField::text;
-  if (ec == std::errc::result_out_of_range) return CsvField::out_of_range;
-  return ec == std::errc{} ? CsvField::number : CsvField::text;
-}
-
-bool looks_like_header(const std::string& line) {
-  const char c = line.empty() ? ' ' : line.front();
-  return !(std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.');
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
 
 }  // namespace
 
@@ -162,23 +140,18 @@ FrictionField FrictionField::from_csv(const std::string& path, FieldInterpolatio
   bool header_allowed = true;
   while (std::getline(in, line)) {
     ++number;
-    line = trim(line);
+    line = detail::trim_csv(line);
     if (line.empty() || line[0] == '#') continue;
     const std::string where = "friction field " + path + ":" + std::to_string(number);
-    const auto comma = line.find(',');
     double p = 0, level = 0;
-    const CsvField fp = comma == std::string::npos
-                            ? CsvField::text
-                            : parse_double(trim(line.substr(0, comma)), p);
-    const CsvField fl = comma == std::string::npos
-                            ? CsvField::text
-                            : parse_double(trim(line.substr(comma + 1)), level);
-    if (fp != CsvField::number || fl != CsvField::number) {
-      if (header_allowed && looks_like_header(line)) {  // one leading header line
+    const auto [fp, fl] = detail::parse_csv_pair(line, p, level);
+    if (fp != detail::CsvField::number || fl != detail::CsvField::number) {
+      if (header_allowed && detail::looks_like_csv_header(line)) {  // one leading header line
         header_allowed = false;
         continue;
       }
-      const bool range = fp == CsvField::out_of_range || fl == CsvField::out_of_range;
+      const bool range =
+          fp == detail::CsvField::out_of_range || fl == detail::CsvField::out_of_range;
       throw InvalidParameter(where, "'" + line + "'",
                              range ? "holds a number beyond the range of a double"
                                    : "must be two numbers 'position,level'");

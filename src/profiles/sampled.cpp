@@ -1,3 +1,4 @@
+#include "../io/csv_fields.hpp"
 #include "selfalign/profiles/sampled.hpp"
 
 #include <algorithm>
@@ -20,31 +21,6 @@ Interpolation parse_interpolation(const std::string& text) {
 }
 
 namespace {
-enum class Field { number, out_of_range, text };
-
-// One CSV field as a double (C locale, whole field): a number, a number out of the range of a
-// double (1e400), or text.
-Field parse_double(const std::string& text, double& out) {
-  std::string_view v(text);
-  if (!v.empty() && v.front() == '+') v.remove_prefix(1);
-  if (v.empty()) return Field::text;
-  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-  if (end != v.data() + v.size()) return Field::text;
-  if (ec == std::errc::result_out_of_range) return Field::out_of_range;
-  return ec == std::errc{} ? Field::number : Field::text;
-}
-
-// A header names its columns: its first field does not begin like a number.
-bool looks_like_header(const std::string& line) {
-  const char c = line.empty() ? ' ' : line.front();
-  return !(std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.');
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
 }  // namespace
 
 AccelerationSamples read_acceleration_samples(const std::string& path) {
@@ -58,20 +34,16 @@ AccelerationSamples read_acceleration_samples(const std::string& path) {
   bool header_allowed = true;
   while (std::getline(in, line)) {
     ++number;
-    line = trim(line);
+    line = detail::trim_csv(line);
     if (line.empty() || line[0] == '#') continue;
-    const auto comma = line.find(',');
     double t = 0, a = 0;
-    const Field ft = comma == std::string::npos ? Field::text
-                                                : parse_double(trim(line.substr(0, comma)), t);
-    const Field fa = comma == std::string::npos ? Field::text
-                                                : parse_double(trim(line.substr(comma + 1)), a);
-    if (ft != Field::number || fa != Field::number) {
-      if (header_allowed && looks_like_header(line)) {  // one leading header line
+    const auto [ft, fa] = detail::parse_csv_pair(line, t, a);
+    if (ft != detail::CsvField::number || fa != detail::CsvField::number) {
+      if (header_allowed && detail::looks_like_csv_header(line)) {  // one leading header line
         header_allowed = false;
         continue;
       }
-      const bool range = ft == Field::out_of_range || fa == Field::out_of_range;
+      const bool range = ft == detail::CsvField::out_of_range || fa == detail::CsvField::out_of_range;
       throw InvalidParameter("samples", path + " line " + std::to_string(number),
                              range ? "'" + line + "' holds a number beyond the range of a double"
                                    : "'" + line + "' must be two numbers 't,ydd'");

@@ -101,8 +101,10 @@ double bracketed_root(const F& fd, double lo, double hi, double guess, double ti
     if (f == 0) return tau;
     (f < 0 ? lo : hi) = tau;
     double next = df > 0 ? tau - f / df : 0.5 * (lo + hi);
+    // Converged first: a Newton step that lands on the bracket's end has converged, not left
+    // the bracket (testing the bracket first bisected ~15 times a root; benchmark, jerk 12).
+    if (std::abs(next - tau) <= 0.5 * tol) return std::clamp(next, lo, hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (std::abs(next - tau) <= 0.5 * tol) return next;
     tau = next;
   }
   return hi;  // the event is on the far side of the bracket: never before the true root

@@ -12,10 +12,12 @@
 /// design/fourier_design.hpp; all share the multi-start driver of design/local_search.hpp.
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "selfalign/friction/coulomb_friction.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 
 namespace selfalign {
@@ -27,6 +29,10 @@ struct ActuatorLimits {
   double stroke = 0.021;             ///< Δy = max y - min y [-], > 0 (exact)
   double max_velocity = 3.2;         ///< y'_max: |y'| <= y'_max over the period [-], > 0
   double max_acceleration = 1275.0;  ///< y''_max: |y''| <= y''_max over the period [-], > 0
+  /// Jerk limit |d3y/dt3| <= j_max [-], > 0; +inf (default): none. The three-phase family then
+  /// uses the jerk-limited profile (ramps at j_max); the piecewise-constant family, whose
+  /// accelerations jump, is infeasible; a Fourier optimum is checked against it.
+  double max_jerk = std::numeric_limits<double>::infinity();
 };
 
 /// Throws InvalidParameter unless every limit is in [1e-50, 1e50] (error.hpp, kMaxMagnitude).
@@ -47,6 +53,8 @@ struct OptimizeOptions {
   /// Relative central finite-difference step of the gradient-based (Fourier) optimiser:
   /// h_i = fd_step * max(|x_i|, max_j |x_j|), > 0.
   double fd_step = 1e-6;
+  /// The friction law every steady state is computed under (the paper's by default).
+  CoulombFriction law;
   /// Called after each local run as progress(done, total); may be empty.
   std::function<void(int done, int total)> progress;
 };
@@ -68,6 +76,9 @@ struct OptimizationResult {
   ActuatorLimits limits;  ///< the limits it was optimised for
   double max_velocity = 0;      ///< max |y'| over the period of the optimum [-]
   double max_acceleration = 0;  ///< max |y''| over the period of the optimum [-]
+  /// max |d3y/dt3| of the optimum [-]: +inf where the acceleration jumps; the Fourier family's is
+  /// the largest of 64 N samples.
+  double max_jerk = std::numeric_limits<double>::infinity();
   int evaluations = 0;    ///< objective evaluations in all (scan, starts, gradients)
   int starts = 0;         ///< local runs
   std::string message;    ///< what happened, or the binding limit when infeasible

@@ -25,8 +25,10 @@ struct ThreePhaseDesignPoint {
   double max_velocity = 0;         ///< max |y'| = max(y'_ini, D - y'_ini) [-]
 };
 
-/// Evaluates one point (a2, a3 > 0; limits validated by the caller).
-ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& limits, double a2, double a3);
+/// Evaluates one point (a2, a3 > 0; limits validated by the caller) under `law`; with a finite
+/// limits.max_jerk, of the jerk-limited profile at that jerk.
+ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& limits, double a2, double a3,
+                                           const CoulombFriction& law = {});
 
 /// Scan + polish. parameters = (a2, a3). Throws InvalidParameter on misuse.
 OptimizationResult optimize_three_phase(const ActuatorLimits& limits,

@@ -76,7 +76,7 @@ NULLABLE = {
     "sweep period": {"csv_file", "a2", "a3"},
     "sweep stroke": {"csv_file", "a2", "a3"},
     "sweep positioning": {"csv_file"},
-    "optimize": {"results.f", "results.v_bar"},  # infeasible results only: see check_json
+    "optimize": {"results.f", "results.v_bar", "results.max_jerk", "limits.max_jerk"},  # f, v_bar: infeasible results only (check_json); max_jerk: infinite (no limit, jumps)
     "design": {"profile.jerk_m_per_s3"},
 }
 
