@@ -35,10 +35,7 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Conv
 
 VelocityConvergence velocity_convergence(const TableProfile& profile, const CoulombFriction& law,
                                          const ConvergenceOptions& o) {
-  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
-  if (!pwc)
-    throw InvalidParameter("profile", profile.kind(),
-                           "convergence needs a piecewise-constant or piecewise-linear table acceleration");
+  require_exact_profile(profile, "convergence");
   require_moderate("v1", o.v1);
   require_moderate("v2", o.v2);
   require_moderate("t0", o.t0);

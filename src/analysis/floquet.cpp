@@ -33,10 +33,7 @@ FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FloquetOp
 
 FloquetAnalysis floquet_multipliers(const TableProfile& profile, const CoulombFriction& law,
                                     const FloquetOptions& o) {
-  if (!profile.piecewise_polynomial())
-    throw InvalidParameter("profile", profile.kind(),
-                           "Floquet analysis needs a piecewise-constant or piecewise-linear "
-                           "table acceleration");
+  require_exact_profile(profile, "Floquet analysis");
   const PeriodMap map(profile, law);
   return floquet_multipliers(map, o);
 }

@@ -76,6 +76,16 @@ PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
   }
 }
 
+const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& profile,
+                                                        const std::string& analysis) {
+  const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
+  if (!p)
+    throw InvalidParameter("profile", profile.kind(),
+                           analysis + " needs a piecewise-constant or piecewise-linear table "
+                                      "acceleration");
+  return *p;
+}
+
 const ExactSetup& PeriodMap::exact_setup() const {
   if (!exact_)
     throw InvalidParameter("profile", profile_.kind(),

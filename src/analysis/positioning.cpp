@@ -44,10 +44,7 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Coul
                                          double width, double c_mu,
                                          const PositioningOptions& o) {
   validate(o);
-  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
-  if (!pwc)
-    throw InvalidParameter("profile", profile.kind(),
-                           "positioning needs a piecewise-constant or piecewise-linear table acceleration");
+  require_exact_profile(profile, "positioning");
   TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
   PositioningAccuracy r;
   r.steady = steady_state(profile, law, o.steady);

@@ -87,10 +87,7 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const CoulombFriction& law, const ObjectState& start,
                          const StoppingOptions& o) {
-  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
-  if (!pwc)
-    throw InvalidParameter("profile", profile.kind(),
-                           "a stopping run needs a piecewise-constant or piecewise-linear table acceleration");
+  const PiecewisePolynomialProfile& pwc = require_exact_profile(profile, "a stopping run");
   if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");
   for (double p : o.fractions)
     if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");
@@ -127,7 +124,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   if (three_phase && paper) map = std::make_unique<StickPositionMap>(*three_phase, *two);
   double phase = 0;
   if (three_phase)
-    for (const AccelerationSegment& seg : pwc->segments())
+    for (const AccelerationSegment& seg : pwc.segments())
       if (seg.accel < 0) {  // the -y2'' segment begins at t1
         phase = seg.begin;
         break;
@@ -137,7 +134,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   PeriodMap::Run run = period_map.start(start);
   StopWatch watch(x_mu, targets, r);
   watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
-  const double P_segments = pwc->period();
+  const double P_segments = pwc.period();
   long long n_first = run.exact_state().period_index;
   if (static_cast<double>(n_first) * P_segments + phase <= start.t) ++n_first;
   ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "selfalign/analysis/motion_case.hpp"
@@ -95,6 +96,12 @@ class PeriodMap {
   TimeSteppingOptions stepping_;
   std::unique_ptr<ExactSetup> exact_;
 };
+
+/// The profile as the exact solver's piecewise-polynomial form, or InvalidParameter("profile",
+/// its kind, "<analysis> needs a piecewise-constant or piecewise-linear table acceleration"):
+/// the one capability check of the analyses that need the exact solver's arcs.
+const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& profile,
+                                                        const std::string& analysis);
 
 /// The saltation matrix at the end of arc `a` when arc `next` follows (Leine & Nijmeijer): the
 /// jump of the linearised flow across the event that ended `a`.
