@@ -1,0 +1,44 @@
+#!/usr/bin/python3
+"""Library / bare-loop time ratios from one Google Benchmark JSON run of selfalign_bench_simulate.
+
+    build/release/bench/selfalign_bench_simulate --benchmark_filter='per_period|per_step' \
+        --benchmark_repetitions=9 --benchmark_min_time=0.2 \
+        --benchmark_enable_random_interleaving=true \
+        --benchmark_out=sim.json --benchmark_out_format=json
+    bench/bare_loop_ratios.py sim.json
+
+Each library benchmark is paired with its bare, single-purpose loop of the same computation in
+the same binary; the ratio is taken repetition by repetition (CPU time), and the median with
+min-max is printed. Standard library only.
+"""
+import json
+import statistics
+import sys
+
+PAIRS = [
+    ("exact_per_period/case1_uniform", "bare_exact_per_period/case1_uniform"),
+    ("exact_per_period/case3_uniform", "bare_exact_per_period/case3_uniform"),
+    ("exact_per_period/case3_jerk50_uniform", "bare_exact_per_period/case3_jerk50_uniform"),
+    ("exact_per_period/case3_jerk12_uniform", "bare_exact_per_period/case3_jerk12_uniform"),
+    ("time_stepping_per_step/case1_uniform", "bare_time_stepping_per_step/case1_uniform_inlined"),
+    ("time_stepping_per_step/case3_uniform", "bare_time_stepping_per_step/case3_uniform_inlined"),
+]
+
+
+def main(path: str, key: str = "cpu_time") -> None:
+    runs: dict[str, list] = {}
+    for b in json.load(open(path))["benchmarks"]:
+        if b.get("run_type") == "iteration":
+            runs.setdefault(b["run_name"], []).append(b)
+    for k in runs:
+        runs[k].sort(key=lambda b: b["repetition_index"])
+    for lib, bare in PAIRS:
+        if lib not in runs or bare not in runs:
+            continue
+        ratios = [a[key] / b[key] for a, b in zip(runs[lib], runs[bare])]
+        print(f"{lib:40s} / bare: median {statistics.median(ratios):.3f} "
+              f"[{min(ratios):.3f}, {max(ratios):.3f}] over {len(ratios)} repetitions")
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:])
