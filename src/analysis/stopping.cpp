@@ -69,7 +69,7 @@ struct StopWatch final : ArcSink {
 // kObservedAccumulationTol of the span x_stick,min - x_mu.
 bool observed_accumulation(const std::vector<double>& x, double x_stick_min, double x_mu) {
   const std::size_t n = x.size();
-  if (n < 4 || !std::isfinite(x_stick_min)) return false;
+  if (n < 5 || !std::isfinite(x_stick_min)) return false;  // three steps and the one before
   const double span = std::max(x_stick_min - x_mu, 0.0) + 1e-300;
   for (std::size_t i = n - 3; i < n; ++i)
     if (!(x[i] >= x[i - 1]) || !(x[i] - x[i - 1] <= x[i - 1] - x[i - 2] || x[i] == x[i - 1]))
