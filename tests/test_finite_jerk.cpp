@@ -98,6 +98,7 @@ TEST(FiniteJerk, StickBreakingAgreesWithTimeSteppingToFirstOrder) {
   ASSERT_GE(breaks, 3);
   const double e5 = testing_support::moreau_rms_error(profile, law, t_end, 1e-5, 4);
   const double e6 = testing_support::moreau_rms_error(profile, law, t_end, 1e-6, 4);
+  RecordProperty("errors", testing::PrintToString(std::vector<double>{e5, e6}));
   EXPECT_LT(e5, 10 * 1e-5);
   EXPECT_LT(e6, 10 * 1e-6);
   EXPECT_GE(std::log10(e5 / e6), 0.8) << e5 << " " << e6;
