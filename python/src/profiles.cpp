@@ -189,7 +189,8 @@ void bind_fourier(py::module_& m) {
 A Fourier-series table profile of any order N (Sect. 4.4.2):
   y(t) = c_0 + sum_{k=1..N} (A_k cos(k w t) + B_k sin(k w t)),   w = 2 pi / Δt,
 with c_0 chosen so that min y = 0. Periodic in y and y' by construction. Not piecewise
-constant: simulate it with Method.time_stepping.)doc")
+constant: the exact smooth-profile solver takes it on piecewise-constant friction levels
+(simulate/smooth_exact.hpp; Method.exact), time-stepping elsewhere.)doc")
       .def(py::init([](double period, const py::object& cos_coeffs, const py::object& sin_coeffs) {
              return FourierProfile(period, to_vector(cos_coeffs, "cos_coeffs"),
                                    to_vector(sin_coeffs, "sin_coeffs"));

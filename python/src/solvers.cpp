@@ -109,7 +109,8 @@ The closed form of one exact arc (an enum.IntEnum).
                          {{"stick", ArcKind::stick},
                           {"parabolic", ArcKind::parabolic},
                           {"harmonic", ArcKind::harmonic},
-                          {"hyperbolic", ArcKind::hyperbolic}});
+                          {"hyperbolic", ArcKind::hyperbolic},
+                          {"driven", ArcKind::driven}});
   bind_int_enum<ArcEnd>(m, "ArcEnd", R"doc(
 What ended an arc (an enum.IntEnum).
   acceleration_switch = 0  the table acceleration changed (segment end)

@@ -73,7 +73,7 @@ accelerations with Δy / Δt^2.)doc")
   py::class_<ScaledFourierFamily, ProfileFamily>(m, "ScaledFourierFamily", R"doc(
 One Fourier shape (Sect. 4.4.2) with its coefficients scaled to the stroke: the members share
 the harmonic content and differ in period and amplitude. Their steady states use
-time-stepping (SteadyStateOptions.steps_per_period).)doc")
+the exact smooth-profile solver.)doc")
       .def(py::init([](const py::object& cos_coeffs, const py::object& sin_coeffs) {
              return ScaledFourierFamily(to_vector(cos_coeffs, "cos_coeffs"),
                                         to_vector(sin_coeffs, "sin_coeffs"));

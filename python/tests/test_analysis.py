@@ -61,11 +61,16 @@ def test_objective_is_eq_11_elementwise():
     assert sa.objective_f(0.5, c=2.0) == pytest.approx(2.0)
 
 
-def test_fourier_steady_state_uses_time_stepping():
+def test_fourier_steady_state_is_exact_and_a_pure_harmonic_walks_nowhere():
+    # Since issue 11 a Fourier profile on the uniform table takes the exact smooth-profile
+    # solver. A single harmonic is odd under t -> t + Δt/2 (y'' changes sign), so its unique
+    # steady state has v̄ = 0 (docs/single-harmonic-steady-state.md): peak y'' = 0.05 (2π)^2
+    # = 1.97 > 1, so it does slip, both ways alike.
     s = sa.steady_state(sa.FourierProfile(1.0, [0.0], [0.05]),
                         sa.SteadyStateOptions(steps_per_period=2000))
-    assert s.method == sa.Method.time_stepping
+    assert s.method == sa.Method.exact
     assert s.converged
+    assert abs(s.v_bar) < 1e-13
 
 
 def test_slip_slip_multiplier_formula_eq_33():

@@ -41,7 +41,8 @@ FloquetAnalysis floquet_multipliers(const TableProfile& profile, const CoulombFr
 FloquetAnalysis floquet_multipliers(const PeriodMap& map, const FloquetOptions& o) {
   // Beyond 0.1 (a tenth of the length scale) a central difference approximates no derivative.
   require_in_half_open("fd_step", o.fd_step, 0.0, 0.1);
-  map.exact_setup();  // saltation needs the arcs: refuse a time-stepping map by name
+  if (!map.has_arcs())  // saltation needs the arcs: refuse a time-stepping map by name
+    map.exact_setup();
   FloquetAnalysis r;
   r.steady = steady_state(map, o.steady);
   // 2. Saltation: transition matrices of the arcs of one steady period, coupled at events.

@@ -52,26 +52,29 @@ PeriodMap::PeriodMap(const TableProfile& profile, const CoulombFriction& law,
       friction_(owned_.get()),
       law_(law),
       options_(options) {
-  const PiecewisePolynomialProfile* pwp = profile.piecewise_polynomial();
-  if (pwp) exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *friction_->piecewise_affine(), law_});
-  else {
-    if (options.steps_per_period < 1)
-      throw InvalidParameter("steps_per_period", options.steps_per_period, "must be >= 1");
-    stepping_ = {profile.period() / options.steps_per_period, options.theta};
-    validate(stepping_);
-  }
+  choose_solver();
 }
 
 PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
                      const CoulombFriction& law, const PeriodMapOptions& options)
     : profile_(profile), friction_(&friction), law_(law), options_(options) {
-  const PiecewisePolynomialProfile* pwp = profile.piecewise_polynomial();
-  const PiecewiseAffineFriction* affine = friction.piecewise_affine();
-  if (pwp && affine) exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
-  else {
-    if (options.steps_per_period < 1)
-      throw InvalidParameter("steps_per_period", options.steps_per_period, "must be >= 1");
-    stepping_ = {profile.period() / options.steps_per_period, options.theta};
+  choose_solver();
+}
+
+// Exact where a closed form exists: piecewise-polynomial acceleration on a piecewise-affine
+// level, or a smooth motion on a piecewise-constant level; time-stepping otherwise.
+void PeriodMap::choose_solver() {
+  const PiecewisePolynomialProfile* pwp = profile_.piecewise_polynomial();
+  const SmoothMotion* motion = profile_.smooth();
+  const PiecewiseAffineFriction* affine = friction_->piecewise_affine();
+  if (pwp && affine) {
+    exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
+  } else if (motion && affine && piecewise_constant_level(*affine)) {
+    smooth_ = std::make_unique<SmoothSetup>(SmoothSetup{*motion, *affine, law_});
+  } else {
+    if (options_.steps_per_period < 1)
+      throw InvalidParameter("steps_per_period", options_.steps_per_period, "must be >= 1");
+    stepping_ = {profile_.period() / options_.steps_per_period, options_.theta};
     validate(stepping_);
   }
 }
@@ -109,6 +112,14 @@ ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
     }
     return s.object;
   }
+  if (smooth_) {
+    ObjectState s{0, x0, v0};
+    CensusSink both;
+    both.inner = sink;
+    both.census = census;
+    advance_smooth(*smooth_, s, P, census ? &both : sink);
+    return s;
+  }
   TimeSteppingState s = make_time_stepping_state(profile_, {0, x0, v0});
   SampleCensus samples;
   samples.census = census;
@@ -118,8 +129,13 @@ ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
 }
 
 std::vector<Arc> PeriodMap::arcs(double x0, double v0) const {
-  const ExactSetup& setup = exact_setup();
   ArcList list;
+  if (smooth_) {
+    ObjectState s{0, x0, v0};
+    advance_smooth(*smooth_, s, profile_.period(), &list);
+    return std::move(list.arcs);
+  }
+  const ExactSetup& setup = exact_setup();
   ExactState s = make_exact_state(setup, {0, x0, v0});
   advance_exact(setup, s, profile_.period(), &list);
   return std::move(list.arcs);
@@ -181,17 +197,22 @@ Eigen::Matrix2d PeriodMap::finite_difference_monodromy(double x0, double v0, dou
 
 PeriodMap::Run::Run(const PeriodMap& map, const ObjectState& start) : map_(&map) {
   if (map.exact_) exact_ = make_exact_state(*map.exact_, start);
+  else if (map.smooth_) smooth_state_ = start;
   else stepping_ = make_time_stepping_state(map.profile_, start);
 }
 
 const ObjectState& PeriodMap::Run::state() const noexcept {
-  return map_->exact_ ? exact_.object : stepping_.object;
+  return map_->exact_ ? exact_.object : map_->smooth_ ? smooth_state_ : stepping_.object;
 }
 
 const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
   if (map_->exact_) {
     advance_exact(*map_->exact_, exact_, t_end, sink);
     return exact_.object;
+  }
+  if (map_->smooth_) {
+    advance_smooth(*map_->smooth_, smooth_state_, t_end, sink);
+    return smooth_state_;
   }
   const double h = map_->stepping_.step;
   const long long target = std::llround((t_end - stepping_.t0) / h);

@@ -62,6 +62,12 @@ FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
   if (!any)
     throw InvalidParameter("fourier coefficients", "all zero",
                            "need at least one nonzero coefficient (order >= 1)");
+  for (std::size_t k = 0; k < n; ++k) {
+    const double kw = static_cast<double>(k + 1) * 2 * std::numbers::pi / period_;
+    const double amplitude = std::hypot(cos_[k], sin_[k]);
+    jerk_bound_ += kw * kw * kw * amplitude;
+    snap_bound_ += kw * kw * kw * kw * amplitude;
+  }
   const int samples = 128 * static_cast<int>(n);
   auto y = [this](double t) { return derivatives(t)[0]; };
   auto yd = [this](double t) { return derivatives(t)[1]; };

@@ -7,6 +7,7 @@
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/smooth_exact.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
@@ -45,6 +46,23 @@ class ExactRunner final : public Runner {
  private:
   ExactSetup setup_;
   ExactState state_;
+  std::size_t work_ = 0;
+};
+
+class SmoothRunner final : public Runner {
+ public:
+  SmoothRunner(const SmoothMotion& m, const PiecewiseAffineFriction& f, const CoulombFriction& law,
+               const ObjectState& s0)
+      : setup_{m, f, law}, state_(s0) {}
+  ObjectState advance_to(double t) override {
+    work_ += advance_smooth(setup_, state_, t);
+    return state_;
+  }
+  std::size_t work() const override { return work_; }
+
+ private:
+  SmoothSetup setup_;
+  ObjectState state_;
   std::size_t work_ = 0;
 };
 
@@ -101,15 +119,22 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   if (o.method == Method::exact) {
     const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
     const PiecewiseAffineFriction* f = friction.piecewise_affine();
-    if (!p)
-      throw InvalidParameter("method", "exact",
-                             "needs a piecewise-constant or piecewise-linear acceleration profile (" + profile.kind() +
-                                 " is not); use time-stepping");
-    if (!f)
-      throw InvalidParameter("method", "exact",
-                             "needs a piecewise-affine friction map; use time-stepping");
-    runner = std::make_unique<ExactRunner>(*p, *f, law, initial);
-    if (grid == 0) grid = profile.period() / 200;
+    const SmoothMotion* motion = profile.smooth();
+    if (!p && motion && f && piecewise_constant_level(*f)) {  // smooth_exact.hpp
+      runner = std::make_unique<SmoothRunner>(*motion, *f, law, initial);
+      if (grid == 0) grid = profile.period() / 200;
+    } else {
+      if (!p)
+        throw InvalidParameter("method", "exact",
+                               "needs a piecewise-constant or piecewise-linear acceleration, or a "
+                               "smooth profile on a piecewise-constant friction map (" +
+                                   profile.kind() + " here); use time-stepping");
+      if (!f)
+        throw InvalidParameter("method", "exact",
+                               "needs a piecewise-affine friction map; use time-stepping");
+      runner = std::make_unique<ExactRunner>(*p, *f, law, initial);
+      if (grid == 0) grid = profile.period() / 200;
+    }
   } else {
     validate(ts);
     if (o.step > profile.period())

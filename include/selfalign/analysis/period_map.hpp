@@ -2,8 +2,10 @@
 /// \file period_map.hpp
 /// The one period map every analysis uses: a table profile, the friction level m(x) of the
 /// table's field over the object's footprint, and the friction law, integrated over one table
-/// period (or any horizon) by the exact solver when the profile's acceleration is piecewise
-/// polynomial and the level piecewise affine, by Moreau time-stepping otherwise.
+/// period (or any horizon) by an exact solver where a closed form exists (piecewise-polynomial
+/// acceleration on a piecewise-affine level: simulate/exact.hpp; a smooth motion such as a
+/// Fourier series on a piecewise-constant level: simulate/smooth_exact.hpp), by Moreau
+/// time-stepping otherwise.
 ///
 ///   P : (x, x') at t0  ->  (x, x') at t0 + Δt,
 /// with its arcs (exact), its stick/slip census, and its sensitivity dP/d(x, x'): the monodromy
@@ -23,6 +25,7 @@
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/simulate.hpp"
+#include "selfalign/simulate/smooth_exact.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
@@ -47,20 +50,25 @@ class PeriodMap {
   const TableProfile& profile() const noexcept { return profile_; }
   const FrictionMap& friction() const noexcept { return *friction_; }
   const CoulombFriction& law() const noexcept { return law_; }
-  Method method() const noexcept { return exact_ ? Method::exact : Method::time_stepping; }
+  Method method() const noexcept {
+    return exact_ || smooth_ ? Method::exact : Method::time_stepping;
+  }
+  /// True when the map is exact and so has arcs (piecewise-polynomial profiles, or smooth
+  /// motions on piecewise-constant levels).
+  bool has_arcs() const noexcept { return exact_ || smooth_; }
   double period() const noexcept { return profile_.period(); }
   /// Time-stepping step h [-] (0 when exact).
-  double step() const noexcept { return exact_ ? 0.0 : stepping_.step; }
+  double step() const noexcept { return has_arcs() ? 0.0 : stepping_.step; }
   const TimeSteppingOptions& stepping() const noexcept { return stepping_; }
 
   /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only)
   /// receives every arc; a census (either method) the stick/slip classes of the period.
   ObjectState operator()(double x0, double v0, ArcSink* sink = nullptr,
                          MotionCensus* census = nullptr) const;
-  /// The arcs of one period from (x0, x'0) at phase 0 (exact only; throws otherwise).
+  /// The arcs of one period from (x0, x'0) at phase 0 (has_arcs() only; throws otherwise).
   std::vector<Arc> arcs(double x0, double v0) const;
   /// Monodromy matrix of the period from (x0, x'0) by saltation: the arcs' transition
-  /// matrices (arc.hpp) coupled by the saltation matrices of their events (exact only).
+  /// matrices (arc.hpp) coupled by the saltation matrices of their events (has_arcs() only).
   Eigen::Matrix2d saltation_monodromy(double x0, double v0) const;
   /// Monodromy matrix by central finite differences of step h in x and x' (either method).
   Eigen::Matrix2d finite_difference_monodromy(double x0, double v0, double h) const;
@@ -80,6 +88,7 @@ class PeriodMap {
     Run(const PeriodMap& map, const ObjectState& start);
     const PeriodMap* map_;
     ExactState exact_{};
+    ObjectState smooth_state_{};
     TimeSteppingState stepping_{};
   };
   Run start(const ObjectState& state) const { return Run(*this, state); }
@@ -95,6 +104,8 @@ class PeriodMap {
   PeriodMapOptions options_;
   TimeSteppingOptions stepping_;
   std::unique_ptr<ExactSetup> exact_;
+  std::unique_ptr<SmoothSetup> smooth_;
+  void choose_solver();
 };
 
 /// The profile as the exact solver's piecewise-polynomial form, or InvalidParameter("profile",

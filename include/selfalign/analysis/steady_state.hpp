@@ -11,7 +11,8 @@
 /// of x'_0s, |P(v) - v| / (1 - λ) with λ the secant slope of P, not on the residual |P(v) - v|
 /// (which understates the error by 1/(1 - λ2)); or, where the period map's rounding keeps the
 /// residual from falling further, at that floor. Exact solver where the table acceleration is
-/// piecewise constant, time-stepping otherwise.
+/// piecewise constant or linear, or the profile is smooth (Fourier: simulate/smooth_exact.hpp);
+/// time-stepping otherwise.
 
 #include <string>
 

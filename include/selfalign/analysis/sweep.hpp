@@ -124,7 +124,7 @@ class ScaledShapeFamily final : public ProfileFamily {
 
 /// One Fourier shape (Sect. 4.4.2) with its coefficients scaled to the stroke: the members
 /// share the harmonic content and differ in period and amplitude. Steady states of these
-/// profiles use time-stepping (SweepOptions::steady.steps_per_period).
+/// profiles use the exact smooth-profile solver (simulate/smooth_exact.hpp).
 class ScaledFourierFamily final : public ProfileFamily {
  public:
   /// Coefficients of y(t) = sum A_k cos(k w t) + B_k sin(k w t), any amplitude (rescaled).

@@ -12,7 +12,7 @@
 
 namespace selfalign {
 
-class FourierProfile final : public TableProfile {
+class FourierProfile final : public TableProfile, public SmoothMotion {
  public:
   /// \param period  Δt [-], in [1e-50, 1e50]
   /// \param cos_coeffs A_1..A_N [-], \param sin_coeffs B_1..B_N [-] (shorter one padded with 0),
@@ -25,6 +25,11 @@ class FourierProfile final : public TableProfile {
   double peak_acceleration() const override { return peak_; }
   double stroke() const override { return stroke_; }
   std::string kind() const override { return "fourier"; }
+  const SmoothMotion* smooth() const override { return this; }
+  /// sum_k (k w)^3 sqrt(A_k^2 + B_k^2) and sum_k (k w)^4 sqrt(A_k^2 + B_k^2): bounds of |y^(3)|
+  /// and |y^(4)| [-].
+  double jerk_bound() const override { return jerk_bound_; }
+  double snap_bound() const override { return snap_bound_; }
 
   int order() const noexcept { return static_cast<int>(cos_.size()); }
   const std::vector<double>& cos_coeffs() const noexcept { return cos_; }
@@ -33,12 +38,12 @@ class FourierProfile final : public TableProfile {
 
   /// y and its first three derivatives at t [-], in one O(N) pass: cos/sin of k w t by the
   /// rotation recurrence (re-seeded every 16 harmonics), on the phase of t in [0, Δt).
-  std::array<double, 4> derivatives(double t) const;
+  std::array<double, 4> derivatives(double t) const override;
 
  private:
   double period_;
   std::vector<double> cos_, sin_;
-  double offset_ = 0, peak_ = 0, stroke_ = 0;
+  double offset_ = 0, peak_ = 0, stroke_ = 0, jerk_bound_ = 0, snap_bound_ = 0;
 };
 
 }  // namespace selfalign

@@ -7,11 +7,27 @@
 /// velocity has zero mean (the table returns to its start position), and by convention
 /// min y = 0 (Sect. 4.4.3, constraint 1), so the stroke is Δy = max y.
 
+#include <array>
 #include <string>
 
 namespace selfalign {
 
 class PiecewisePolynomialProfile;
+
+/// A smooth table motion with y and its first three derivatives in closed form and bounds on
+/// its third and fourth derivatives: what the exact solver for smooth profiles needs
+/// (simulate/smooth_exact.hpp). Under a constant friction level the slip velocity is then
+/// closed-form, x'(t) = x'(t0) - (y'(t) - y'(t0)) - sigma k m (t - t0), and its events are
+/// isolated by these bounds.
+class SmoothMotion {
+ public:
+  virtual ~SmoothMotion() = default;
+  /// y, y', y'', y^(3) at any real t [-].
+  virtual std::array<double, 4> derivatives(double t) const = 0;
+  /// Upper bounds of sup_t |y^(3)(t)| and sup_t |y^(4)(t)| [-].
+  virtual double jerk_bound() const = 0;
+  virtual double snap_bound() const = 0;
+};
 
 /// Table position, velocity and acceleration at one time [-].
 struct TableState {
@@ -41,6 +57,9 @@ class TableProfile {
   /// piecewise linear in time), when it is one (then the exact event-driven solver applies);
   /// nullptr otherwise.
   virtual const PiecewisePolynomialProfile* piecewise_polynomial() const { return nullptr; }
+  /// The profile as a smooth motion, when it is one (then the exact solver for smooth profiles
+  /// applies on piecewise-constant friction levels); nullptr otherwise.
+  virtual const SmoothMotion* smooth() const { return nullptr; }
 };
 
 }  // namespace selfalign

@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <variant>
 
+#include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
 
 namespace selfalign {
@@ -85,12 +86,33 @@ struct HyperbolicArc {
   Transition transition(double tau) const noexcept;
 };
 
+/// Slip on a constant friction level under a smooth table motion (profiles/table_profile.hpp,
+/// SmoothMotion): x'' = accel - y''(t), in closed form for any motion with y, y' known:
+///   x' = x'0 - (y'(t0 + tau) - y'0) + accel tau
+///   x  = x0 + x'0 tau - (y(t0 + tau) - y0 - y'0 tau) + accel tau^2 / 2.
+struct DrivenArc {
+  const SmoothMotion* motion = nullptr;  ///< the table motion (borrowed)
+  double t0 = 0;                         ///< absolute start time, the motion's clock [-]
+  double y0 = 0, yd0 = 0;                ///< y, y' at t0 [-]
+  double accel = 0;                      ///< friction's part of x'': -sigma k m [-]
+
+  PosVel state(double x0, double v0, double tau) const noexcept {
+    const auto d = motion->derivatives(t0 + tau);
+    return {x0 + v0 * tau - (d[0] - y0 - yd0 * tau) + 0.5 * accel * tau * tau,
+            v0 - (d[1] - yd0) + accel * tau};
+  }
+  double acceleration(double, double, double tau) const noexcept {
+    return accel - motion->derivatives(t0 + tau)[2];
+  }
+  Transition transition(double tau) const noexcept { return {1, tau, 0, 1}; }
+};
+
 /// The closed set of arc shapes. Add a shape here (with state, acceleration, transition and
 /// its events in src/simulate/arc_events.hpp) and every visitor must handle it.
-using ArcShape = std::variant<StickArc, PolynomialArc, HarmonicArc, HyperbolicArc>;
+using ArcShape = std::variant<StickArc, PolynomialArc, HarmonicArc, HyperbolicArc, DrivenArc>;
 
 /// The shape's index, for tables and bindings (ArcKind(shape.index())).
-enum class ArcKind : std::uint8_t { stick, parabolic, harmonic, hyperbolic };
+enum class ArcKind : std::uint8_t { stick, parabolic, harmonic, hyperbolic, driven };
 
 /// What ended an arc.
 enum class ArcEnd : std::uint8_t {

@@ -1,0 +1,50 @@
+#pragma once
+/// \file smooth_exact.hpp
+/// Exact event-driven solution of eq. (6) for smooth table motions (Fourier series of any
+/// order, or any profile that is a SmoothMotion) on piecewise-constant friction levels, under a
+/// Coulomb law with static >= kinetic coefficients.
+///
+/// On a constant level m the slip velocity is closed-form for any motion with y' known:
+///   x'(t) = x'(t0) - (y'(t) - y'(t0)) - sigma k_sigma m (t - t0)          (DrivenArc, arc.hpp)
+/// and x(t) needs only y(t). The events are roots of these closed forms, isolated so that none
+/// is missed:
+///   - x' = 0: while slipping, g = sigma x' > 0 and |g''| = |y'''| <= Y3 (the motion's jerk
+///     bound), so g(t + d) >= g + g' d - Y3 d^2 / 2. The solver steps by the largest d keeping
+///     that lower bound >= 0: it never steps over a zero of x', and near a simple zero the
+///     steps converge quadratically (d ~ g/|g'|). A zero is declared when the step falls below
+///     1e-15 of the time;
+///   - stick breaking: while stuck, s m - y'' >= 0 and s m + y'' >= 0, each with a bound on its
+///     second derivative |y''''| <= Y4: the same safe steps on both;
+///   - friction-level boundaries: x is monotone while slipping, so the first step that passes a
+///     boundary brackets its only crossing, found by safeguarded Newton steps.
+/// Position-dependent levels with slopes (the transition region) are not taken here (their
+/// forced arcs are not closed-form for a general motion): PeriodMap and simulate() use
+/// time-stepping for them.
+
+#include <cstddef>
+
+#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/exact.hpp"
+
+namespace selfalign {
+
+/// What the smooth solver integrates: a smooth motion (borrowed) on a piecewise-constant level
+/// (borrowed) under a law.
+struct SmoothSetup {
+  const SmoothMotion& motion;
+  const PiecewiseAffineFriction& friction;
+  CoulombFriction law{};
+};
+
+/// True when the smooth solver can take this level: every piece has slope 0.
+bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept;
+
+/// Advances `state` to t_end (>= state.t), calling sink (if any) for every arc (DrivenArc for
+/// slips, StickArc for sticks). Returns the number of arcs. Throws InvalidParameter for a level
+/// with sloped pieces, a non-finite state or t_end.
+std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
+                           ArcSink* sink = nullptr);
+
+}  // namespace selfalign

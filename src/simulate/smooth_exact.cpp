@@ -1,0 +1,176 @@
+#include "selfalign/simulate/smooth_exact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "arc_events.hpp"
+#include "selfalign/error.hpp"
+
+namespace selfalign {
+
+namespace {
+
+using detail::kInf;
+
+// The largest d >= 0 with f + f1 d - (bound / 2) d^2 >= 0, for f >= 0 (a safe step: a function
+// with value f, slope f1 and |second derivative| <= bound stays >= 0 over [0, d]). Written
+// without cancellation on both signs of f1.
+double safe_step(double f, double f1, double bound) {
+  if (f < 0 || (f == 0 && f1 <= 0)) return 0.0;
+  if (bound == 0) return f1 < 0 ? f / -f1 : kInf;
+  const double root = std::sqrt(f1 * f1 + 2 * bound * f);
+  return f1 >= 0 ? (f1 + root) / bound : 2 * f / (root - f1);
+}
+
+// A step shorter than this at time t has converged (16 roundings of t).
+double time_resolution(double t) {
+  return 16 * std::numeric_limits<double>::epsilon() * (std::abs(t) + 1e-300);
+}
+
+constexpr long long kMaxSteps = 100'000'000;  // a guard, never reached by resolvable motions
+
+}  // namespace
+
+bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept {
+  for (const AffinePiece& p : friction.pieces())
+    if (p.slope != 0) return false;
+  return true;
+}
+
+std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
+                           ArcSink* sink) {
+  if (!piecewise_constant_level(setup.friction))
+    throw InvalidParameter("friction", "sloped pieces",
+                           "the smooth-profile solver needs a piecewise-constant friction level "
+                           "(use time-stepping)");
+  require_finite("t0", state.t);
+  require_moderate("x0", state.x);
+  require_moderate("v0", state.xd);
+  if (!std::isfinite(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
+  const SmoothMotion& M = setup.motion;
+  const auto pieces = setup.friction.pieces();
+  const CoulombFriction& law = setup.law;
+  const double Y3 = M.jerk_bound(), Y4 = M.snap_bound();
+  double t = state.t, x = state.x, v = state.xd;
+  std::size_t count = 0;
+  int breaking = 0;  // after a stick break: the direction the slip takes
+  bool from_break = false;
+  while (t < t_end) {
+    const std::array<double, 4> d0 = M.derivatives(t);
+    int sigma = 0;
+    std::size_t pi = 0;
+    double m = 0, t1 = t_end, x1 = x, v1 = 0;
+    ArcEnd end = ArcEnd::horizon;
+    ArcShape shape;
+    from_break = false;
+    if (v == 0) {
+      pi = setup.friction.piece_index(x);
+      m = pieces[pi].bound(x);
+      const double ms = law.static_coefficient() * m;
+      if (breaking != 0) sigma = breaking;
+      else if (!sticks(d0[2], ms)) sigma = d0[2] > 0 ? -1 : 1;
+      from_break = breaking != 0;
+      breaking = 0;
+      if (sigma == 0) {  // stuck until y'' reaches +ms or -ms
+        double tau = 0, ydd = d0[2], yddd = d0[3];
+        for (long long i = 0; i < kMaxSteps; ++i) {
+          const double up = safe_step(ms - ydd, -yddd, Y4), down = safe_step(ms + ydd, yddd, Y4);
+          const double step = std::min(up, down);
+          if (t + tau + step >= t_end) {
+            tau = t_end - t;
+            break;
+          }
+          if (step <= time_resolution(t + tau)) {
+            const double rate = up <= down ? -yddd : yddd;  // d/dt of the margin that closes
+            if (rate >= 0) {  // a touch of the bound, not a crossing: step past it
+              tau += 1024 * time_resolution(t + tau);
+              const auto d = M.derivatives(t + tau);
+              ydd = d[2];
+              yddd = d[3];
+              continue;
+            }
+            tau += step;
+            end = ArcEnd::stick_break;
+            breaking = up <= down ? -1 : 1;  // y'' reached +ms: slip backward
+            break;
+          }
+          tau += step;
+          const auto d = M.derivatives(t + tau);
+          ydd = d[2];
+          yddd = d[3];
+        }
+        t1 = end == ArcEnd::horizon ? t_end : t + tau;
+        shape = StickArc{};
+      }
+    } else {
+      sigma = v > 0 ? 1 : -1;
+    }
+
+    if (sigma != 0) {  // slip: g = sigma x' >= 0, |g''| <= Y3
+      pi = setup.friction.piece_index(x);
+      if (sigma < 0 && pi > 0 && x == pieces[pi].begin) --pi;  // moving left from a boundary
+      const AffinePiece& pc = pieces[pi];
+      m = pc.bound_at_begin;
+      const double X = sigma > 0 ? pc.end : pc.begin;
+      const DrivenArc arc{&M, t, d0[0], d0[1], -sigma * law.kinetic(sigma) * m};
+      const double T = t_end - t;
+      // At each step point: g = sigma x' >= 0, g1 = sigma x'', g2 = sigma x^(3) = -sigma y^(3).
+      // Two lower bounds keep g >= 0 over the next step: g + g1 d - Y3 d^2/2 >= 0, and, while
+      // g1 >= 0, g1 + g2 d - Y4 d^2/2 >= 0 (g still rising: this one carries a slip that
+      // starts with x'' = 0, static = kinetic at a break). The longer of the two is safe.
+      double tau = 0, g = sigma * v + 0.0, g1 = sigma * (arc.accel - d0[2]), g2 = -sigma * d0[3];
+      if (from_break) g1 = std::max(g1, 0.0);  // |y''| = s m at a break: x'' >= 0 but rounding
+      for (long long i = 0; i < kMaxSteps; ++i) {
+        const double step = std::max(safe_step(g, g1, Y3), g1 >= 0 ? safe_step(g1, g2, Y4) : 0.0);
+        const double tn = std::min(tau + step, T);
+        const std::array<double, 4> d = M.derivatives(t + tn);
+        const double xn = x + v * tn - (d[0] - arc.y0 - arc.yd0 * tn) + 0.5 * arc.accel * tn * tn;
+        const double vn = v - (d[1] - arc.yd0) + arc.accel * tn;
+        if (std::isfinite(X) && sigma * (xn - X) >= 0) {  // the boundary: one crossing
+          auto position = [&](double s) {
+            const PosVel q = arc.state(x, v, s);
+            return std::pair{sigma * (q.x - X), sigma * q.xd};
+          };
+          tau = detail::bracketed_root(position, tau, tn, 0.5 * (tau + tn), std::abs(t) + tn);
+          end = ArcEnd::friction_boundary;
+          break;
+        }
+        if (tn >= T) {
+          tau = T;
+          break;
+        }
+        tau = tn;
+        g = sigma * vn;
+        if (!(g > 0) || step <= time_resolution(t + tau)) {
+          end = ArcEnd::velocity_zero;
+          break;
+        }
+        g1 = sigma * (arc.accel - d[2]);
+        g2 = -sigma * d[3];
+      }
+      const PosVel p = arc.state(x, v, tau);
+      x1 = end == ArcEnd::friction_boundary ? X : p.x;
+      v1 = end == ArcEnd::velocity_zero ? 0.0 : p.xd;
+      if ((v1 > 0 && sigma < 0) || (v1 < 0 && sigma > 0)) v1 = 0;
+      t1 = end == ArcEnd::horizon ? t_end : t + tau;
+      shape = arc;
+    }
+
+    if (sink) {
+      Arc a{t, t1, x, v, x1, v1, d0[2], d0[3], m, 0.0, shape};
+      a.direction = static_cast<std::int8_t>(sigma);
+      a.end = end;
+      a.piece = pi;
+      sink->on_arc(a);
+    }
+    ++count;
+    t = t1;
+    x = x1;
+    v = v1;
+  }
+  state = {t, x, v};
+  return count;
+}
+
+}  // namespace selfalign
