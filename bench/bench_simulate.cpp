@@ -25,7 +25,10 @@
 #include <string>
 #include <vector>
 
+#include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/design/fourier_design.hpp"
 #include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -438,4 +441,57 @@ BENCHMARK_CAPTURE(bare_time_stepping_per_step, case3_uniform_inlined, kCase3,
 BENCHMARK_CAPTURE(bare_time_stepping_per_step, case3_uniform_ppvelocity, kCase3,
                   BareVelocity::ppvelocity)
     ->Unit(benchmark::kMicrosecond);
+
+// ---- Fourier profiles: the exact smooth-profile solver beside Moreau (issue 11) ------------
+// The order-12 Fourier series of a Fig. 6-like three-phase profile (Δt = 0.072, Δy = 0.021,
+// y2'' = 1000, y3'' = 80, Lanczos-smoothed), on the uniform table: the exact steady state
+// (converged to ~1e-14 in x'_0s) and Moreau steady states at two step sizes, whose v̄ error
+// against the exact one is reported as a counter (the accuracy each buys).
+const FourierProfile& fig6_like_order12() {
+  static const FourierProfile profile = [] {
+    std::vector<double> a, b;
+    const ThreePhaseProfile three({0.072, 0.021, 1000, 80});
+    fourier_series_of(*three.piecewise_polynomial(), 12, a, b);
+    return FourierProfile(0.072, a, b);
+  }();
+  return profile;
+}
+
+void fourier_steady_state_exact(benchmark::State& st) {
+  const FourierProfile& p = fig6_like_order12();
+  SteadyState r;
+  for (auto _ : st) {
+    r = steady_state(p);
+    benchmark::DoNotOptimize(r);
+  }
+  st.counters["periods"] = r.periods;
+  st.counters["x_dot_0s_error"] = r.x_dot_0s_error;
+}
+
+void fourier_steady_state_moreau(benchmark::State& st) {
+  const FourierProfile& p = fig6_like_order12();
+  const double v_exact = steady_state(p).v_bar;
+  struct Opaque final : TableProfile {  // the same motion, without its closed form
+    const TableProfile& q;
+    explicit Opaque(const TableProfile& r) : q(r) {}
+    double period() const override { return q.period(); }
+    TableState state(double t) const override { return q.state(t); }
+    double velocity(double t) const override { return q.velocity(t); }
+    double peak_acceleration() const override { return q.peak_acceleration(); }
+    double stroke() const override { return q.stroke(); }
+    std::string kind() const override { return "opaque"; }
+  } hidden(p);
+  SteadyStateOptions o;
+  o.steps_per_period = static_cast<int>(st.range(0));
+  SteadyState r;
+  for (auto _ : st) {
+    r = steady_state(hidden, o);
+    benchmark::DoNotOptimize(r);
+  }
+  st.counters["periods"] = r.periods;
+  st.counters["v_bar_error"] = std::abs(r.v_bar - v_exact);
+}
+
+BENCHMARK(fourier_steady_state_exact)->Unit(benchmark::kMicrosecond);
+BENCHMARK(fourier_steady_state_moreau)->Arg(2000)->Arg(20000)->Unit(benchmark::kMicrosecond);
 }  // namespace

@@ -28,6 +28,7 @@ std::string unit_label(UnitSystem units, Dimension d) {
     case Dimension::time: return "s";
     case Dimension::velocity: return "m/s";
     case Dimension::acceleration: return "m/s^2";
+    case Dimension::jerk: return "m/s^3";
     case Dimension::none: break;
   }
   return "[-]";

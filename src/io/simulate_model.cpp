@@ -161,7 +161,7 @@ SimulateModel build_simulate_model(const SimulateConfig& config) {
   SimulateModel m{units,
                   Scales(*resolved.length_scale, *resolved.mu, *resolved.g),
                   require_positive("mass", *resolved.mass),
-                  0.0, nullptr, nullptr, {}, {}};
+                  0.0, nullptr, nullptr, {}, {}, {}};
   if (units == UnitSystem::dimensionless) {
     build_physics(resolved, m);
     return m;
@@ -177,7 +177,7 @@ SimulateModel build_simulate_model(const SimulateConfig& config) {
 ProfileModel build_profile_model(const SimulateConfig& config, NonPhysicalProfile non_physical) {
   const SimulateConfig resolved = resolve_simulate_config(config);
   ProfileModel m{parse_unit_system(*resolved.units),
-                 Scales(*resolved.length_scale, *resolved.mu, *resolved.g), nullptr, {}};
+                 Scales(*resolved.length_scale, *resolved.mu, *resolved.g), nullptr, {}, {}, {}};
   const bool si = m.units == UnitSystem::si;
   try {
     const SimulateConfig c = si ? to_dimensionless(resolved, m.scales) : resolved;

@@ -103,7 +103,7 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
         if (end != stop_end) t1 = t + tau;
       }
       if (sink) [[unlikely]] {
-        Arc arc{t, t1, x, v, x1, v1, A, 0.0, m, 0.0};
+        Arc arc{t, t1, x, v, x1, v1, A, 0.0, m, 0.0, StickArc{}};
         if (sigma != 0) arc.shape = PolynomialArc{alpha, 0.0};
         arc.direction = static_cast<std::int8_t>(sigma);
         arc.end = end;
