@@ -1,4 +1,3 @@
-#include "../io/csv_fields.hpp"
 #include "selfalign/friction/friction_field.hpp"
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include <limits>
 #include <string_view>
 
+#include "../io/csv_fields.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
 
@@ -135,37 +135,25 @@ FrictionField FrictionField::from_csv(const std::string& path, FieldInterpolatio
   std::ifstream in(path);
   if (!in) throw InvalidParameter("friction field", path, "must be a readable CSV file");
   std::vector<double> positions, levels;
-  std::string line;
-  int number = 0;
-  bool header_allowed = true;
-  while (std::getline(in, line)) {
-    ++number;
-    line = detail::trim_csv(line);
-    if (line.empty() || line[0] == '#') continue;
-    const std::string where = "friction field " + path + ":" + std::to_string(number);
-    double p = 0, level = 0;
-    const auto [fp, fl] = detail::parse_csv_pair(line, p, level);
-    if (fp != detail::CsvField::number || fl != detail::CsvField::number) {
-      if (header_allowed && detail::looks_like_csv_header(line)) {  // one leading header line
-        header_allowed = false;
-        continue;
-      }
-      const bool range =
-          fp == detail::CsvField::out_of_range || fl == detail::CsvField::out_of_range;
-      throw InvalidParameter(where, "'" + line + "'",
-                             range ? "holds a number beyond the range of a double"
-                                   : "must be two numbers 'position,level'");
-    }
-    header_allowed = false;
-    check_position(where + " position", p);
-    if (!positions.empty() && !(p > positions.back()))
-      throw InvalidParameter(where + " position", p,
-                             "must be > the previous position " + format_number(positions.back()) +
-                                 " (positions strictly increasing)");
-    check_level(where + " level", level);
-    positions.push_back(p);
-    levels.push_back(level);
-  }
+  auto where = [&](int number) { return "friction field " + path + ":" + std::to_string(number); };
+  detail::read_csv_pairs(
+      in,
+      [&](int number, double p, double level) {
+        check_position(where(number) + " position", p);
+        if (!positions.empty() && !(p > positions.back()))
+          throw InvalidParameter(where(number) + " position", p,
+                                 "must be > the previous position " +
+                                     format_number(positions.back()) +
+                                     " (positions strictly increasing)");
+        check_level(where(number) + " level", level);
+        positions.push_back(p);
+        levels.push_back(level);
+      },
+      [&](int number, const std::string& line, bool range) {
+        throw InvalidParameter(where(number), "'" + line + "'",
+                               range ? "holds a number beyond the range of a double"
+                                     : "must be two numbers 'position,level'");
+      });
   if (positions.empty())
     throw InvalidParameter("friction field", path, "must hold at least one row 'position,level'");
   if (std::none_of(levels.begin(), levels.end(), [](double l) { return l > 0; }))

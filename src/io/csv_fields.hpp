@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <charconv>
+#include <istream>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -45,6 +46,33 @@ inline std::pair<CsvField, CsvField> parse_csv_pair(const std::string& line, dou
   if (comma == std::string::npos) return {CsvField::text, CsvField::text};
   return {parse_csv_double(trim_csv(line.substr(0, comma)), a),
           parse_csv_double(trim_csv(line.substr(comma + 1)), b)};
+}
+
+/// Reads the "a,b" rows of a two-column CSV stream: surrounding blanks trimmed, blank lines and
+/// '#' comments skipped, one leading header line allowed. Calls row(number, a, b) for each data
+/// row (number: its 1-based line), and bad(number, line, out_of_range) for a row that is not two
+/// numbers (out_of_range: a number beyond a double); `bad` must throw.
+template <class Row, class Bad>
+void read_csv_pairs(std::istream& in, Row&& row, Bad&& bad) {
+  std::string line;
+  int number = 0;
+  bool header_allowed = true;
+  while (std::getline(in, line)) {
+    ++number;
+    line = trim_csv(line);
+    if (line.empty() || line[0] == '#') continue;
+    double a = 0, b = 0;
+    const auto [fa, fb] = parse_csv_pair(line, a, b);
+    if (fa != CsvField::number || fb != CsvField::number) {
+      if (header_allowed && looks_like_csv_header(line)) {  // one leading header line
+        header_allowed = false;
+        continue;
+      }
+      bad(number, line, fa == CsvField::out_of_range || fb == CsvField::out_of_range);
+    }
+    header_allowed = false;
+    row(number, a, b);
+  }
 }
 
 }  // namespace selfalign::detail

@@ -1,4 +1,3 @@
-#include "../io/csv_fields.hpp"
 #include "selfalign/profiles/sampled.hpp"
 
 #include <algorithm>
@@ -7,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "../io/csv_fields.hpp"
 #include "periodic_extrema.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
@@ -29,29 +29,17 @@ AccelerationSamples read_acceleration_samples(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InvalidParameter("samples", path, "must be a readable CSV file");
   AccelerationSamples s;
-  std::string line;
-  int number = 0;
-  bool header_allowed = true;
-  while (std::getline(in, line)) {
-    ++number;
-    line = detail::trim_csv(line);
-    if (line.empty() || line[0] == '#') continue;
-    double t = 0, a = 0;
-    const auto [ft, fa] = detail::parse_csv_pair(line, t, a);
-    if (ft != detail::CsvField::number || fa != detail::CsvField::number) {
-      if (header_allowed && detail::looks_like_csv_header(line)) {  // one leading header line
-        header_allowed = false;
-        continue;
-      }
-      const bool range = ft == detail::CsvField::out_of_range || fa == detail::CsvField::out_of_range;
-      throw InvalidParameter("samples", path + " line " + std::to_string(number),
-                             range ? "'" + line + "' holds a number beyond the range of a double"
-                                   : "'" + line + "' must be two numbers 't,ydd'");
-    }
-    header_allowed = false;
-    s.t.push_back(t);
-    s.ydd.push_back(a);
-  }
+  detail::read_csv_pairs(
+      in,
+      [&](int, double t, double a) {
+        s.t.push_back(t);
+        s.ydd.push_back(a);
+      },
+      [&](int number, const std::string& line, bool range) {
+        throw InvalidParameter("samples", path + " line " + std::to_string(number),
+                               range ? "'" + line + "' holds a number beyond the range of a double"
+                                     : "'" + line + "' must be two numbers 't,ydd'");
+      });
   return s;
 }
 
