@@ -5,25 +5,24 @@
 #include <cmath>
 #include <vector>
 
+#include "selfalign/analysis/period_map.hpp"
 #include "selfalign/friction/friction_map.hpp"
-#include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign::testing_support {
 
-/// RMS over kPhases start phases of |x_stepping - x_exact| after `duration`, from rest.
+/// RMS over `phases` start phases of |x_stepping - x_exact| after `duration`, from rest.
 inline double moreau_rms_error(const TableProfile& profile, const CoulombFriction& law,
                                double duration, double h, int phases = 8) {
   const UniformFriction friction;
-  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine(), law};
+  const PeriodMap exact(profile, friction, law);  // an exact solver: piecewise polynomial or smooth
   double sum_sq = 0;
   for (int j = 0; j < phases; ++j) {
     const double t0 = h * (j + 0.5) / phases;
-    ExactState exact = make_exact_state(setup, {t0, 0, 0});
-    advance_exact(setup, exact, t0 + duration);
+    const double x_exact = exact.start({t0, 0, 0}).advance_to(t0 + duration).x;
     TimeSteppingState ts = make_time_stepping_state(profile, {t0, 0, 0});
     advance_time_stepping(profile, friction, law, {h, 0.5}, ts, std::llround(duration / h));
-    sum_sq += std::pow(ts.object.x - exact.object.x, 2);
+    sum_sq += std::pow(ts.object.x - x_exact, 2);
   }
   return std::sqrt(sum_sq / phases);
 }

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "opaque_profile.hpp"
 #include "selfalign/analysis/floquet.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
@@ -20,6 +21,7 @@
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
 using namespace selfalign;
+using testing_support::Opaque;
 
 namespace {
 
@@ -68,20 +70,6 @@ class SCurveFamily final : public ProfileFamily {
   std::string name() const override { return "s-curve"; }
 };
 
-// The same motion with its closed form hidden: only time-stepping can take it.
-class Opaque final : public TableProfile {
- public:
-  explicit Opaque(const TableProfile& p) : p_(p) {}
-  double period() const override { return p_.period(); }
-  TableState state(double t) const override { return p_.state(t); }
-  double velocity(double t) const override { return p_.velocity(t); }
-  double peak_acceleration() const override { return p_.peak_acceleration(); }
-  double stroke() const override { return p_.stroke(); }
-  std::string kind() const override { return "opaque"; }
-
- private:
-  const TableProfile& p_;
-};
 
 }  // namespace
 

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <vector>
 
+#include "moreau_order.hpp"
+#include "opaque_profile.hpp"
 #include "oracles/single_harmonic.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
@@ -63,23 +65,10 @@ TEST(SmoothExact, TwoHarmonicSteadyVelocityMatchesTheHandDerivation) {
 // grid is still in the event lottery).
 TEST(SmoothExact, MoreauConvergesToItWithOrderOne) {
   const FourierProfile profile(1.0, {0.02, 0.0}, {0.0, 0.008});
-  const UniformFriction uniform;
   for (const CoulombFriction& law : {CoulombFriction{}, CoulombFriction(1.3, 1.0)}) {
-    const SmoothSetup setup{profile, *uniform.piecewise_affine(), law};
     std::vector<double> err;
-    for (double h : {1e-4, 1e-5, 1e-6}) {
-      double sq = 0;
-      constexpr int kPhases = 4;
-      for (int j = 0; j < kPhases; ++j) {
-        const double t0 = h * (j + 0.5) / kPhases;
-        ObjectState exact{t0, 0, 0};
-        advance_smooth(setup, exact, t0 + 5.0);
-        TimeSteppingState ts = make_time_stepping_state(profile, {t0, 0, 0});
-        advance_time_stepping(profile, uniform, law, {h, 0.5}, ts, std::llround(5.0 / h));
-        sq += std::pow(ts.object.x - exact.x, 2);
-      }
-      err.push_back(std::sqrt(sq / kPhases));
-    }
+    for (double h : {1e-4, 1e-5, 1e-6})
+      err.push_back(testing_support::moreau_rms_error(profile, law, 5.0, h, 4));
     RecordProperty("errors", testing::PrintToString(err));
     EXPECT_GE(std::log10(err[0] / err[1]), 0.8) << law.describe();
     EXPECT_GE(std::log10(err[1] / err[2]), 0.8) << law.describe();
@@ -131,17 +120,7 @@ TEST(SmoothExact, OrderTwelveSteadyStateConvergesAndAgreesWithTimeStepping) {
   EXPECT_LE(exact.x_dot_0s_error, 1e-12 * (1 + std::abs(exact.x_dot_0s)));
   SteadyStateOptions o;
   o.steps_per_period = 20000;
-  // The same motion without its closed form: only time-stepping can take it.
-  struct Opaque final : TableProfile {
-    const TableProfile& p;
-    explicit Opaque(const TableProfile& q) : p(q) {}
-    double period() const override { return p.period(); }
-    TableState state(double t) const override { return p.state(t); }
-    double velocity(double t) const override { return p.velocity(t); }
-    double peak_acceleration() const override { return p.peak_acceleration(); }
-    double stroke() const override { return p.stroke(); }
-    std::string kind() const override { return "opaque"; }
-  } hidden(profile);
+  const testing_support::Opaque hidden(profile);  // only time-stepping can take it
   const SteadyState ts = steady_state(hidden, o);
   ASSERT_EQ(ts.method, Method::time_stepping);
   EXPECT_NEAR(exact.v_bar, ts.v_bar, 20 * 0.072 / 20000 * std::max(1.0, std::abs(exact.v_bar)));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "opaque_profile.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/friction/friction_map.hpp"
@@ -12,22 +13,7 @@
 #include "selfalign/simulate/exact.hpp"
 
 using namespace selfalign;
-
-namespace {
-// Hides the piecewise-constant form of a profile, forcing the time-stepping path.
-class Opaque final : public TableProfile {
- public:
-  explicit Opaque(const TableProfile& p) : p_(p) {}
-  double period() const override { return p_.period(); }
-  TableState state(double t) const override { return p_.state(t); }
-  double peak_acceleration() const override { return p_.peak_acceleration(); }
-  double stroke() const override { return p_.stroke(); }
-  std::string kind() const override { return "opaque"; }
-
- private:
-  const TableProfile& p_;
-};
-}  // namespace
+using testing_support::Opaque;
 
 TEST(SteadyState, CaseOneAverageVelocityEqualsClosedForm) {
   const ThreePhaseParameters p{1.0, 0.084, 3.0, 0.9};
