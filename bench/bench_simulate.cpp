@@ -231,7 +231,7 @@ inline double bare_velocity(const BareProfile& p, double t) {
 // Velocity: the inlined copy above, or (Velocity = const PiecewisePolynomialProfile&) the
 // profile's own function called directly.
 template <class VelocityFn>
-[[gnu::noinline]] void bare_moreau(const VelocityFn& velocity, double m, const CoulombFriction& law,
+[[gnu::noinline]] void bare_moreau(const VelocityFn& velocity, double m, const FrictionLaw& law,
                                    double h, double theta, double t0, double& x_io, double& v_io,
                                    double& yd_io, long long steps) {
   const double hs = h * (law.static_coefficient() * m), hkf = h * (law.kinetic_forward() * m),
@@ -350,7 +350,7 @@ void bare_moreau_from_rest(const Fn& velocity, double y0, double m, long long st
   x = 0;
   v = 0;
   yd = y0;
-  bare_moreau(velocity, m, CoulombFriction{}, kStepOptions.step, kStepOptions.theta, 0.0, x, v,
+  bare_moreau(velocity, m, FrictionLaw{}, kStepOptions.step, kStepOptions.theta, 0.0, x, v,
               yd, steps);
 }
 
@@ -368,7 +368,7 @@ void run_bare_moreau(BareVelocity which, const PiecewisePolynomialProfile& pp,
 bool check_time_stepping(benchmark::State& st, const ThreePhaseProfile& profile, double m) {
   const UniformFriction friction(m);
   TimeSteppingState s = make_time_stepping_state(profile, {0, 0, 0});
-  advance_time_stepping(profile, friction, CoulombFriction{}, kStepOptions, s, kSteps);
+  advance_time_stepping(profile, friction, FrictionLaw{}, kStepOptions, s, kSteps);
   const PiecewisePolynomialProfile& pp = *profile.piecewise_polynomial();
   const BareProfile b = bare_profile(pp);
   for (BareVelocity which : {BareVelocity::inlined, BareVelocity::ppvelocity}) {
@@ -388,7 +388,7 @@ bool check_time_stepping(benchmark::State& st, const ThreePhaseProfile& profile,
 void time_stepping_per_step(benchmark::State& st, ThreePhaseParameters params) {
   const ThreePhaseProfile profile(params);
   const UniformFriction friction;
-  const CoulombFriction law;
+  const FrictionLaw law;
   if (!check_time_stepping(st, profile, friction.level())) return;
   for (auto _ : st) {
     TimeSteppingState s = make_time_stepping_state(profile, {0, 0, 0});

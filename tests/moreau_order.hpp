@@ -12,7 +12,7 @@
 namespace selfalign::testing_support {
 
 /// RMS over `phases` start phases of |x_stepping - x_exact| after `duration`, from rest.
-inline double moreau_rms_error(const TableProfile& profile, const CoulombFriction& law,
+inline double moreau_rms_error(const TableProfile& profile, const FrictionLaw& law,
                                double duration, double h, int phases = 8) {
   const UniformFriction friction;
   const PeriodMap exact(profile, friction, law);  // an exact solver: piecewise polynomial or smooth

@@ -16,7 +16,7 @@
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/analysis/stopping.hpp"
 #include "selfalign/analysis/sweep.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
@@ -76,7 +76,7 @@ class SCurveFamily final : public ProfileFamily {
 TEST(Extension, NewProfileFamilyRunsThroughSteadyStateFloquetAndASweep) {
   const SCurveFamily family;
   const auto profile = family.make(2.0, 0.5);
-  const CoulombFriction law(1.25, 1.0);
+  const FrictionLaw law(1.25, 1.0);
   // Steady state: exact vs time-stepping (h = Δt/20000; first order: agreement to ~10 h).
   const SteadyState exact = steady_state(*profile, law);
   const Opaque hidden(*profile);
@@ -112,7 +112,7 @@ TEST(Extension, NewFrictionLevelStopsThePartWhereTheStaticLawHoldsIt) {
   const auto profile = family.make(2.0, 1.0);  // peak 6.6: it climbs the first terrace
   const double peak = profile->peak_acceleration();
   const TerracedFriction terraced(0.5, 1.0, 0.05);
-  for (const CoulombFriction& law : {CoulombFriction{}, CoulombFriction(1.25, 1.0)}) {
+  for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.25, 1.0)}) {
     StoppingOptions o;
     o.max_periods = 2000;
     const StoppingRun run = stopping_run(*profile, terraced, law, {0, 0, 0}, o);

@@ -57,7 +57,7 @@ TEST(FiniteJerk, StickBreaksInsideARampWhereTheTableAccelerationReachesTheStatic
   const auto profile = triangle_profile();
   const UniformFriction uniform;
   for (double s : {1.0, 1.2, 2.0}) {
-    const ExactSetup setup{profile, *uniform.piecewise_affine(), CoulombFriction(s, 1.0)};
+    const ExactSetup setup{profile, *uniform.piecewise_affine(), FrictionLaw(s, 1.0)};
     ArcList list;
     ExactState st = make_exact_state(setup, {0, 0, 0});
     advance_exact(setup, st, 4.0, &list);
@@ -82,7 +82,7 @@ TEST(FiniteJerk, StickBreakingAgreesWithTimeSteppingToFirstOrder) {
   const double t[6] = {0, 1, 1.5, 2, 3, 3.5}, a[6] = {0, 0, -2, -2, 2, 2};
   const auto profile = PiecewisePolynomialProfile::from_breakpoints(t, a, 4.0);
   const UniformFriction uniform;
-  const CoulombFriction law(1.5, 1.0);
+  const FrictionLaw law(1.5, 1.0);
   const ExactSetup setup{profile, *uniform.piecewise_affine(), law};
   const double t_end = 8.0;
   ArcList list;
@@ -137,8 +137,8 @@ TEST(FiniteJerk, SaltationAndFiniteDifferencesAgreeForEveryPatternFound) {
   for (const Base& b : bases)
     for (double a2 : b.a2s)
       for (double a3 : b.a3s)
-        for (const CoulombFriction& law : {CoulombFriction{}, CoulombFriction(1.3, 1.0),
-                                           CoulombFriction(1.3, 1.0, 0.7)})
+        for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.3, 1.0),
+                                           FrictionLaw(1.3, 1.0, 0.7)})
           for (double j : {30.0, 300.0}) {
             const JerkLimitedThreePhaseParameters p{b.period, b.stroke, a2, a3, j};
             if (!solve_jerk_limited_three_phase(p).physical) continue;
@@ -166,7 +166,7 @@ TEST(FiniteJerk, SaltationAndFiniteDifferencesAgreeForEveryPatternFound) {
 TEST(FiniteJerk, StoppingObservesTheAccumulationAtTheStickPositionMinimum) {
   const JerkLimitedThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3, 50.0});
   const TwoRegionFriction friction(0.5, 0.05, 2.5);
-  const StoppingRun run = stopping_run(profile, friction, CoulombFriction{}, {0, 0, 0});
+  const StoppingRun run = stopping_run(profile, friction, FrictionLaw{}, {0, 0, 0});
   ASSERT_EQ(run.kind, StopKind::accumulation);
   EXPECT_FALSE(run.accumulation_proven);
   // eq. (41): x_mu + w (max|y''| - 1)/(c_mu - 1), max|y''| = 2.3 (the plateau is reached).
@@ -180,6 +180,6 @@ TEST(FiniteJerk, StoppingObservesTheAccumulationAtTheStickPositionMinimum) {
   so.step = 1e-5;
   so.duration = 60;
   so.record = false;
-  const SimulationResult ts = simulate(profile, friction, CoulombFriction{}, {0, 0, 0}, so);
+  const SimulationResult ts = simulate(profile, friction, FrictionLaw{}, {0, 0, 0}, so);
   EXPECT_NEAR(ts.final_state.x, run.x_stick_min, 1e-3);  // O(h) per period, summed
 }

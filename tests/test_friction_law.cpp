@@ -1,4 +1,4 @@
-// Tests for friction/coulomb_friction.hpp and its use by both solvers: static >= kinetic and
+// Tests for friction/friction_law.hpp and its use by both solvers: static >= kinetic and
 // direction-dependent kinetic coefficients.
 //  - The exact steady state of a two-level table acceleration against the hand derivation of
 //    docs/static-kinetic-two-level.md (tests/oracles/two_level_static_kinetic.hpp, itself
@@ -16,7 +16,7 @@
 #include "oracles/two_level_static_kinetic.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/error.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
@@ -43,22 +43,22 @@ struct ArcList final : ArcSink {
 
 }  // namespace
 
-TEST(CoulombFriction, DefaultIsThePapersLawAndRefusesKineticAboveStatic) {
-  EXPECT_TRUE(CoulombFriction{}.is_unit());
-  const CoulombFriction law(1.2, 1.0, 0.8);
+TEST(FrictionLaw, DefaultIsThePapersLawAndRefusesKineticAboveStatic) {
+  EXPECT_TRUE(FrictionLaw{}.is_unit());
+  const FrictionLaw law(1.2, 1.0, 0.8);
   EXPECT_EQ(law.kinetic(+1), 1.0);
   EXPECT_EQ(law.kinetic(-1), 0.8);
   try {
-    CoulombFriction(1.0, 1.2);
+    FrictionLaw(1.0, 1.2);
     FAIL() << "kinetic above static accepted";
   } catch (const InvalidParameter& e) {
     EXPECT_EQ(std::string(e.what()),
               "invalid mu_static, mu_kinetic = 1, 1.2: the static coefficient must be >= the "
               "kinetic one (mu_kinetic <= mu_static)");
   }
-  EXPECT_THROW(CoulombFriction(1.0, 1.0, 1.5), InvalidParameter);
-  EXPECT_THROW(CoulombFriction(1.0, -1.0), InvalidParameter);
-  EXPECT_THROW(CoulombFriction(std::nan(""), 1.0), InvalidParameter);
+  EXPECT_THROW(FrictionLaw(1.0, 1.0, 1.5), InvalidParameter);
+  EXPECT_THROW(FrictionLaw(1.0, -1.0), InvalidParameter);
+  EXPECT_THROW(FrictionLaw(std::nan(""), 1.0), InvalidParameter);
 }
 
 // v̄ of the exact steady state equals the hand derivation to 1e-12 (the closed form is a few
@@ -84,7 +84,7 @@ TEST(StaticKinetic, TwoLevelSteadyVelocityMatchesTheHandDerivation) {
     ASSERT_TRUE(expected.valid()) << "mu_s " << c.mu_s << " a_max " << c.a_max;
     ++patterns[static_cast<int>(expected.pattern)];
     const auto profile = two_level(c);
-    const SteadyState r = steady_state(profile, CoulombFriction(c.mu_s, c.mu_k));
+    const SteadyState r = steady_state(profile, FrictionLaw(c.mu_s, c.mu_k));
     ASSERT_TRUE(r.converged);
     EXPECT_NEAR(r.v_bar, expected.vbar, kVbarTol)
         << "mu_s " << c.mu_s << " mu_k " << c.mu_k << " a_max " << c.a_max;
@@ -98,12 +98,12 @@ TEST(StaticKinetic, TwoLevelSteadyVelocityMatchesTheHandDerivation) {
 // mu_k <= mu_s < |a_s| and v̄_A for |a_s| <= mu_s (docs/static-kinetic-two-level.md, S3-S6).
 TEST(StaticKinetic, TheStaticCoefficientDecidesTheStickAndSoTheVelocity) {
   const auto profile = two_level(with_balanced_stick_phase(1.2, 1.0, 3.0, 1, 1, 1.5));
-  const double vb = steady_state(profile, CoulombFriction(1.2, 1.0)).v_bar;
-  const double va = steady_state(profile, CoulombFriction(1.6, 1.0)).v_bar;
+  const double vb = steady_state(profile, FrictionLaw(1.2, 1.0)).v_bar;
+  const double va = steady_state(profile, FrictionLaw(1.6, 1.0)).v_bar;
   EXPECT_NEAR(vb, -1.0 / 168, 1e-12);  // exact rationals of the derivation
   EXPECT_NEAR(va, -3.0 / 35, 1e-12);
-  EXPECT_EQ(steady_state(profile, CoulombFriction(1.2, 1.0)).pattern, "forward,backward");
-  EXPECT_EQ(steady_state(profile, CoulombFriction(1.6, 1.0)).pattern, "stick,forward,backward");
+  EXPECT_EQ(steady_state(profile, FrictionLaw(1.2, 1.0)).pattern, "forward,backward");
+  EXPECT_EQ(steady_state(profile, FrictionLaw(1.6, 1.0)).pattern, "stick,forward,backward");
 }
 
 // Direction-dependent kinetic coefficients: on a table with only one slip direction per
@@ -114,7 +114,7 @@ TEST(StaticKinetic, ForwardSlipUsesTheForwardKineticCoefficient) {
   const double d[2] = {1.0, 1.0}, acc[2] = {-2.0, 2.0};
   const auto profile = PiecewisePolynomialProfile::from_accelerations(d, acc);
   const UniformFriction uniform;
-  const CoulombFriction law(1.5, 0.7, 1.1);
+  const FrictionLaw law(1.5, 0.7, 1.1);
   const ExactSetup setup{profile, *uniform.piecewise_affine(), law};
   ArcList list;
   ExactState s = make_exact_state(setup, {0, 0, 0});
@@ -141,8 +141,8 @@ TEST(StaticKinetic, UniformAndGeneralSolversAgree) {
   const UniformFriction uniform;
   const double d[3] = {0.6, 0.5, 0.9}, acc[3] = {0.3, -2.6, (2.6 * 0.5 - 0.3 * 0.6) / 0.9};
   const auto profile = PiecewisePolynomialProfile::from_accelerations(d, acc);
-  for (const CoulombFriction& law :
-       {CoulombFriction{}, CoulombFriction(1.4, 1.0), CoulombFriction(1.4, 0.9, 1.2)}) {
+  for (const FrictionLaw& law :
+       {FrictionLaw{}, FrictionLaw(1.4, 1.0), FrictionLaw(1.4, 0.9, 1.2)}) {
     ArcList a, b;
     const ExactSetup fast{profile, *uniform.piecewise_affine(), law};
     const ExactSetup general{profile, split, law};
@@ -165,7 +165,7 @@ TEST(StaticKinetic, MoreauConvergesWithOrderOneForStaticAboveKinetic) {
   constexpr double kMinOrder = 0.8;
   const auto c = with_balanced_stick_phase(1.6, 1.0, 3.0, 1, 1, 1.5);  // S5: stick-slip
   const auto profile = two_level(c);
-  const CoulombFriction law(1.6, 1.0);
+  const FrictionLaw law(1.6, 1.0);
   const double duration = 10 * profile.period();
   const double e3 = testing_support::moreau_rms_error(profile, law, duration, 1e-3);
   const double e4 = testing_support::moreau_rms_error(profile, law, duration, 1e-4);
@@ -179,7 +179,7 @@ TEST(StaticKinetic, MoreauConvergesWithOrderOneForStaticAboveKinetic) {
 TEST(StaticKinetic, MoreauConvergesWithOrderOneForAFiniteJerkProfile) {
   constexpr double kMinOrder = 0.8;
   const JerkLimitedThreePhaseProfile profile({2.0, 0.1, 2.5, 1.5, 40.0});
-  const CoulombFriction law(1.3, 1.0);
+  const FrictionLaw law(1.3, 1.0);
   const double duration = 10 * profile.period();
   const double e3 = testing_support::moreau_rms_error(profile, law, duration, 1e-3);
   const double e4 = testing_support::moreau_rms_error(profile, law, duration, 1e-4);

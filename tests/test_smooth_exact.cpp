@@ -52,7 +52,7 @@ TEST(SmoothExact, TwoHarmonicSteadyVelocityMatchesTheHandDerivation) {
     const oracle::SingleHarmonicResult expected = oracle::single_harmonic_vbar(c);
     ASSERT_TRUE(expected.valid()) << c.A1 << " " << c.A2;
     const FourierProfile profile = profile_of(c);
-    const SteadyState r = steady_state(profile, CoulombFriction(c.s, c.k));
+    const SteadyState r = steady_state(profile, FrictionLaw(c.s, c.k));
     ASSERT_EQ(r.method, Method::exact);
     ASSERT_TRUE(r.converged);
     EXPECT_NEAR(r.v_bar, expected.vbar, kVbarTol) << "A1 " << c.A1 << " A2 " << c.A2 << " s "
@@ -65,7 +65,7 @@ TEST(SmoothExact, TwoHarmonicSteadyVelocityMatchesTheHandDerivation) {
 // grid is still in the event lottery).
 TEST(SmoothExact, MoreauConvergesToItWithOrderOne) {
   const FourierProfile profile(1.0, {0.02, 0.0}, {0.0, 0.008});
-  for (const CoulombFriction& law : {CoulombFriction{}, CoulombFriction(1.3, 1.0)}) {
+  for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.3, 1.0)}) {
     std::vector<double> err;
     for (double h : {1e-4, 1e-5, 1e-6})
       err.push_back(testing_support::moreau_rms_error(profile, law, 5.0, h, 4));
@@ -81,7 +81,7 @@ TEST(SmoothExact, MoreauConvergesToItWithOrderOne) {
 TEST(SmoothExact, ArcsAreStickOrSlipWithNoZeroLengthSlips) {
   const FourierProfile profile(1.0, {0.02, 0.0}, {0.0, 0.008});
   const UniformFriction uniform;
-  for (const CoulombFriction& law : {CoulombFriction{}, CoulombFriction(1.3, 1.0)}) {
+  for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.3, 1.0)}) {
     const SmoothSetup setup{profile, *uniform.piecewise_affine(), law};
     ArcList list;
     ObjectState s{0, 0, 0};

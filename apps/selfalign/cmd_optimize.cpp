@@ -71,7 +71,7 @@ void run_optimize(OptimizeFlags& f) {
                              "must be >= 1 and >= backward-ratio = " +
                                  format_number(f.backward_ratio) +
                                  " (the static coefficient is >= the kinetic ones)");
-    f.options.law = CoulombFriction(f.static_ratio, 1.0, f.backward_ratio);
+    f.options.law = FrictionLaw(f.static_ratio, 1.0, f.backward_ratio);
     validate(f.options);
   } catch (const InvalidParameter& e) {
     throw with_flag_names(e);

@@ -9,7 +9,7 @@
 
 namespace selfalign::cli {
 
-nlohmann::json law_json(const CoulombFriction& law) {
+nlohmann::json law_json(const FrictionLaw& law) {
   return {{"static", law.static_coefficient()},
           {"kinetic_forward", law.kinetic_forward()},
           {"kinetic_backward", law.kinetic_backward()}};

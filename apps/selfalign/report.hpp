@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/unit_system.hpp"
 
@@ -20,7 +20,7 @@ nlohmann::json number_or_null(double value);
 
 /// The friction law as report fields, ratios to mu (mu_1): {"static", "kinetic_forward",
 /// "kinetic_backward"}; all 1 for the paper's law.
-nlohmann::json law_json(const CoulombFriction& law);
+nlohmann::json law_json(const FrictionLaw& law);
 
 /// A CSV field: shortest text that reads back as the same double; "nan", "inf", "-inf".
 std::string csv_number(double value);

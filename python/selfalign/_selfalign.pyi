@@ -91,7 +91,7 @@ class UniformFriction(FrictionMap):
     @property
     def level(self) -> float: ...
 
-class CoulombFriction:
+class FrictionLaw:
     @overload
     def __init__(self) -> None: ...
     @overload
@@ -104,6 +104,19 @@ class CoulombFriction:
     def kinetic_forward(self) -> float: ...
     @property
     def kinetic_backward(self) -> float: ...
+    def with_stribeck(self, stribeck_velocity: float, exponent: float = 1.0) -> FrictionLaw: ...
+    def with_viscous(self, viscous: float) -> FrictionLaw: ...
+    @property
+    def stribeck_velocity(self) -> float: ...
+    @property
+    def stribeck_exponent(self) -> float: ...
+    @property
+    def viscous(self) -> float: ...
+    @property
+    def velocity_dependent(self) -> bool: ...
+    def kinetic(self, direction: int, speed: float) -> float: ...
+
+CoulombFriction: TypeAlias = FrictionLaw
 
 class TwoRegionFriction(FrictionMap):
     def __init__(self, x_mu: float, width: float, c_mu: float) -> None: ...
@@ -388,6 +401,7 @@ class Trajectory:
 class Method:
     exact: Method
     time_stepping: Method
+    integrator: Method
     @overload
     def __init__(self, value: int) -> None: ...
     @overload
@@ -399,6 +413,27 @@ class Method:
     def __int__(self) -> int: ...
     __members__: dict[str, Method]
 
+class IntegratorOptions:
+    relative_tolerance: float
+    absolute_tolerance: float
+    def __init__(
+        self, *, relative_tolerance: float = 1e-10, absolute_tolerance: float = 1e-12
+    ) -> None: ...
+
+class IntegratorStatistics:
+    @property
+    def steps(self) -> int: ...
+    @property
+    def rejected(self) -> int: ...
+    @property
+    def rhs_evaluations(self) -> int: ...
+    @property
+    def events(self) -> int: ...
+    @property
+    def slips(self) -> int: ...
+    @property
+    def sticks(self) -> int: ...
+
 class SimulationOptions:
     method: Method
     duration: float
@@ -406,6 +441,7 @@ class SimulationOptions:
     theta: float
     output_step: float
     record: bool
+    integrator: IntegratorOptions
     def __init__(
         self,
         *,
@@ -415,6 +451,7 @@ class SimulationOptions:
         theta: float = 0.5,
         output_step: float = 0.0,
         record: bool = True,
+        integrator: IntegratorOptions = ...,
     ) -> None: ...
 
 class SimulationResult:
@@ -422,6 +459,10 @@ class SimulationResult:
     def trajectory(self) -> Trajectory: ...
     @property
     def final_state(self) -> ObjectState: ...
+    @property
+    def method(self) -> Method: ...
+    @property
+    def integrator(self) -> IntegratorStatistics: ...
     @property
     def work(self) -> int: ...
     @property
@@ -435,7 +476,7 @@ def simulate(
     initial: ObjectState = ...,
     options: SimulationOptions = ...,
     *,
-    law: CoulombFriction = ...,
+    law: FrictionLaw = ...,
 ) -> SimulationResult: ...
 
 # ---- exact solver and time stepping ----------------------------------------------------------
@@ -500,7 +541,7 @@ class PeriodMap:
     def __init__(
         self,
         profile: TableProfile,
-        law: CoulombFriction = ...,
+        law: FrictionLaw = ...,
         *,
         steps_per_period: int = 4000,
         theta: float = 0.5,
@@ -510,7 +551,7 @@ class PeriodMap:
         self,
         profile: TableProfile,
         friction: FrictionMap,
-        law: CoulombFriction = ...,
+        law: FrictionLaw = ...,
         *,
         steps_per_period: int = 4000,
         theta: float = 0.5,
@@ -520,7 +561,7 @@ class PeriodMap:
     @property
     def friction(self) -> FrictionMap: ...
     @property
-    def law(self) -> CoulombFriction: ...
+    def law(self) -> FrictionLaw: ...
     @property
     def method(self) -> Method: ...
     @property
@@ -553,6 +594,7 @@ class SteadyStateOptions:
     steps_per_period: int
     theta: float
     stepping_tol: float
+    integrator: IntegratorOptions
     def __init__(
         self,
         *,
@@ -561,6 +603,7 @@ class SteadyStateOptions:
         steps_per_period: int = 4000,
         theta: float = 0.5,
         stepping_tol: float = 0.0,
+        integrator: IntegratorOptions = ...,
     ) -> None: ...
 
 class SteadyState:
@@ -586,12 +629,14 @@ class SteadyState:
     def motion_case(self) -> StickSlipCase: ...
     @property
     def pattern(self) -> str: ...
+    @property
+    def integrator(self) -> IntegratorStatistics: ...
 
 @overload
 def steady_state(profile: TableProfile, options: SteadyStateOptions) -> SteadyState: ...
 @overload
 def steady_state(
-    profile: TableProfile, law: CoulombFriction = ..., options: SteadyStateOptions = ...
+    profile: TableProfile, law: FrictionLaw = ..., options: SteadyStateOptions = ...
 ) -> SteadyState: ...
 @overload
 def objective_f(v_bar: float, c: float = 10000.0) -> float: ...
@@ -633,7 +678,7 @@ def floquet_multipliers(
 ) -> FloquetAnalysis: ...
 @overload
 def floquet_multipliers(
-    profile: TableProfile, law: CoulombFriction, options: FloquetOptions = ...
+    profile: TableProfile, law: FrictionLaw, options: FloquetOptions = ...
 ) -> FloquetAnalysis: ...
 @overload
 def slip_slip_multiplier(a2: float, a3: float) -> float: ...
@@ -688,7 +733,7 @@ def velocity_convergence(
 ) -> VelocityConvergence: ...
 @overload
 def velocity_convergence(
-    profile: TableProfile, law: CoulombFriction = ..., options: ConvergenceOptions = ...
+    profile: TableProfile, law: FrictionLaw = ..., options: ConvergenceOptions = ...
 ) -> VelocityConvergence: ...
 
 # ---- sweeps ----------------------------------------------------------------------------------
@@ -704,7 +749,7 @@ def sweep_accelerations(
     steady: SteadyStateOptions = ...,
     threads: int = 0,
     progress: Progress = None,
-    law: CoulombFriction = ...,
+    law: FrictionLaw = ...,
     jerk: float = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
@@ -735,7 +780,7 @@ def sweep_period(
     steady: SteadyStateOptions = ...,
     threads: int = 0,
     progress: Progress = None,
-    law: CoulombFriction = ...,
+    law: FrictionLaw = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 def sweep_stroke(
     family: ProfileFamily,
@@ -745,7 +790,7 @@ def sweep_stroke(
     steady: SteadyStateOptions = ...,
     threads: int = 0,
     progress: Progress = None,
-    law: CoulombFriction = ...,
+    law: FrictionLaw = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
 # ---- stick positions and stopping runs -------------------------------------------------------
@@ -822,7 +867,7 @@ def stopping_run(
     start: ObjectState,
     options: StoppingOptions = ...,
     *,
-    law: CoulombFriction = ...,
+    law: FrictionLaw = ...,
 ) -> StoppingRun: ...
 
 # ---- positioning -----------------------------------------------------------------------------
@@ -877,7 +922,7 @@ def positioning_accuracy(
     c_mu: float,
     options: PositioningOptions = ...,
     *,
-    law: CoulombFriction = ...,
+    law: FrictionLaw = ...,
 ) -> PositioningAccuracy: ...
 def positioning_surfaces(
     period: float,
@@ -1015,7 +1060,7 @@ class OptimizeOptions:
     order: int
     segments: int
     starts: int
-    law: CoulombFriction
+    law: FrictionLaw
     def __init__(
         self,
         *,
@@ -1029,7 +1074,7 @@ class OptimizeOptions:
         seed: int = 1,
         fd_step: float = 1e-6,
         progress: Optional[Callable[[int, int], None]] = None,
-        law: CoulombFriction = ...,
+        law: FrictionLaw = ...,
     ) -> None: ...
 
 class OptimizationResult:

@@ -13,7 +13,7 @@ namespace py = pybind11;
 
 void bind_errors(py::module_& m);        // InvalidParameter -> selfalign.InvalidParameter
 void bind_units(py::module_& m);         // Scales
-void bind_friction(py::module_& m);      // CoulombFriction, FrictionMap and its kinds, FrictionField
+void bind_friction(py::module_& m);      // FrictionLaw, FrictionMap and its kinds, FrictionField
 void bind_profiles(py::module_& m);      // TableProfile, piecewise-constant, Fourier, sampled
 void bind_three_phase(py::module_& m);   // ThreePhase*, JerkLimitedThreePhase*
 void bind_simulate(py::module_& m);      // ObjectState, Method, SimulationOptions, simulate

@@ -81,9 +81,9 @@ float64 views: samples on a uniform grid plus every event of either trajectory.)
         py::overload_cast<const TableProfile&, const ConvergenceOptions&>(&velocity_convergence), py::arg("profile"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>());
   m.def("velocity_convergence",
-        py::overload_cast<const TableProfile&, const CoulombFriction&,
+        py::overload_cast<const TableProfile&, const FrictionLaw&,
                           const ConvergenceOptions&>(&velocity_convergence),
-        py::arg("profile"), py::arg("law") = CoulombFriction{},
+        py::arg("profile"), py::arg("law") = FrictionLaw{},
         py::arg("options") = ConvergenceOptions{}, py::call_guard<py::gil_scoped_release>(),
         R"doc(
 Runs two trajectories of the same piecewise-constant profile on the uniform table from

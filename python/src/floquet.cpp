@@ -99,11 +99,11 @@ options. Runs without the GIL.)doc";
         py::arg("profile"), py::arg("options") = FloquetOptions{},
         py::call_guard<py::gil_scoped_release>(), doc);
   m.def("floquet_multipliers",
-        py::overload_cast<const TableProfile&, const CoulombFriction&, const FloquetOptions&>(
+        py::overload_cast<const TableProfile&, const FrictionLaw&, const FloquetOptions&>(
             &floquet_multipliers),
         py::arg("profile"), py::arg("law"), py::arg("options") = FloquetOptions{},
         py::call_guard<py::gil_scoped_release>(),
-        "Saltation and finite-difference monodromy of the steady state under a CoulombFriction "
+        "Saltation and finite-difference monodromy of the steady state under a FrictionLaw "
         "law (any piecewise-polynomial profile, finite jerk included).");
 
   m.def(

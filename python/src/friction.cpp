@@ -9,7 +9,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "repr.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 
@@ -202,11 +202,16 @@ field: a FrictionField; footprint: PointFootprint(), UniformFootprint(width) or 
 }  // namespace
 
 void bind_friction(py::module_& m) {
-  py::class_<CoulombFriction>(m, "CoulombFriction", R"doc(
+  auto law = py::class_<FrictionLaw>(m, "FrictionLaw", R"doc(
 The contact's friction law: Coulomb friction with a static coefficient at least the kinetic
-one, optionally with direction-dependent kinetic coefficients (sawtooth or textured surfaces).
+one, optionally with direction-dependent kinetic coefficients (sawtooth or textured surfaces),
+and optionally speed-dependent: a Stribeck decay from static to kinetic,
+mu(v) = k + (s - k) exp(-(|v|/v_s)^delta), and a viscous force -c x' (with_stribeck,
+with_viscous). A speed-dependent law has no closed form: steady_state, simulate, floquet and
+the sweeps then use the slip integrator (Method.integrator: exact sticks, Dormand-Prince slips
+with event location). CoulombFriction is the same class.
 Dimensionless: every coefficient is relative to mu_1, the forward kinetic coefficient of the
-low-friction region, so CoulombFriction() = (1, 1, 1) is the paper's law. While stuck the
+low-friction region, so FrictionLaw() = (1, 1, 1) is the paper's law. While stuck the
 object is held as long as |y''| <= static m(x); while slipping in direction sigma the force is
 -kinetic_sigma m(x) sigma.)doc")
       .def(py::init<>())
@@ -216,16 +221,41 @@ object is held as long as |y''| <= static m(x); while slipping in direction sigm
            py::arg("kinetic_backward"),
            "Direction-dependent kinetic coefficients: 0 < kinetic_forward, kinetic_backward <= "
            "static.")
-      .def_property_readonly("static", &CoulombFriction::static_coefficient, "s [-]")
-      .def_property_readonly("kinetic_forward", &CoulombFriction::kinetic_forward, "k_+ [-]")
-      .def_property_readonly("kinetic_backward", &CoulombFriction::kinetic_backward, "k_- [-]")
-      .def("__eq__", [](const CoulombFriction& a, const CoulombFriction& b) { return a == b; })
-      .def("__repr__", [](const CoulombFriction& f) {
-        return Repr("CoulombFriction")("static", f.static_coefficient())(
-                   "kinetic_forward", f.kinetic_forward())("kinetic_backward",
-                                                           f.kinetic_backward())
-            .str();
+      .def_property_readonly("static", &FrictionLaw::static_coefficient, "s [-]")
+      .def_property_readonly("kinetic_forward", &FrictionLaw::kinetic_forward, "k_+ [-]")
+      .def_property_readonly("kinetic_backward", &FrictionLaw::kinetic_backward, "k_- [-]")
+      .def("with_stribeck", &FrictionLaw::with_stribeck, py::arg("stribeck_velocity"),
+           py::arg("exponent") = 1.0,
+           "This law with a Stribeck decay: stribeck_velocity v_s [-] > 0, exponent delta in "
+           "(0, 100]. Raises InvalidParameter naming the parameter otherwise.")
+      .def("with_viscous", &FrictionLaw::with_viscous, py::arg("viscous"),
+           "This law with a viscous force -c x': viscous c [-] >= 0. Raises InvalidParameter "
+           "naming 'viscous' otherwise.")
+      .def_property_readonly("stribeck_velocity", &FrictionLaw::stribeck_velocity,
+                             "v_s [-]; 0 when the law has no Stribeck decay")
+      .def_property_readonly("stribeck_exponent", &FrictionLaw::stribeck_exponent, "delta [-]")
+      .def_property_readonly("viscous", &FrictionLaw::viscous, "c [-]; 0 when none")
+      .def_property_readonly("velocity_dependent", &FrictionLaw::velocity_dependent,
+                             "True when a Stribeck decay or viscous term was given")
+      .def(
+          "kinetic",
+          [](const FrictionLaw& f, int direction, double speed) {
+            return f.kinetic(direction, speed);
+          },
+          py::arg("direction"), py::arg("speed"),
+          "mu_sigma(speed) [-] for slip direction sigma (> 0 forward, < 0 backward)")
+      .def("__eq__", [](const FrictionLaw& a, const FrictionLaw& b) { return a == b; })
+      .def("__repr__", [](const FrictionLaw& f) {
+        Repr r("FrictionLaw");
+        r("static", f.static_coefficient())("kinetic_forward", f.kinetic_forward())(
+            "kinetic_backward", f.kinetic_backward());
+        if (f.stribeck_velocity() > 0)
+          r("stribeck_velocity", f.stribeck_velocity())("stribeck_exponent",
+                                                        f.stribeck_exponent());
+        if (f.viscous() > 0) r("viscous", f.viscous());
+        return r.str();
       });
+  m.attr("CoulombFriction") = law;
 
   py::class_<FrictionMap>(m, "FrictionMap", R"doc(
 A friction law m(x) = mu_bar(x)/mu_1 >= 0 [-] (eqs. 7-9): in the dimensionless model

@@ -38,7 +38,7 @@ objective, multi-starts, evaluations per local run, three-phase scan grid and po
 seed, finite-difference step, and an optional progress(done, total) callable.)doc")
       .def(py::init([](int order, int segments, int approximation_segments, int starts,
                        int max_evaluations, int grid, int polish, unsigned seed, double fd_step,
-                       std::function<void(int, int)> progress, const CoulombFriction& law) {
+                       std::function<void(int, int)> progress, const FrictionLaw& law) {
              OptimizeOptions o;
              o.order = order, o.segments = segments;
              o.approximation_segments = approximation_segments, o.starts = starts;
@@ -52,7 +52,7 @@ seed, finite-difference step, and an optional progress(done, total) callable.)do
            py::arg("starts") = d.starts, py::arg("max_evaluations") = d.max_evaluations,
            py::arg("grid") = d.grid, py::arg("polish") = d.polish, py::arg("seed") = d.seed,
            py::arg("fd_step") = d.fd_step, py::arg("progress") = py::none(),
-           py::arg("law") = CoulombFriction{})
+           py::arg("law") = FrictionLaw{})
       .def_readwrite("law", &OptimizeOptions::law, "friction law of every steady state")
       .def_readwrite("order", &OptimizeOptions::order, "Fourier order N")
       .def_readwrite("segments", &OptimizeOptions::segments, "K of the piecewise family")

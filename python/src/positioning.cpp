@@ -85,12 +85,12 @@ x_mu = Δx, each stopped by a stopping run; then (eq. 39)
   m.def(
       "positioning_accuracy",
       [](const TableProfile& profile, double width, double c_mu, const PositioningOptions& o,
-         const CoulombFriction& law) { return positioning_accuracy(profile, law, width, c_mu, o); },
+         const FrictionLaw& law) { return positioning_accuracy(profile, law, width, c_mu, o); },
       py::arg("profile"), py::arg("width"), py::arg("c_mu"),
-      py::arg("options") = PositioningOptions{}, py::kw_only(), py::arg("law") = CoulombFriction{},
+      py::arg("options") = PositioningOptions{}, py::kw_only(), py::arg("law") = FrictionLaw{},
       py::call_guard<py::gil_scoped_release>(), R"doc(
 Sect. 7.1 for a piecewise-constant or piecewise-linear (finite-jerk) profile on a two-region
-table of width w [-] and ratio c_mu [-] (x_mu is placed at Δx), under the CoulombFriction
+table of width w [-] and ratio c_mu [-] (x_mu is placed at Δx), under the FrictionLaw
 `law` (the paper's by default). Raises InvalidParameter on bad inputs. Runs without the
 GIL.)doc");
 }

@@ -27,7 +27,7 @@ ProgressCallback PythonProgress::callback() const {
 void PythonProgress::rethrow() const { std::rethrow_exception(state_->error); }
 
 SweepOptions sweep_options(int threads, const PythonProgress& progress,
-                           const SteadyStateOptions& steady, const CoulombFriction& law,
+                           const SteadyStateOptions& steady, const FrictionLaw& law,
                            double jerk) {
   SweepOptions o;
   o.threads = threads;

@@ -54,7 +54,7 @@ class PythonProgress {
 /// friction law; jerk: sweep_accelerations' jerk limit, +inf: jump accelerations).
 SweepOptions sweep_options(int threads, const PythonProgress& progress,
                            const SteadyStateOptions& steady = {},
-                           const CoulombFriction& law = {},
+                           const FrictionLaw& law = {},
                            double jerk = std::numeric_limits<double>::infinity());
 
 }  // namespace selfalign::python

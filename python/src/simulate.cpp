@@ -58,24 +58,65 @@ and stick (bool). The arrays are views into the result (kept alive by it); copy 
 
 void bind_method(py::module_& m) {
   py::enum_<Method> method(m, "Method",
-                           "Solver choice; also accepted as the strings 'exact' and "
-                           "'time-stepping'.");
+                           "Solver choice; also accepted as the strings 'exact', "
+                           "'time-stepping' and 'integrator'.");
   method
       .value("exact", Method::exact,
              "event-driven closed form: piecewise-constant y'', piecewise-affine m(x)")
       .value("time_stepping", Method::time_stepping,
              "Moreau time-stepping (Sect. 4.1): any profile and friction map")
+      .value("integrator", Method::integrator,
+             "exact sticks, slips by Dormand-Prince with event location (speed-dependent laws)")
       .def(py::init(&parse_method), py::arg("text"));
-  refuse_unknown_values(method, "Method", 2);
+  refuse_unknown_values(method, "Method", 3);
   py::implicitly_convertible<py::str, Method>();
+}
+
+void bind_integrator(py::module_& m) {
+  const IntegratorOptions d;
+  py::class_<IntegratorOptions>(m, "IntegratorOptions",
+                                "Tolerances of the slip integrator (Odeint's dense-output "
+                                "Dormand-Prince 5(4): per step |err| <= abs + rel (|x| + dt |x'|)).")
+      .def(py::init([](double relative_tolerance, double absolute_tolerance) {
+             IntegratorOptions o{relative_tolerance, absolute_tolerance};
+             validate(o);
+             return o;
+           }),
+           py::kw_only(), py::arg("relative_tolerance") = d.relative_tolerance,
+           py::arg("absolute_tolerance") = d.absolute_tolerance,
+           "Both in (0, 1); raises InvalidParameter naming the tolerance otherwise.")
+      .def_readwrite("relative_tolerance", &IntegratorOptions::relative_tolerance, "in (0, 1)")
+      .def_readwrite("absolute_tolerance", &IntegratorOptions::absolute_tolerance,
+                     "in (0, 1) [-]")
+      .def("__repr__", [](const IntegratorOptions& o) {
+        return Repr("IntegratorOptions")("relative_tolerance", o.relative_tolerance)(
+                   "absolute_tolerance", o.absolute_tolerance)
+            .str();
+      });
+  py::class_<IntegratorStatistics>(m, "IntegratorStatistics",
+                                   "What the slip integrator did (zeros for other methods).")
+      .def_readonly("steps", &IntegratorStatistics::steps, "accepted Runge-Kutta steps")
+      .def_readonly("rejected", &IntegratorStatistics::rejected, "rejected (retried) steps")
+      .def_readonly("rhs_evaluations", &IntegratorStatistics::rhs_evaluations,
+                    "right-hand-side evaluations")
+      .def_readonly("events", &IntegratorStatistics::events,
+                    "located events: x' = 0, friction boundaries, stick breaks")
+      .def_readonly("slips", &IntegratorStatistics::slips, "slip intervals integrated")
+      .def_readonly("sticks", &IntegratorStatistics::sticks, "stick intervals held exactly")
+      .def("__repr__", [](const IntegratorStatistics& s) {
+        return Repr("IntegratorStatistics")("steps", s.steps)("rejected", s.rejected)(
+                   "rhs_evaluations", s.rhs_evaluations)("events", s.events)
+            .str();
+      });
 }
 
 void bind_options(py::module_& m) {
   const SimulationOptions d;
   py::class_<SimulationOptions>(m, "SimulationOptions", "Options of simulate().")
       .def(py::init([](Method method, double duration, double step, double theta,
-                       double output_step, bool record) {
+                       double output_step, bool record, const IntegratorOptions& integrator) {
              SimulationOptions o;
+             o.integrator = integrator;
              o.method = method;
              o.duration = duration;
              o.step = step;
@@ -86,8 +127,13 @@ void bind_options(py::module_& m) {
            }),
            py::kw_only(), py::arg("method") = d.method, py::arg("duration") = d.duration,
            py::arg("step") = d.step, py::arg("theta") = d.theta,
-           py::arg("output_step") = d.output_step, py::arg("record") = d.record)
-      .def_readwrite("method", &SimulationOptions::method, "Method.exact or Method.time_stepping")
+           py::arg("output_step") = d.output_step, py::arg("record") = d.record,
+           py::arg("integrator") = d.integrator)
+      .def_readwrite("method", &SimulationOptions::method,
+                     "Method.exact, Method.time_stepping or Method.integrator (exact under a "
+                     "speed-dependent law runs the integrator)")
+      .def_readwrite("integrator", &SimulationOptions::integrator,
+                     "IntegratorOptions: the slip integrator's tolerances")
       .def_readwrite("duration", &SimulationOptions::duration, "simulated time after t0 [-], > 0")
       .def_readwrite("step", &SimulationOptions::step,
                      "time-stepping step h [-], > 0 (unused by the exact solver)")
@@ -110,14 +156,18 @@ void bind_simulate(py::module_& m) {
   bind_object_state(m);
   bind_trajectory(m);
   bind_method(m);
+  bind_integrator(m);
   bind_options(m);
 
   py::class_<SimulationResult>(m, "SimulationResult", "The outcome of simulate().")
       .def_readonly("trajectory", &SimulationResult::trajectory,
                     "samples at t0 + j*output_step and at the end time (NumPy columns)")
       .def_readonly("final_state", &SimulationResult::final_state, "state at t0 + duration [-]")
+      .def_readonly("method", &SimulationResult::method, "the solver that produced the result")
+      .def_readonly("integrator", &SimulationResult::integrator,
+                    "IntegratorStatistics of the slip integrator (zeros for other methods)")
       .def_readonly("work", &SimulationResult::work,
-                    "arcs (exact) or steps (time-stepping) computed")
+                    "arcs (exact, integrator) or steps (time-stepping) computed")
       .def_readonly("mean_velocity_last_period", &SimulationResult::mean_velocity_last_period,
                     "(x(t_end) - x(t_end - Δt))/Δt [-]; NaN if the run is shorter than a period")
       .def_readonly("stick_fraction", &SimulationResult::stick_fraction,
@@ -135,15 +185,15 @@ void bind_simulate(py::module_& m) {
   m.def(
       "simulate",
       [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& initial,
-         const SimulationOptions& options, const CoulombFriction& law) {
+         const SimulationOptions& options, const FrictionLaw& law) {
         return simulate(profile, friction, law, initial, options);
       },
       py::arg("profile"), py::arg("friction"), py::arg("initial") = ObjectState{},
-      py::arg("options") = SimulationOptions{}, py::kw_only(), py::arg("law") = CoulombFriction{},
+      py::arg("options") = SimulationOptions{}, py::kw_only(), py::arg("law") = FrictionLaw{},
       py::call_guard<py::gil_scoped_release>(), R"doc(
 Simulates eq. (6), -Sign(x') ∋ x'' + y'', with friction level m(x) from `initial` over
 options.duration, with the exact event-driven solver or Moreau time-stepping, under the
-friction law `law` (CoulombFriction: static >= kinetic, optionally direction-dependent kinetic;
+friction law `law` (FrictionLaw: static >= kinetic, optionally direction-dependent kinetic;
 the paper's law by default). Raises InvalidParameter on bad options, or when Method.exact is
 asked of a profile that is not piecewise constant or piecewise linear in acceleration, or a
 friction map that is not piecewise affine. Runs without the GIL.)doc");

@@ -253,25 +253,25 @@ void bind_period_map(py::module_& m) {
   py::class_<PeriodMap>(m, "PeriodMap", R"doc(
 The map P: (x, x') at phase 0 -> (x, x') one table period Δt later [-], for a table profile,
 a friction level m(x) (FrictionMap; the uniform m = 1 without one) and a friction law
-(CoulombFriction). Integrated by the exact solver when the profile's acceleration is
+(FrictionLaw). Integrated by the exact solver when the profile's acceleration is
 piecewise polynomial (constant or finite jerk) and the level piecewise affine, by Moreau
 time-stepping (h = Δt/steps_per_period) otherwise. Every analysis (steady state, Floquet,
 convergence, stopping, positioning, sweeps) iterates this map. The map keeps its profile and
 friction alive.)doc")
-      .def(py::init([](const TableProfile& profile, const CoulombFriction& law,
+      .def(py::init([](const TableProfile& profile, const FrictionLaw& law,
                        int steps_per_period, double theta) {
              return std::make_unique<PeriodMap>(profile, law,
                                                 PeriodMapOptions{steps_per_period, theta});
            }),
-           py::arg("profile"), py::arg("law") = CoulombFriction{}, py::kw_only(),
+           py::arg("profile"), py::arg("law") = FrictionLaw{}, py::kw_only(),
            py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
            py::keep_alive<1, 2>(), "The uniform low-friction table (m = 1) under `law`.")
       .def(py::init([](const TableProfile& profile, const FrictionMap& friction,
-                       const CoulombFriction& law, int steps_per_period, double theta) {
+                       const FrictionLaw& law, int steps_per_period, double theta) {
              return std::make_unique<PeriodMap>(profile, friction, law,
                                                 PeriodMapOptions{steps_per_period, theta});
            }),
-           py::arg("profile"), py::arg("friction"), py::arg("law") = CoulombFriction{},
+           py::arg("profile"), py::arg("friction"), py::arg("law") = FrictionLaw{},
            py::kw_only(), py::arg("steps_per_period") = d.steps_per_period,
            py::arg("theta") = d.theta, py::keep_alive<1, 2>(), py::keep_alive<1, 3>(), R"doc(
 A table whose friction level is `friction` under `law`. steps_per_period (>= 1) and theta (in
@@ -347,7 +347,7 @@ non-finite x0, v0.)doc")
         return "<PeriodMap profile='" + map.profile().kind() +
                "' period=" + format_number(map.period()) + " method=" +
                enum_name(map.method()) + " law=" +
-               Repr("CoulombFriction")("static", map.law().static_coefficient())(
+               Repr("FrictionLaw")("static", map.law().static_coefficient())(
                    "kinetic_forward", map.law().kinetic_forward())(
                    "kinetic_backward", map.law().kinetic_backward())
                    .str() +

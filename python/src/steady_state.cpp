@@ -46,8 +46,9 @@ void bind_steady_options(py::module_& m) {
   const SteadyStateOptions d;
   py::class_<SteadyStateOptions>(m, "SteadyStateOptions", "Options of steady_state().")
       .def(py::init([](int max_periods, double velocity_tol, int steps_per_period, double theta,
-                       double stepping_tol) {
+                       double stepping_tol, const IntegratorOptions& integrator) {
              SteadyStateOptions o;
+             o.integrator = integrator;
              o.max_periods = max_periods;
              o.velocity_tol = velocity_tol;
              o.steps_per_period = steps_per_period;
@@ -58,7 +59,10 @@ void bind_steady_options(py::module_& m) {
            py::kw_only(), py::arg("max_periods") = d.max_periods,
            py::arg("velocity_tol") = d.velocity_tol,
            py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
-           py::arg("stepping_tol") = d.stepping_tol)
+           py::arg("stepping_tol") = d.stepping_tol, py::arg("integrator") = d.integrator)
+      .def_readwrite("integrator", &SteadyStateOptions::integrator,
+                     "IntegratorOptions (speed-dependent laws); velocity_tol is then at least 10 "
+                     "relative_tolerance")
       .def_readwrite("max_periods", &SteadyStateOptions::max_periods,
                      "periods simulated at most before giving up (>= 2)")
       .def_readwrite("velocity_tol", &SteadyStateOptions::velocity_tol,
@@ -105,6 +109,8 @@ void bind_steady_state(py::module_& m) {
                     "a posteriori Table 1 case of the steady period")
       .def_readonly("pattern", &SteadyState::pattern,
                     "the steady period's stick/slip sequence, e.g. 'stick,forward,backward'")
+      .def_readonly("integrator", &SteadyState::integrator,
+                    "IntegratorStatistics of the slip integrator (zeros for other methods)")
       .def("__repr__", [](const SteadyState& s) {
         return Repr("SteadyState")("converged", s.converged)("x_dot_0s", s.x_dot_0s)(
                    "v_bar", s.v_bar)("f", s.f)
@@ -116,16 +122,16 @@ void bind_steady_state(py::module_& m) {
         py::overload_cast<const TableProfile&, const SteadyStateOptions&>(&steady_state), py::arg("profile"),
         py::arg("options"), py::call_guard<py::gil_scoped_release>());
   m.def("steady_state",
-        py::overload_cast<const TableProfile&, const CoulombFriction&, const SteadyStateOptions&>(
+        py::overload_cast<const TableProfile&, const FrictionLaw&, const SteadyStateOptions&>(
             &steady_state),
-        py::arg("profile"), py::arg("law") = CoulombFriction{},
+        py::arg("profile"), py::arg("law") = FrictionLaw{},
         py::arg("options") = SteadyStateOptions{}, py::call_guard<py::gil_scoped_release>(),
         R"doc(
 Steady state on the uniform table (friction bound 1): the unique periodic velocity response
 (Sect. 6.2), found by iterating the period map P(v) = x'(t0 + Δt) and secant steps on
 P(v) - v, stopped on the estimated error |P(v) - v| / (1 - λ) (x_dot_0s_error), not on the
 residual; its average velocity v̄ (eq. 10), objective f (eq. 11) and a posteriori case.
-law: the friction law (CoulombFriction: static >= kinetic, optionally direction-dependent
+law: the friction law (FrictionLaw: static >= kinetic, optionally direction-dependent
 kinetic coefficients); the paper's static = kinetic = 1 by default.
 Exact solver where the table acceleration is piecewise polynomial (constant or finite jerk),
 time-stepping otherwise. Raises InvalidParameter on bad options. Runs without the GIL.)doc");

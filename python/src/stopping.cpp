@@ -155,20 +155,20 @@ void bind_stopping_run(py::module_& m) {
   m.def(
       "stopping_run",
       [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& start,
-         const StoppingOptions& options, const CoulombFriction& law) {
+         const StoppingOptions& options, const FrictionLaw& law) {
         if (const auto* two = dynamic_cast<const TwoRegionFriction*>(&friction);
             two && law.is_unit())
           return stopping_run(profile, *two, start, options);
         return stopping_run(profile, friction, law, start, options);
       },
       py::arg("profile"), py::arg("friction"), py::arg("start"),
-      py::arg("options") = StoppingOptions{}, py::kw_only(), py::arg("law") = CoulombFriction{},
+      py::arg("options") = StoppingOptions{}, py::kw_only(), py::arg("law") = FrictionLaw{},
       py::call_guard<py::gil_scoped_release>(), R"doc(
 Runs the exact solver from `start` until the object provably stops for good (Sect. 7): a
 permanent stick (eq. 40: static m(x) >= max|y''|), or, for three-phase profiles on the
 two-region table under the paper's law, stick positions that the map of eq. (59) drives to
 its fixed point x_stick,min (accumulation, Sect. 7.3). Any piecewise-affine friction level
-and CoulombFriction law; the profile must be piecewise constant or piecewise linear in
+and FrictionLaw law; the profile must be piecewise constant or piecewise linear in
 acceleration. Raises InvalidParameter otherwise. Runs without the GIL.)doc");
 }
 

@@ -98,7 +98,7 @@ void bind_sweep(py::module_& m) {
       "sweep_accelerations",
       [](double period, double stroke, const py::object& a2_in, const py::object& a3_in,
          const SteadyStateOptions& steady, int threads, const py::object& progress_in,
-         const CoulombFriction& law, double jerk) {
+         const FrictionLaw& law, double jerk) {
         const std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
         const PythonProgress progress(progress_in);
         const SweepOptions options = sweep_options(threads, progress, steady, law, jerk);
@@ -126,7 +126,7 @@ void bind_sweep(py::module_& m) {
       },
       py::arg("period"), py::arg("stroke"), py::arg("a2"), py::arg("a3"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
-      py::arg("progress") = py::none(), py::arg("law") = CoulombFriction{},
+      py::arg("progress") = py::none(), py::arg("law") = FrictionLaw{},
       py::arg("jerk") = std::numeric_limits<double>::infinity(),
       (std::string(R"doc(
 f and the motion case of the three-phase profile over the grid a2 × a3 at fixed (Δt, Δy)
@@ -136,7 +136,7 @@ simulated steady period), 'v_bar' (eq. 10), 'f' (eq. 11; +inf for v̄ = 0), 'x_d
 (float64, NaN for case 0), 'converged' (bool), 'failure' (str: '' for a computed cell, else
 why it could not be computed; its numbers are then NaN — one cell never aborts the sweep);
 plus the 1-D grids 'a2' and 'a3'.
-law: every cell's friction law (CoulombFriction; the paper's by default). jerk: the jerk
+law: every cell's friction law (FrictionLaw; the paper's by default). jerk: the jerk
 limit of every cell's profile [-], > 0 (JerkLimitedThreePhaseProfile; a cell without one is
 case 0); inf (the default): the paper's jump accelerations. 'predicted' always applies the
 Fig. 8 rules of the jump profile under the paper's law.
@@ -150,7 +150,7 @@ Raises InvalidParameter on bad inputs (jerk <= 0 or NaN included).)doc") +
       "sweep_period",
       [](const ProfileFamily& family, double stroke, const py::object& periods_in,
          const SteadyStateOptions& steady, int threads, const py::object& progress_in,
-         const CoulombFriction& law) {
+         const FrictionLaw& law) {
         const std::vector<double> periods = to_vector(periods_in, "periods");
         const PythonProgress progress(progress_in);
         const SweepOptions options = sweep_options(threads, progress, steady, law);
@@ -159,20 +159,20 @@ Raises InvalidParameter on bad inputs (jerk <= 0 or NaN included).)doc") +
       },
       py::arg("family"), py::arg("stroke"), py::arg("periods"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
-      py::arg("progress") = py::none(), py::arg("law") = CoulombFriction{},
+      py::arg("progress") = py::none(), py::arg("law") = FrictionLaw{},
       (std::string(R"doc(
 f against Δt at fixed Δy (Fig. 4). Returns a dict of 1-D arrays, one entry per period:
 'period', 'stroke', 'v_bar' (eq. 10), 'f' (eq. 11) (float64; NaN where the family has no
 member), 'physical' (bool), 'observed' (int32 StickSlipCase values), 'failure' (str: '' for a
 computed point, else why it could not be computed; v_bar and f are then NaN).
-law: every point's friction law (CoulombFriction; the paper's by default).)doc") +
+law: every point's friction law (FrictionLaw; the paper's by default).)doc") +
        kSweepArgs)
           .c_str());
   m.def(
       "sweep_stroke",
       [](const ProfileFamily& family, double period, const py::object& strokes_in,
          const SteadyStateOptions& steady, int threads, const py::object& progress_in,
-         const CoulombFriction& law) {
+         const FrictionLaw& law) {
         const std::vector<double> strokes = to_vector(strokes_in, "strokes");
         const PythonProgress progress(progress_in);
         const SweepOptions options = sweep_options(threads, progress, steady, law);
@@ -181,10 +181,10 @@ law: every point's friction law (CoulombFriction; the paper's by default).)doc")
       },
       py::arg("family"), py::arg("period"), py::arg("strokes"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
-      py::arg("progress") = py::none(), py::arg("law") = CoulombFriction{},
+      py::arg("progress") = py::none(), py::arg("law") = FrictionLaw{},
       (std::string(R"doc(
 f against Δy at fixed Δt (Fig. 5). Returns the same dict as sweep_period, one entry per
-stroke. law: every point's friction law (CoulombFriction; the paper's by default).)doc") +
+stroke. law: every point's friction law (FrictionLaw; the paper's by default).)doc") +
        kSweepArgs)
           .c_str());
 }

@@ -30,10 +30,10 @@ int friction_class(const Arc& a) { return a.kind() == ArcKind::stick ? 0 : a.dir
 }  // namespace
 
 VelocityConvergence velocity_convergence(const TableProfile& profile, const ConvergenceOptions& o) {
-  return velocity_convergence(profile, CoulombFriction{}, o);
+  return velocity_convergence(profile, FrictionLaw{}, o);
 }
 
-VelocityConvergence velocity_convergence(const TableProfile& profile, const CoulombFriction& law,
+VelocityConvergence velocity_convergence(const TableProfile& profile, const FrictionLaw& law,
                                          const ConvergenceOptions& o) {
   require_exact_profile(profile, "convergence");
   require_moderate("v1", o.v1);

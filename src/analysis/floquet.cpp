@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "selfalign/error.hpp"
@@ -28,28 +29,41 @@ double slip_slip_multiplier(double a2, double a3) {
 }
 
 FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FloquetOptions& o) {
-  return floquet_multipliers(profile, CoulombFriction{}, o);
+  return floquet_multipliers(profile, FrictionLaw{}, o);
 }
 
-FloquetAnalysis floquet_multipliers(const TableProfile& profile, const CoulombFriction& law,
+FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FrictionLaw& law,
                                     const FloquetOptions& o) {
-  require_exact_profile(profile, "Floquet analysis");
-  const PeriodMap map(profile, law);
+  if (!law.velocity_dependent()) require_exact_profile(profile, "Floquet analysis");
+  else if (!integrable_profile(profile))
+    throw InvalidParameter("profile", profile.kind(),
+                           "Floquet analysis under a velocity-dependent law needs a "
+                           "piecewise-polynomial or smooth table motion");
+  PeriodMapOptions mo;
+  mo.integrator = o.steady.integrator;
+  const UniformFriction uniform(1.0);
+  const PeriodMap map(profile, uniform, law, mo);
   return floquet_multipliers(map, o);
 }
 
 FloquetAnalysis floquet_multipliers(const PeriodMap& map, const FloquetOptions& o) {
   // Beyond 0.1 (a tenth of the length scale) a central difference approximates no derivative.
   require_in_half_open("fd_step", o.fd_step, 0.0, 0.1);
-  if (!map.has_arcs())  // saltation needs the arcs: refuse a time-stepping map by name
-    map.exact_setup();
+  // Saltation needs the arcs: refuse a time-stepping map by name. The integrator's map has no
+  // closed-form arcs either, but its finite differences are accurate to its tolerance.
+  const bool integrated = map.method() == Method::integrator;
+  if (!map.has_arcs() && !integrated) map.exact_setup();
   FloquetAnalysis r;
   r.steady = steady_state(map, o.steady);
   // 2. Saltation: transition matrices of the arcs of one steady period, coupled at events.
-  r.saltation = make_monodromy(map.saltation_monodromy(0, r.steady.x_dot_0s));
+  if (!integrated) r.saltation = make_monodromy(map.saltation_monodromy(0, r.steady.x_dot_0s));
   // 3. Central finite differences of the period map.
   r.finite_difference =
       make_monodromy(map.finite_difference_monodromy(0, r.steady.x_dot_0s, o.fd_step));
+  if (integrated) {  // one method: no spread to report
+    r.spread = std::numeric_limits<double>::quiet_NaN();
+    return r;
+  }
   r.spread = 0;
   for (int k = 0; k < 2; ++k)
     r.spread = std::max(r.spread, std::abs(r.saltation.multipliers[k] -

@@ -43,9 +43,32 @@ struct SampleCensus final : StepSink {
   }
 };
 
+// The integrator's intervals as census samples (a class and a direction, no closed form).
+struct IntervalCensus final : IntervalSink {
+  MotionCensus* census;
+  void on_interval(const MotionInterval& i) override {
+    Arc a;
+    a.t0 = i.t0;
+    a.t1 = i.t1;
+    if (i.direction != 0) a.shape = PolynomialArc{};
+    a.direction = i.direction;
+    census->on_arc(a);
+  }
+};
+
 }  // namespace
 
-PeriodMap::PeriodMap(const TableProfile& profile, const CoulombFriction& law,
+void PeriodMap::add(const IntegratorStatistics& s) const {
+  const std::lock_guard<std::mutex> lock(statistics_mutex_);
+  statistics_ += s;
+}
+
+IntegratorStatistics PeriodMap::integrator_statistics() const {
+  const std::lock_guard<std::mutex> lock(statistics_mutex_);
+  return statistics_;
+}
+
+PeriodMap::PeriodMap(const TableProfile& profile, const FrictionLaw& law,
                      const PeriodMapOptions& options)
     : profile_(profile),
       owned_(std::make_unique<UniformFriction>(1.0)),
@@ -56,18 +79,29 @@ PeriodMap::PeriodMap(const TableProfile& profile, const CoulombFriction& law,
 }
 
 PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
-                     const CoulombFriction& law, const PeriodMapOptions& options)
+                     const FrictionLaw& law, const PeriodMapOptions& options)
     : profile_(profile), friction_(&friction), law_(law), options_(options) {
   choose_solver();
 }
 
 // Exact where a closed form exists: piecewise-polynomial acceleration on a piecewise-affine
-// level, or a smooth motion on a piecewise-constant level; time-stepping otherwise.
+// level, or a smooth motion on a piecewise-constant level; a velocity-dependent law by the
+// slip integrator (piecewise-polynomial or smooth profiles on piecewise-affine levels);
+// time-stepping otherwise.
 void PeriodMap::choose_solver() {
   const PiecewisePolynomialProfile* pwp = profile_.piecewise_polynomial();
   const SmoothMotion* motion = profile_.smooth();
   const PiecewiseAffineFriction* affine = friction_->piecewise_affine();
-  if (pwp && affine) {
+  if (law_.velocity_dependent() && affine && integrable_profile(profile_)) {
+    validate(options_.integrator);
+    integrator_ = std::make_unique<IntegratorSetup>(
+        IntegratorSetup{profile_, *affine, law_, options_.integrator});
+  } else if (law_.velocity_dependent()) {  // explicit speed dependence in the stepper
+    if (options_.steps_per_period < 1)
+      throw InvalidParameter("steps_per_period", options_.steps_per_period, "must be >= 1");
+    stepping_ = {profile_.period() / options_.steps_per_period, options_.theta};
+    validate(stepping_);
+  } else if (pwp && affine) {
     exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
   } else if (motion && affine && piecewise_constant_level(*affine)) {
     smooth_ = std::make_unique<SmoothSetup>(SmoothSetup{*motion, *affine, law_});
@@ -120,6 +154,15 @@ ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
     advance_smooth(*smooth_, s, P, census ? &both : sink);
     return s;
   }
+  if (integrator_) {
+    ObjectState s{0, x0, v0};
+    IntervalCensus intervals;
+    intervals.census = census;
+    IntegratorStatistics stats;
+    advance_integrated(*integrator_, s, P, census ? &intervals : nullptr, &stats);
+    add(stats);
+    return s;
+  }
   TimeSteppingState s = make_time_stepping_state(profile_, {0, x0, v0});
   SampleCensus samples;
   samples.census = census;
@@ -141,7 +184,7 @@ std::vector<Arc> PeriodMap::arcs(double x0, double v0) const {
   return std::move(list.arcs);
 }
 
-Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const CoulombFriction& law) {
+Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const FrictionLaw& law) {
   Eigen::Matrix2d s = Eigen::Matrix2d::Identity();
   switch (a.end) {
     case ArcEnd::velocity_zero: {
@@ -197,12 +240,14 @@ Eigen::Matrix2d PeriodMap::finite_difference_monodromy(double x0, double v0, dou
 
 PeriodMap::Run::Run(const PeriodMap& map, const ObjectState& start) : map_(&map) {
   if (map.exact_) exact_ = make_exact_state(*map.exact_, start);
-  else if (map.smooth_) smooth_state_ = start;
+  else if (map.smooth_ || map.integrator_) smooth_state_ = start;
   else stepping_ = make_time_stepping_state(map.profile_, start);
 }
 
 const ObjectState& PeriodMap::Run::state() const noexcept {
-  return map_->exact_ ? exact_.object : map_->smooth_ ? smooth_state_ : stepping_.object;
+  return map_->exact_                        ? exact_.object
+         : map_->smooth_ || map_->integrator_ ? smooth_state_
+                                              : stepping_.object;
 }
 
 const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
@@ -212,6 +257,12 @@ const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
   }
   if (map_->smooth_) {
     advance_smooth(*map_->smooth_, smooth_state_, t_end, sink);
+    return smooth_state_;
+  }
+  if (map_->integrator_) {
+    IntegratorStatistics stats;
+    advance_integrated(*map_->integrator_, smooth_state_, t_end, nullptr, &stats);
+    map_->add(stats);
     return smooth_state_;
   }
   const double h = map_->stepping_.step;

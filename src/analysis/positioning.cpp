@@ -37,10 +37,10 @@ struct MaxPosition final : ArcSink {
 
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, double width, double c_mu,
                                          const PositioningOptions& o) {
-  return positioning_accuracy(profile, CoulombFriction{}, width, c_mu, o);
+  return positioning_accuracy(profile, FrictionLaw{}, width, c_mu, o);
 }
 
-PositioningAccuracy positioning_accuracy(const TableProfile& profile, const CoulombFriction& law,
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
                                          double width, double c_mu,
                                          const PositioningOptions& o) {
   validate(o);

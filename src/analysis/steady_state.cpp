@@ -14,14 +14,14 @@ double objective_f(double v_bar, double c) {
 }
 
 SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& o) {
-  return steady_state(profile, CoulombFriction{}, o);
+  return steady_state(profile, FrictionLaw{}, o);
 }
 
-SteadyState steady_state(const TableProfile& profile, const CoulombFriction& law,
+SteadyState steady_state(const TableProfile& profile, const FrictionLaw& law,
                          const SteadyStateOptions& o) {
   if (o.steps_per_period < 1)
     throw InvalidParameter("steps_per_period", o.steps_per_period, "must be >= 1");
-  const PeriodMap map(profile, law, {o.steps_per_period, o.theta});
+  const PeriodMap map(profile, law, {o.steps_per_period, o.theta, o.integrator});
   return steady_state(map, o);
 }
 
@@ -35,6 +35,9 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   double tol = o.velocity_tol;
   if (r.method == Method::time_stepping)
     tol = o.stepping_tol > 0 ? o.stepping_tol : 10 * map.step();
+  if (r.method == Method::integrator)
+    tol = std::max(tol, 10 * map.integrator_options().relative_tolerance);
+  const IntegratorStatistics work_before = map.integrator_statistics();
   // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0.
   auto period_map = [&](double v, MotionCensus* census) { return map(0, v, nullptr, census); };
 
@@ -123,6 +126,8 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   ++r.periods;
   r.v_bar = r.displacement / P;  // eq. (10)
   r.f = objective_f(r.v_bar);    // eq. (11)
+  r.integrator = map.integrator_statistics();
+  r.integrator -= work_before;
   return r;
 }
 

@@ -18,7 +18,7 @@ bool sticks_permanently(const FrictionMap& friction, double peak_acceleration, d
   return friction.bound(x) >= peak_acceleration;  // eq. (40)
 }
 
-bool sticks_permanently(const FrictionMap& friction, const CoulombFriction& law,
+bool sticks_permanently(const FrictionMap& friction, const FrictionLaw& law,
                         double peak_acceleration, double x) {
   return law.static_coefficient() * friction.bound(x) >= peak_acceleration;
 }
@@ -30,7 +30,7 @@ double friction_rise(const PiecewiseAffineFriction& f) {
   return std::numeric_limits<double>::infinity();
 }
 
-double stick_position_min(const PiecewiseAffineFriction& f, const CoulombFriction& law,
+double stick_position_min(const PiecewiseAffineFriction& f, const FrictionLaw& law,
                           double peak) {
   const auto pieces = f.pieces();
   const double s = law.static_coefficient();

@@ -81,11 +81,11 @@ bool observed_accumulation(const std::vector<double>& x, double x_stick_min, dou
 
 StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
                          const ObjectState& start, const StoppingOptions& o) {
-  return stopping_run(profile, friction, CoulombFriction{}, start, o);
+  return stopping_run(profile, friction, FrictionLaw{}, start, o);
 }
 
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
-                         const CoulombFriction& law, const ObjectState& start,
+                         const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& o) {
   const PiecewisePolynomialProfile& pwc = require_exact_profile(profile, "a stopping run");
   if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");

@@ -23,7 +23,7 @@ constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimis
 // the next derivative from every near-extreme grid point.
 class FourierEvaluator {
  public:
-  FourierEvaluator(const ActuatorLimits& l, int order, int segments, const CoulombFriction& law)
+  FourierEvaluator(const ActuatorLimits& l, int order, int segments, const FrictionLaw& law)
       : l_(l), law_(law), n_(order), m_(segments), w_(2 * std::numbers::pi / l.period) {
     table(kSamplesPerHarmonic * n_, grid_cos_, grid_sin_);
     table(m_, node_cos_, node_sin_);
@@ -132,7 +132,7 @@ class FourierEvaluator {
   }
 
   ActuatorLimits l_;
-  CoulombFriction law_;
+  FrictionLaw law_;
   int n_, m_;
   double w_;
   std::vector<double> grid_cos_, grid_sin_, node_cos_, node_sin_;

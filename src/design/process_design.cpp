@@ -48,7 +48,7 @@ void validate(const DesignRequest& q) {
     throw InvalidParameter("entries", q.entries, "must be in [2, 1000]");
 }
 
-CoulombFriction friction_law(const DesignRequest& q) {
+FrictionLaw friction_law(const DesignRequest& q) {
   const double s = std::isnan(q.mu_static) ? q.mu : q.mu_static;
   const double back = std::isnan(q.mu_backward) ? q.mu : q.mu_backward;
   require_positive_moderate("mu_static", s);
@@ -59,7 +59,7 @@ CoulombFriction friction_law(const DesignRequest& q) {
   if (!(s >= back))
     throw InvalidParameter("mu_backward", back, "must be <= mu_static = " + format_number(s) +
                                                     " (the static coefficient is >= the kinetic one)");
-  return CoulombFriction(s / q.mu, 1.0, back / q.mu);
+  return FrictionLaw(s / q.mu, 1.0, back / q.mu);
 }
 
 std::unique_ptr<TableProfile> recommended_profile(const DesignResult& r) {
@@ -106,7 +106,7 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
   const double distance = sc.length_from_si(q.distance);
   const double tolerance = sc.length_from_si(q.tolerance);
   const double jerk = sc.acceleration_from_si(q.jerk_max) * sc.time();  // [m/s^3] -> [-]
-  const CoulombFriction law = friction_law(q);
+  const FrictionLaw law = friction_law(q);
   DesignResult r;
   const double a_hi = std::min(q.c_mu, a_max);
   if (a_hi <= 1) {

@@ -31,7 +31,7 @@ ThreePhaseConstraints constraints_of(const ActuatorLimits& l, const ThreePhaseSo
 }  // namespace
 
 ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& l, double a2, double a3,
-                                           const CoulombFriction& law) {
+                                           const FrictionLaw& law) {
   ThreePhaseDesignPoint p;
   const ThreePhaseParameters params{l.period, l.stroke, a2, a3};
   std::unique_ptr<TableProfile> profile;

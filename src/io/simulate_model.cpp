@@ -100,7 +100,7 @@ std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c, UnitSystem u
 
 }  // namespace
 
-CoulombFriction friction_law(const SimulateConfig& c) {
+FrictionLaw friction_law(const SimulateConfig& c) {
   const SimulateConfig r = resolve_simulate_config(c);
   const double mu = require_positive("mu", *r.mu);
   const double s = r.mu_static.value_or(mu), back = r.mu_backward.value_or(mu);
@@ -113,7 +113,7 @@ CoulombFriction friction_law(const SimulateConfig& c) {
     throw InvalidParameter("mu_backward", back,
                            "must be <= mu_static = " + format_number(s) +
                                " (the static coefficient is >= the kinetic one)");
-  return CoulombFriction(s / mu, 1.0, back / mu);
+  return FrictionLaw(s / mu, 1.0, back / mu);
 }
 
 namespace {

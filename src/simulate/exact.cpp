@@ -133,7 +133,7 @@ std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t
                             ArcSink* sink) {
   const auto segs = setup.profile.segments();
   const auto pieces = setup.friction.pieces();
-  const CoulombFriction& law = setup.law;
+  const FrictionLaw& law = setup.law;
   const std::size_t nseg = segs.size();
   const double P = setup.profile.period();
   double t = state.object.t, x = state.object.x, v = state.object.xd;

@@ -15,11 +15,17 @@ namespace selfalign {
 Method parse_method(const std::string& text) {
   if (text == "exact") return Method::exact;
   if (text == "time-stepping") return Method::time_stepping;
-  throw InvalidParameter("method", text, "must be one of: exact, time-stepping");
+  if (text == "integrator") return Method::integrator;
+  throw InvalidParameter("method", text, "must be one of: exact, time-stepping, integrator");
 }
 
 std::string to_string(Method method) {
-  return method == Method::exact ? "exact" : "time-stepping";
+  switch (method) {
+    case Method::exact: return "exact";
+    case Method::time_stepping: return "time-stepping";
+    case Method::integrator: return "integrator";
+  }
+  return "?";
 }
 
 namespace {
@@ -30,12 +36,13 @@ class Runner {
   virtual ~Runner() = default;
   virtual ObjectState advance_to(double t) = 0;
   virtual std::size_t work() const = 0;
+  virtual IntegratorStatistics statistics() const { return {}; }
 };
 
 class ExactRunner final : public Runner {
  public:
   ExactRunner(const PiecewisePolynomialProfile& p, const PiecewiseAffineFriction& f,
-              const CoulombFriction& law, const ObjectState& s0)
+              const FrictionLaw& law, const ObjectState& s0)
       : setup_{p, f, law}, state_(make_exact_state(setup_, s0)) {}
   ObjectState advance_to(double t) override {
     work_ += advance_exact(setup_, state_, t);
@@ -51,7 +58,7 @@ class ExactRunner final : public Runner {
 
 class SmoothRunner final : public Runner {
  public:
-  SmoothRunner(const SmoothMotion& m, const PiecewiseAffineFriction& f, const CoulombFriction& law,
+  SmoothRunner(const SmoothMotion& m, const PiecewiseAffineFriction& f, const FrictionLaw& law,
                const ObjectState& s0)
       : setup_{m, f, law}, state_(s0) {}
   ObjectState advance_to(double t) override {
@@ -66,9 +73,28 @@ class SmoothRunner final : public Runner {
   std::size_t work_ = 0;
 };
 
+class IntegratorRunner final : public Runner {
+ public:
+  IntegratorRunner(const TableProfile& p, const PiecewiseAffineFriction& f, const FrictionLaw& law,
+                   const IntegratorOptions& o, const ObjectState& s0)
+      : setup_{p, f, law, o}, state_(s0) {}
+  ObjectState advance_to(double t) override {
+    work_ += advance_integrated(setup_, state_, t, nullptr, &stats_);
+    return state_;
+  }
+  std::size_t work() const override { return work_; }
+  IntegratorStatistics statistics() const override { return stats_; }
+
+ private:
+  IntegratorSetup setup_;
+  ObjectState state_;
+  std::size_t work_ = 0;
+  IntegratorStatistics stats_;
+};
+
 class SteppingRunner final : public Runner {
  public:
-  SteppingRunner(const TableProfile& p, const FrictionMap& f, const CoulombFriction& law,
+  SteppingRunner(const TableProfile& p, const FrictionMap& f, const FrictionLaw& law,
                  const TimeSteppingOptions& o, const ObjectState& s0)
       : profile_(p), friction_(f), law_(law), options_(o), state_(make_time_stepping_state(p, s0)) {}
   ObjectState advance_to(double t) override {
@@ -83,7 +109,7 @@ class SteppingRunner final : public Runner {
  private:
   const TableProfile& profile_;
   const FrictionMap& friction_;
-  CoulombFriction law_;
+  FrictionLaw law_;
   TimeSteppingOptions options_;
   TimeSteppingState state_;
 };
@@ -101,11 +127,11 @@ double require_simulatable_duration(const std::string& name, double duration, do
 
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const ObjectState& initial, const SimulationOptions& o) {
-  return simulate(profile, friction, CoulombFriction{}, initial, o);
+  return simulate(profile, friction, FrictionLaw{}, initial, o);
 }
 
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
-                          const CoulombFriction& law, const ObjectState& initial,
+                          const FrictionLaw& law, const ObjectState& initial,
                           const SimulationOptions& o) {
   require_simulatable_duration("duration", o.duration, profile.period());
   require_non_negative("output_step", o.output_step);
@@ -116,7 +142,22 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   TimeSteppingOptions ts{o.step, o.theta};
   std::unique_ptr<Runner> runner;
   double grid = o.output_step;
-  if (o.method == Method::exact) {
+  Method method = o.method;
+  if (method == Method::exact && law.velocity_dependent()) method = Method::integrator;
+  if (method == Method::integrator) {
+    validate(o.integrator);
+    const PiecewiseAffineFriction* f = friction.piecewise_affine();
+    if (!integrable_profile(profile))
+      throw InvalidParameter("method", to_string(o.method),
+                             "the slip integrator needs a piecewise-polynomial or smooth profile (" +
+                                 profile.kind() + " here); use time-stepping");
+    if (!f)
+      throw InvalidParameter("method", to_string(o.method),
+                             "the slip integrator needs a piecewise-affine friction map; use "
+                             "time-stepping");
+    runner = std::make_unique<IntegratorRunner>(profile, *f, law, o.integrator, initial);
+    if (grid == 0) grid = profile.period() / 200;
+  } else if (method == Method::exact) {
     const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
     const PiecewiseAffineFriction* f = friction.piecewise_affine();
     const SmoothMotion* motion = profile.smooth();
@@ -189,7 +230,9 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   s = runner->advance_to(t_end);
   if (o.record) push(s);
   r.final_state = s;
+  r.method = method;
   r.work = runner->work();
+  r.integrator = runner->statistics();
   r.mean_velocity_last_period = (s.x - x_last_period) / P;
   r.stick_fraction = std::numeric_limits<double>::quiet_NaN();  // nothing recorded
   if (o.record && r.trajectory.size() > 0) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "arc_events.hpp"
+#include "smooth_stick.hpp"
 #include "selfalign/error.hpp"
 
 namespace selfalign {
@@ -50,6 +51,37 @@ constexpr long long kMaxSteps = 100'000'000;  // a guard, never reached by resol
 
 }  // namespace
 
+namespace detail {
+
+StickEnd smooth_stick_end(const SmoothMotion& M, double ms, double t, double t_end) {
+  const double Y4 = M.snap_bound();
+  const std::array<double, 4> d0 = M.derivatives(t);
+  double tau = 0, ydd = d0[2], yddd = d0[3];
+  for (long long i = 0; i < kMaxSteps; ++i) {
+    const double up = safe_step(ms - ydd, -yddd, Y4), down = safe_step(ms + ydd, yddd, Y4);
+    const double step = std::min(up, down);
+    if (t + tau + step >= t_end) return {t_end, 0};
+    if (step <= time_resolution(t + tau)) {
+      const double rate = up <= down ? -yddd : yddd;  // d/dt of the margin that closes
+      if (rate >= 0) {  // a touch of the bound, not a crossing: step past it
+        tau += 1024 * time_resolution(t + tau);
+        const auto d = M.derivatives(t + tau);
+        ydd = d[2];
+        yddd = d[3];
+        continue;
+      }
+      return {t + tau + step, up <= down ? -1 : 1};  // y'' reached +ms: slip backward
+    }
+    tau += step;
+    const auto d = M.derivatives(t + tau);
+    ydd = d[2];
+    yddd = d[3];
+  }
+  return {t_end, 0};
+}
+
+}  // namespace detail
+
 bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept {
   for (const AffinePiece& p : friction.pieces())
     if (p.slope != 0) return false;
@@ -68,7 +100,7 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
   if (!std::isfinite(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
   const SmoothMotion& M = setup.motion;
   const auto pieces = setup.friction.pieces();
-  const CoulombFriction& law = setup.law;
+  const FrictionLaw& law = setup.law;
   const double Y3 = M.jerk_bound(), Y4 = M.snap_bound();
   double t = state.t, x = state.x, v = state.xd;
   std::size_t count = 0;
@@ -91,34 +123,12 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       from_break = breaking != 0;
       breaking = 0;
       if (sigma == 0) {  // stuck until y'' reaches +ms or -ms
-        double tau = 0, ydd = d0[2], yddd = d0[3];
-        for (long long i = 0; i < kMaxSteps; ++i) {
-          const double up = safe_step(ms - ydd, -yddd, Y4), down = safe_step(ms + ydd, yddd, Y4);
-          const double step = std::min(up, down);
-          if (t + tau + step >= t_end) {
-            tau = t_end - t;
-            break;
-          }
-          if (step <= time_resolution(t + tau)) {
-            const double rate = up <= down ? -yddd : yddd;  // d/dt of the margin that closes
-            if (rate >= 0) {  // a touch of the bound, not a crossing: step past it
-              tau += 1024 * time_resolution(t + tau);
-              const auto d = M.derivatives(t + tau);
-              ydd = d[2];
-              yddd = d[3];
-              continue;
-            }
-            tau += step;
-            end = ArcEnd::stick_break;
-            breaking = up <= down ? -1 : 1;  // y'' reached +ms: slip backward
-            break;
-          }
-          tau += step;
-          const auto d = M.derivatives(t + tau);
-          ydd = d[2];
-          yddd = d[3];
+        const detail::StickEnd e = detail::smooth_stick_end(M, ms, t, t_end);
+        t1 = e.t;
+        if (e.direction != 0) {
+          end = ArcEnd::stick_break;
+          breaking = e.direction;
         }
-        t1 = end == ArcEnd::horizon ? t_end : t + tau;
         shape = StickArc{};
       }
     } else {

@@ -24,11 +24,12 @@ TimeSteppingState make_time_stepping_state(const TableProfile& profile, const Ob
 }
 
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
-                           const CoulombFriction& law, const TimeSteppingOptions& o,
+                           const FrictionLaw& law, const TimeSteppingOptions& o,
                            TimeSteppingState& state, long long steps, StepSink* sink) {
   const double h = o.step, theta = o.theta;
   const double s = law.static_coefficient(), kf = law.kinetic_forward(),
                kb = law.kinetic_backward();
+  const bool speed_dependent = law.velocity_dependent();
   double x = state.object.x, v = state.object.xd, yd = state.table_velocity;
   long long k = state.step_index;
   for (long long i = 0; i < steps; ++i) {
@@ -40,10 +41,20 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
     const double v_free = v - (yd1 - yd);  // velocity without friction
     // Largest friction impulses: static to hold or catch, kinetic while sliding on.
     const bool sliding_on = (v > 0 && v_free > 0) || (v < 0 && v_free < 0);
-    const double hold = h * ((sliding_on ? (v_free > 0 ? kf : kb) : s) * m);
     double v1 = 0;
-    if (v_free > hold) v1 = v_free - h * (kf * m);
-    else if (v_free < -hold) v1 = v_free + h * (kb * m);
+    if (!speed_dependent) {
+      const double hold = h * ((sliding_on ? (v_free > 0 ? kf : kb) : s) * m);
+      if (v_free > hold) v1 = v_free - h * (kf * m);
+      else if (v_free < -hold) v1 = v_free + h * (kb * m);
+    } else {  // mu_sigma(|v|) and c v at the step's start (explicit), the stick set-valued
+      const int sigma = v_free > 0 ? 1 : -1;
+      const double hold = h * ((sliding_on ? law.kinetic(sigma, std::abs(v)) : s) * m);
+      const double drag = sliding_on ? h * law.viscous() * std::abs(v) : 0.0;
+      if (std::abs(v_free) > hold + drag)
+        v1 = v_free - sigma * (hold + drag);
+      else if (!sliding_on && std::abs(v_free) > hold)
+        v1 = v_free - sigma * h * law.kinetic(sigma, 0.0) * m;
+    }
     x += h * ((1 - theta) * v + theta * v1);
     v = v1;
     yd = yd1;

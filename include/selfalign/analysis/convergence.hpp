@@ -15,7 +15,7 @@
 
 #include "selfalign/profiles/table_profile.hpp"
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 
 namespace selfalign {
 
@@ -49,7 +49,7 @@ VelocityConvergence velocity_convergence(const TableProfile& profile,
                                          const ConvergenceOptions& options = {});
 /// The same under `law` (static >= kinetic, direction-dependent kinetic; any
 /// piecewise-polynomial profile, finite jerk included).
-VelocityConvergence velocity_convergence(const TableProfile& profile, const CoulombFriction& law,
+VelocityConvergence velocity_convergence(const TableProfile& profile, const FrictionLaw& law,
                                          const ConvergenceOptions& options = {});
 
 }  // namespace selfalign

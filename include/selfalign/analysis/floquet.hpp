@@ -58,7 +58,7 @@ struct FloquetAnalysis {
 FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FloquetOptions& options = {});
 /// Saltation and finite differences on the uniform table under `law` (any piecewise-polynomial
 /// profile, finite jerk included; the analytic matrix needs the paper's law and profile).
-FloquetAnalysis floquet_multipliers(const TableProfile& profile, const CoulombFriction& law,
+FloquetAnalysis floquet_multipliers(const TableProfile& profile, const FrictionLaw& law,
                                     const FloquetOptions& options = {});
 /// Saltation and finite differences of a period map's steady state (exact maps only).
 FloquetAnalysis floquet_multipliers(const PeriodMap& map, const FloquetOptions& options = {});

@@ -4,8 +4,9 @@
 /// table's field over the object's footprint, and the friction law, integrated over one table
 /// period (or any horizon) by an exact solver where a closed form exists (piecewise-polynomial
 /// acceleration on a piecewise-affine level: simulate/exact.hpp; a smooth motion such as a
-/// Fourier series on a piecewise-constant level: simulate/smooth_exact.hpp), by Moreau
-/// time-stepping otherwise.
+/// Fourier series on a piecewise-constant level: simulate/smooth_exact.hpp), by the slip
+/// integrator for a velocity-dependent law (exact sticks, Odeint dopri5 slips with event
+/// location: simulate/slip_integrator.hpp), by Moreau time-stepping otherwise.
 ///
 ///   P : (x, x') at t0  ->  (x, x') at t0 + Δt,
 /// with its arcs (exact), its stick/slip census, and its sensitivity dP/d(x, x'): the monodromy
@@ -16,15 +17,17 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "selfalign/analysis/motion_case.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/simulate.hpp"
+#include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/simulate/smooth_exact.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
@@ -34,25 +37,32 @@ struct PeriodMapOptions {
   /// Time-stepping (profiles or levels the exact solver cannot take): h = Δt / steps_per_period.
   int steps_per_period = 4000;
   double theta = 0.5;  ///< time-stepping theta, in [0, 1]
+  IntegratorOptions integrator{};  ///< tolerances of the slip integrator (velocity-dependent laws)
 };
 
 class PeriodMap {
  public:
   /// The uniform low-friction table (m = 1) under `law`. Borrows profile.
-  explicit PeriodMap(const TableProfile& profile, const CoulombFriction& law = {},
+  explicit PeriodMap(const TableProfile& profile, const FrictionLaw& law = {},
                      const PeriodMapOptions& options = {});
   /// A table whose level is `friction` (borrowed: it must outlive the map) under `law`.
-  PeriodMap(const TableProfile& profile, const FrictionMap& friction, const CoulombFriction& law,
+  PeriodMap(const TableProfile& profile, const FrictionMap& friction, const FrictionLaw& law,
             const PeriodMapOptions& options = {});
   PeriodMap(const PeriodMap&) = delete;
   PeriodMap& operator=(const PeriodMap&) = delete;
 
   const TableProfile& profile() const noexcept { return profile_; }
   const FrictionMap& friction() const noexcept { return *friction_; }
-  const CoulombFriction& law() const noexcept { return law_; }
+  const FrictionLaw& law() const noexcept { return law_; }
   Method method() const noexcept {
-    return exact_ || smooth_ ? Method::exact : Method::time_stepping;
+    return exact_ || smooth_ ? Method::exact
+           : integrator_     ? Method::integrator
+                             : Method::time_stepping;
   }
+  /// The integrator's tolerances (method() == integrator).
+  const IntegratorOptions& integrator_options() const noexcept { return options_.integrator; }
+  /// What the integrator did over every call of this map so far (zeros for other methods).
+  IntegratorStatistics integrator_statistics() const;
   /// True when the map is exact and so has arcs (piecewise-polynomial profiles, or smooth
   /// motions on piecewise-constant levels).
   bool has_arcs() const noexcept { return exact_ || smooth_; }
@@ -88,7 +98,7 @@ class PeriodMap {
     Run(const PeriodMap& map, const ObjectState& start);
     const PeriodMap* map_;
     ExactState exact_{};
-    ObjectState smooth_state_{};
+    ObjectState smooth_state_{};  // the smooth solver's and the integrator's state
     TimeSteppingState stepping_{};
   };
   Run start(const ObjectState& state) const { return Run(*this, state); }
@@ -100,11 +110,15 @@ class PeriodMap {
   const TableProfile& profile_;
   std::unique_ptr<FrictionMap> owned_;
   const FrictionMap* friction_;
-  CoulombFriction law_;
+  FrictionLaw law_;
   PeriodMapOptions options_;
   TimeSteppingOptions stepping_;
   std::unique_ptr<ExactSetup> exact_;
   std::unique_ptr<SmoothSetup> smooth_;
+  std::unique_ptr<IntegratorSetup> integrator_;
+  mutable std::mutex statistics_mutex_;
+  mutable IntegratorStatistics statistics_;
+  void add(const IntegratorStatistics& s) const;
   void choose_solver();
 };
 
@@ -120,6 +134,6 @@ const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& prof
 ///   friction_boundary:  [[1, 0], [(a+ - a-)/x', 1]]
 ///   stick_break:        [[1, 0], [-a+ s k / (sign(A) J), 1]]  (k = dm/dx, J the table jerk)
 ///   segment ends:       identity (the event time does not depend on the state)
-Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const CoulombFriction& law);
+Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const FrictionLaw& law);
 
 }  // namespace selfalign

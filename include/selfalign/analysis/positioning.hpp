@@ -53,7 +53,7 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, double wid
 /// The same under a Coulomb law (static >= kinetic, direction-dependent) and for any
 /// piecewise-polynomial profile (finite jerk included): the steady state, Δx, x_stick,min
 /// (s m(x) >= peak) and the stopping runs all take the law.
-PositioningAccuracy positioning_accuracy(const TableProfile& profile, const CoulombFriction& law,
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
                                          double width, double c_mu,
                                          const PositioningOptions& options = {});
 

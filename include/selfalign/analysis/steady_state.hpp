@@ -17,7 +17,7 @@
 #include <string>
 
 #include "selfalign/analysis/motion_case.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/simulate.hpp"
 
@@ -40,6 +40,9 @@ struct SteadyStateOptions {
   int steps_per_period = 4000;
   double theta = 0.5;            ///< time-stepping theta
   double stepping_tol = 0;       ///< time-stepping: velocity_tol's role [-]; 0: 10 h
+  /// Slip integrator (velocity-dependent laws): its tolerances; velocity_tol is then raised to
+  /// at least 10 relative_tolerance (the period map is no more accurate than that).
+  IntegratorOptions integrator{};
 };
 
 struct SteadyState {
@@ -60,13 +63,15 @@ struct SteadyState {
   /// The steady period's stick/slip sequence, cyclic and compressed (MotionCensus::pattern):
   /// e.g. "stick,forward,backward" (Table 1 case 3) or "forward,backward" (case 4).
   std::string pattern;
+  /// The slip integrator's work for this steady state (method integrator; zeros otherwise).
+  IntegratorStatistics integrator;
 };
 
 /// Steady state on the uniform table (friction level 1) under the paper's law. Throws
 /// InvalidParameter on bad options.
 SteadyState steady_state(const TableProfile& profile, const SteadyStateOptions& options = {});
 /// Steady state on the uniform table under `law` (static >= kinetic, direction-dependent).
-SteadyState steady_state(const TableProfile& profile, const CoulombFriction& law,
+SteadyState steady_state(const TableProfile& profile, const FrictionLaw& law,
                          const SteadyStateOptions& options = {});
 /// Steady state of any period map (its friction level should not vary along the path: the
 /// steady state is of the velocity; x is started at 0). options.steps_per_period and theta are

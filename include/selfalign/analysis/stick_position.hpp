@@ -16,7 +16,7 @@
 #include <optional>
 #include <string>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
@@ -26,14 +26,14 @@ namespace selfalign {
 bool sticks_permanently(const FrictionMap& friction, double peak_acceleration, double x);
 /// Eq. (40) under a Coulomb law: stuck for good at x iff s m(x) >= sup |y''| (s: the static
 /// coefficient, which holds a stuck object).
-bool sticks_permanently(const FrictionMap& friction, const CoulombFriction& law,
+bool sticks_permanently(const FrictionMap& friction, const FrictionLaw& law,
                         double peak_acceleration, double x);
 /// The general x_mu: the start of the first piece whose level differs from the level far
 /// behind (x -> -inf); +inf for a uniform level.
 double friction_rise(const PiecewiseAffineFriction& friction);
 /// The general eq. (41): the smallest x >= friction_rise from which s m(x') >= peak for every
 /// x' >= x (exact on the affine pieces); +inf when the level far ahead is too low.
-double stick_position_min(const PiecewiseAffineFriction& friction, const CoulombFriction& law,
+double stick_position_min(const PiecewiseAffineFriction& friction, const FrictionLaw& law,
                           double peak_acceleration);
 
 

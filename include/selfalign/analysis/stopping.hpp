@@ -15,7 +15,7 @@
 
 #include <vector>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
@@ -78,7 +78,7 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
 /// law only (elsewhere an accumulating run ends not_stopped). Throws InvalidParameter for a
 /// level that is not piecewise affine.
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
-                         const CoulombFriction& law, const ObjectState& start,
+                         const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& options = {});
 
 }  // namespace selfalign

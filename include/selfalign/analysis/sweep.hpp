@@ -16,7 +16,7 @@
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/steady_state.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
@@ -38,7 +38,7 @@ struct SweepOptions {
   int threads = 0;              ///< worker threads, >= 0; 0: all cores (see worker_threads)
   ProgressCallback progress;    ///< optional
   SteadyStateOptions steady;    ///< per-cell steady-state search
-  CoulombFriction law;          ///< the friction law of every cell (the paper's by default)
+  FrictionLaw law;          ///< the friction law of every cell (the paper's by default)
   /// sweep_accelerations: the jerk limit of every cell's three-phase profile [-], > 0; +inf:
   /// the paper's jump accelerations. A cell with no jerk-limited profile is case 0.
   double jerk = std::numeric_limits<double>::infinity();

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 
 namespace selfalign {
@@ -54,7 +54,7 @@ struct OptimizeOptions {
   /// h_i = fd_step * max(|x_i|, max_j |x_j|), > 0.
   double fd_step = 1e-6;
   /// The friction law every steady state is computed under (the paper's by default).
-  CoulombFriction law;
+  FrictionLaw law;
   /// Called after each local run as progress(done, total); may be empty.
   std::function<void(int done, int total)> progress;
 };

@@ -21,7 +21,7 @@
 #include <memory>
 
 #include "selfalign/analysis/sweep.hpp"
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
 namespace selfalign {
@@ -59,7 +59,7 @@ void validate(const DesignRequest& request);
 
 /// The request's friction law in model units (ratios to mu). Throws InvalidParameter naming
 /// mu_static or mu_backward.
-CoulombFriction friction_law(const DesignRequest& request);
+FrictionLaw friction_law(const DesignRequest& request);
 
 struct DesignResult {
   bool feasible = false;

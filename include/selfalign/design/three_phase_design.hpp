@@ -28,7 +28,7 @@ struct ThreePhaseDesignPoint {
 /// Evaluates one point (a2, a3 > 0; limits validated by the caller) under `law`; with a finite
 /// limits.max_jerk, of the jerk-limited profile at that jerk.
 ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& limits, double a2, double a3,
-                                           const CoulombFriction& law = {});
+                                           const FrictionLaw& law = {});
 
 /// Scan + polish. parameters = (a2, a3). Throws InvalidParameter on misuse.
 OptimizationResult optimize_three_phase(const ActuatorLimits& limits,

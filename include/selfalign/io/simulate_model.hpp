@@ -7,7 +7,7 @@
 #include <memory>
 #include <optional>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/unit_system.hpp"
@@ -27,7 +27,7 @@ struct SimulateModel {
   double periods;                          ///< number of table periods simulated [-]
   std::unique_ptr<TableProfile> profile;   ///< [-]
   std::unique_ptr<FrictionMap> friction;   ///< [-]
-  CoulombFriction law;                     ///< (mu_static, mu, mu_backward) / mu [-]
+  FrictionLaw law;                     ///< (mu_static, mu, mu_backward) / mu [-]
   ObjectState initial;                     ///< t0, x0, v0 [-]
   SimulationOptions options;               ///< [-]; duration = periods * Δt
 
@@ -44,10 +44,10 @@ struct SimulateModel {
 /// not use are ignored.
 SimulateModel build_simulate_model(const SimulateConfig& config);
 
-/// The run's friction law in model units: CoulombFriction(mu_static/mu, 1, mu_backward/mu),
+/// The run's friction law in model units: FrictionLaw(mu_static/mu, 1, mu_backward/mu),
 /// the unit being mu = mu_1, the forward kinetic coefficient of the low-friction region.
 /// Throws InvalidParameter naming mu_static (< mu) or mu_backward (> mu_static, <= 0).
-CoulombFriction friction_law(const SimulateConfig& config);
+FrictionLaw friction_law(const SimulateConfig& config);
 
 /// The table profile of a run and its unit system, for the analyses of the uniform table
 /// (steady state, Floquet multipliers, convergence, sweeps), which take no friction map,
@@ -63,7 +63,7 @@ struct ProfileModel {
   /// The three-phase profile's jerk limit [-] when one is given (the profile is then the
   /// jerk-limited one, and the paper's jump-acceleration formulas do not apply), else none.
   std::optional<double> jerk;
-  CoulombFriction law;                     ///< (mu_static, mu, mu_backward) / mu [-]
+  FrictionLaw law;                     ///< (mu_static, mu, mu_backward) / mu [-]
 
   /// Converts results back to the run's unit system.
   OutputUnits output_units() const {

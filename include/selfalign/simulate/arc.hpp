@@ -4,7 +4,7 @@
 /// affine in time, A(tau) = A0 + J tau (J = 0 for the paper's profiles), the motion is either
 /// stick or slip in one direction sigma, and the friction level is one affine piece
 /// m(x) = m0 + k (x - x0) of the table's field averaged over the object's footprint. With the
-/// Coulomb law (coulomb_friction.hpp) eq. (6) then reads
+/// Coulomb law (friction_law.hpp) eq. (6) then reads
 ///   slip:   x'' = -sigma k_sigma m(x) - A0 - J tau          (a linear ODE, constant coefficients)
 ///   stick:  x' = 0, x constant, while |A0 + J tau| <= s m(x)
 /// and its solution is one of a closed set of shapes, an ArcShape:

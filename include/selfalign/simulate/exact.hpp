@@ -18,7 +18,7 @@
 ///     else slip in the direction of -y'' with the kinetic coefficient (eqs. 2, 6).
 /// Between events x is monotone, so exactly one friction boundary can be next.
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/arc.hpp"
@@ -38,7 +38,7 @@ class ArcSink {
 struct ExactSetup {
   const PiecewisePolynomialProfile& profile;
   const PiecewiseAffineFriction& friction;
-  CoulombFriction law{};
+  FrictionLaw law{};
 };
 
 /// Mutable state of the exact solver: the object state plus where it is in the profile.

@@ -5,19 +5,21 @@
 #include <cstddef>
 #include <string>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
+#include "selfalign/simulate/slip_integrator.hpp"
 
 namespace selfalign {
 
 enum class Method {
   exact,         ///< event-driven closed form (exact.hpp): piecewise-polynomial y'' (degree <= 1), piecewise-affine m(x)
-  time_stepping  ///< Moreau time-stepping (time_stepping.hpp): any profile and friction map
+  time_stepping, ///< Moreau time-stepping (time_stepping.hpp): any profile and friction map
+  integrator     ///< exact sticks, slips by Odeint's dopri5 with event location (slip_integrator.hpp): velocity-dependent laws
 };
 
-/// Parses "exact" or "time-stepping"; throws InvalidParameter("method", ...) otherwise.
+/// Parses "exact", "time-stepping" or "integrator"; throws InvalidParameter("method", ...) otherwise.
 Method parse_method(const std::string& text);
 std::string to_string(Method method);
 
@@ -42,12 +44,16 @@ struct SimulationOptions {
   double theta = 0.5;       ///< time-stepping theta, in [0, 1]
   double output_step = 0;   ///< spacing of recorded samples [-]; 0: h (time-stepping) or Δt/200
   bool record = true;       ///< false: only the summary (no trajectory): far cheaper
+  /// tolerances of the slip integrator (method integrator, or exact under a velocity-dependent law)
+  IntegratorOptions integrator{};
 };
 
 struct SimulationResult {
   Trajectory trajectory;           ///< samples at t0 + j*output_step, and at the end time
   ObjectState final_state;         ///< state at t0 + duration [-]
-  std::size_t work = 0;            ///< arcs (exact) or steps (time-stepping) computed
+  Method method = Method::exact;   ///< the solver that produced the result
+  std::size_t work = 0;            ///< arcs (exact, integrator) or steps (time-stepping) computed
+  IntegratorStatistics integrator; ///< the integrator's steps, rejections, events (else zeros)
   double mean_velocity_last_period = 0;  ///< (x(t_end) - x(t_end - Δt))/Δt [-]; NaN if shorter
   double stick_fraction = 0;       ///< fraction of recorded samples in stick [-]; NaN if none
 };
@@ -60,9 +66,11 @@ struct SimulationResult {
 /// before anything is allocated.
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const ObjectState& initial, const SimulationOptions& options);
-/// The same under a Coulomb law with static >= kinetic (direction-dependent) coefficients.
+/// The same under a friction law: static >= kinetic (direction-dependent) coefficients, and a
+/// velocity-dependent law (Stribeck, viscous), which has no closed form: method exact then runs
+/// the slip integrator (result.method says so), as does method integrator for any law.
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
-                          const CoulombFriction& law, const ObjectState& initial,
+                          const FrictionLaw& law, const ObjectState& initial,
                           const SimulationOptions& options);
 
 }  // namespace selfalign

@@ -23,7 +23,7 @@
 
 #include <cstddef>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -35,7 +35,7 @@ namespace selfalign {
 struct SmoothSetup {
   const SmoothMotion& motion;
   const PiecewiseAffineFriction& friction;
-  CoulombFriction law{};
+  FrictionLaw law{};
 };
 
 /// True when the smooth solver can take this level: every piece has slope 0.

@@ -12,18 +12,21 @@
 /// set-valued velocity equation has the closed-form solution (a projection, no fixed-point
 /// iteration): with v* = x'_k - Δy' and P = h m(x_M),
 ///   |v*| <= P  ->  x'_{k+1} = 0 (stick);   otherwise  x'_{k+1} = v* - P sign(v*).
-/// With static coefficient s above the kinetic k_sigma (coulomb_friction.hpp) the projection
+/// With static coefficient s above the kinetic k_sigma (friction_law.hpp) the projection
 /// uses the static bound P_s = h s m(x_M) for sticking and the kinetic impulse
 /// P_k = h k_sigma m(x_M), sigma = sign(v*), for sliding:
 ///   from rest or reversing (x'_k = 0 or sign v* != sign x'_k): stick iff |v*| <= P_s;
 ///   sliding on (sign v* = sign x'_k):                           stop  iff |v*| <= P_k;
 ///   otherwise x'_{k+1} = v* - P_k sigma.
 /// The scheme stays first order (tests/test_friction_law.cpp measures it); for s = k it is the
-/// projection above, term for term.
+/// projection above, term for term. A velocity-dependent law (Stribeck, viscous) takes its
+/// speed-dependent part explicitly, at the step's start: sliding on, P_k = h mu_sigma(|x'_k|)
+/// m(x_M) + h c |x'_k| (stop iff |v*| <= P_k); from rest or reversing, the stick test as above
+/// and P_k = h mu_sigma(0) m(x_M). Still first order; the set-valued stick stays implicit.
 
 #include <cstddef>
 
-#include "selfalign/friction/coulomb_friction.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/object_state.hpp"
@@ -59,13 +62,13 @@ TimeSteppingState make_time_stepping_state(const TableProfile& profile, const Ob
 
 /// Advances by `steps` steps under `law`; calls sink (if any) after each. Allocates nothing.
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
-                           const CoulombFriction& law, const TimeSteppingOptions& options,
+                           const FrictionLaw& law, const TimeSteppingOptions& options,
                            TimeSteppingState& state, long long steps, StepSink* sink = nullptr);
 /// The same under the paper's law (static = kinetic = 1).
 inline void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
                                   const TimeSteppingOptions& options, TimeSteppingState& state,
                                   long long steps, StepSink* sink = nullptr) {
-  advance_time_stepping(profile, friction, CoulombFriction{}, options, state, steps, sink);
+  advance_time_stepping(profile, friction, FrictionLaw{}, options, state, steps, sink);
 }
 
 }  // namespace selfalign

@@ -1,0 +1,98 @@
+#pragma once
+/// \file slip_integrator.hpp
+/// Event-driven solution of eq. (6) under a velocity-dependent friction law (Stribeck decay,
+/// viscous term: friction_law.hpp), which has no closed-form slip arcs.
+///
+/// Sticking stays set-valued and exact: while x' = 0 the object sticks as long as
+/// |y''| <= s m(x), with x and x' = 0 held exactly (no regularisation, no creep), and the stick
+/// ends at the closed-form or bound-isolated time where y'' leaves the static bound (segments
+/// of a piecewise-polynomial profile: closed form; smooth motions: the safe steps of
+/// smooth_exact.hpp). Only the slip arcs are integrated:
+///   x' = v,   v' = -sigma mu_sigma(|v|) m(x) - c v - y''(t),   sigma fixed on the arc,
+/// with Boost.Odeint's Dormand-Prince 5(4) stepper (runge_kutta_dopri5) under its standard
+/// error control (per step: |err_i| <= abs + rel (|x_i| + dt |x_i'|)) and its 4th-order dense
+/// output. Why that stepper: it is the one error-controlled Runge-Kutta method of Odeint with
+/// dense output (events are located on the interpolant, not by shortening steps), the method
+/// is the de-facto standard for non-stiff problems (MATLAB ode45, SciPy RK45), and Odeint is
+/// header-only in Debian's libboost-dev. Its global error is, empirically and by the usual
+/// tolerance proportionality of such controllers, about proportional to the tolerance
+/// (docs/slip-integrator.md, tested over three decades).
+///
+/// The right-hand side is kept smooth on every integration window: the table acceleration of
+/// the current segment is extended past its end, the friction piece's affine level past its
+/// ends, so the dense output is accurate up to each event, which is then located on it:
+///   - x' = 0 (velocity_zero): sigma x' sampled at 4 points of every step, the first sign
+///     change bracketed and refined by TOMS 748 (Boost.Math) to 4 roundings of t;
+///   - x crossing a friction-piece boundary (friction_boundary): likewise on sigma (x - X);
+///   - a segment end of the table acceleration: the window ends there and the slip restarts
+///     with the next segment's acceleration (the event time does not depend on the state).
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "selfalign/friction/friction_law.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/arc.hpp"
+#include "selfalign/simulate/object_state.hpp"
+
+namespace selfalign {
+
+/// The integrator's tolerances (Odeint's abs_error, rel_error of the dense-output dopri5).
+struct IntegratorOptions {
+  double relative_tolerance = 1e-10;  ///< in (0, 1)
+  double absolute_tolerance = 1e-12;  ///< in (0, 1) [-]
+};
+
+/// Throws InvalidParameter naming "relative_tolerance" or "absolute_tolerance" unless each is
+/// in (0, 1).
+void validate(const IntegratorOptions& options);
+
+/// What the integrator did, for the results' provenance.
+struct IntegratorStatistics {
+  long long steps = 0;             ///< accepted Runge-Kutta steps
+  long long rejected = 0;          ///< rejected (retried) steps
+  long long rhs_evaluations = 0;   ///< right-hand-side evaluations
+  long long events = 0;            ///< located events: x' = 0, boundaries, stick breaks
+  long long slips = 0, sticks = 0; ///< intervals integrated / held
+
+  IntegratorStatistics& operator+=(const IntegratorStatistics& o) noexcept;
+  IntegratorStatistics& operator-=(const IntegratorStatistics& o) noexcept;
+};
+
+/// One stick or slip interval of the integrated motion.
+struct MotionInterval {
+  double t0 = 0, t1 = 0;      ///< start and end time [-]
+  double x0 = 0, xd0 = 0;     ///< state at t0 [-]
+  double x1 = 0, xd1 = 0;     ///< state at t1 [-]
+  std::int8_t direction = 0;  ///< +1 forward slip, -1 backward slip, 0 stick
+  ArcEnd end = ArcEnd::horizon;
+};
+
+class IntervalSink {
+ public:
+  virtual ~IntervalSink() = default;
+  virtual void on_interval(const MotionInterval& interval) = 0;
+};
+
+/// What the integrator solves: a profile (piecewise polynomial or smooth; borrowed), a
+/// piecewise-affine friction level (borrowed), a law (any; velocity-dependent is its purpose)
+/// and the tolerances.
+struct IntegratorSetup {
+  const TableProfile& profile;
+  const PiecewiseAffineFriction& friction;
+  FrictionLaw law{};
+  IntegratorOptions options{};
+};
+
+/// True when the integrator can take this profile: it is piecewise polynomial or smooth.
+bool integrable_profile(const TableProfile& profile) noexcept;
+
+/// Advances `state` to t_end (>= state.t), calling sink (if any) for every interval and adding
+/// to stats (if any). Returns the number of intervals. Throws InvalidParameter for a profile
+/// that is neither piecewise polynomial nor smooth, bad options, a non-finite state or t_end.
+std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
+                               IntervalSink* sink = nullptr, IntegratorStatistics* stats = nullptr);
+
+}  // namespace selfalign

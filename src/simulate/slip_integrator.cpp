@@ -1,0 +1,260 @@
+#include "selfalign/simulate/slip_integrator.hpp"
+
+#include <array>
+#include <boost/math/tools/toms748_solve.hpp>
+#include <boost/numeric/odeint/stepper/generation.hpp>
+#include <boost/numeric/odeint/stepper/runge_kutta_dopri5.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "selfalign/simulate/exact.hpp"
+#include "smooth_stick.hpp"
+
+namespace selfalign {
+
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+using State = std::array<double, 2>;  // (x, x')
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kSamplesPerStep = 4;         // sign checks of every step's dense output
+constexpr double kMaxStepPerPeriod = 1.0 / 32;  // longest step, in table periods
+constexpr long long kMaxIntervals = 2'000'000'000;  // a guard against a stalled run
+
+double time_resolution(double t) {
+  return 16 * std::numeric_limits<double>::epsilon() * (std::abs(t) + 1e-300);
+}
+
+// The table acceleration on one integration window, extended smoothly past the window's end:
+// a segment's polynomial a0 + j (t - tb) of a piecewise-polynomial profile, or the smooth
+// motion itself (one window without end).
+class Forcing {
+ public:
+  explicit Forcing(const TableProfile& p)
+      : pwp_(p.piecewise_polynomial()), smooth_(pwp_ ? nullptr : p.smooth()), period_(p.period()) {}
+
+  // Opens the window that contains t (segments are closed on the left: y'' right-continuous)
+  // and returns its end.
+  double open(double t) {
+    if (!pwp_) return kInf;
+    const auto segs = pwp_->segments();
+    double n = std::floor(t / period_);
+    std::size_t i = pwp_->segment_at(t - n * period_);
+    for (int pass = 0; pass < 2; ++pass) {  // t at a window's end up to rounding: the next one
+      const double end = i + 1 < segs.size() ? n * period_ + segs[i + 1].begin : (n + 1) * period_;
+      if (end - t > time_resolution(t)) break;
+      if (++i == segs.size()) i = 0, n += 1;
+    }
+    const AccelerationSegment& s = segs[i];
+    begin_ = n * period_ + s.begin;
+    a0_ = s.accel;
+    jerk_ = s.jerk;
+    return i + 1 < segs.size() ? n * period_ + segs[i + 1].begin : (n + 1) * period_;
+  }
+  double accel(double t) const {
+    return pwp_ ? a0_ + jerk_ * (t - begin_) : smooth_->derivatives(t)[2];
+  }
+
+  // The first time >= t at which y'' leaves [-ms, ms], or t_end (direction 0).
+  detail::StickEnd stick_end(double ms, double t, double t_end) {
+    if (!pwp_) return detail::smooth_stick_end(*smooth_, ms, t, t_end);
+    for (double tc = t; tc < t_end;) {
+      const double end = open(tc), a = accel(tc);
+      if (!sticks(a, ms)) return {tc, a > 0 ? -1 : 1};
+      if (jerk_ != 0) {  // y'' = a0 + j tau reaches sign(j) ms at tau (closed form)
+        const double tb = begin_ + (std::copysign(ms, jerk_) - a0_) / jerk_;
+        if (tb >= tc && tb < end) return tb < t_end ? detail::StickEnd{tb, jerk_ > 0 ? -1 : 1}
+                                                    : detail::StickEnd{t_end, 0};
+      }
+      tc = end;
+    }
+    return {t_end, 0};
+  }
+
+ private:
+  const PiecewisePolynomialProfile* pwp_;
+  const SmoothMotion* smooth_;
+  double period_, begin_ = 0, a0_ = 0, jerk_ = 0;
+};
+
+// The slip equation on one window: sigma, the friction piece (affine, extended) and the law.
+struct SlipRhs {
+  int sigma;
+  const AffinePiece* piece;
+  const FrictionLaw* law;
+  const Forcing* forcing;
+  long long* evaluations;
+  void operator()(const State& s, State& d, double t) const {
+    const double m = piece->bound(s[0]);
+    d[0] = s[1];
+    d[1] = -sigma * law->kinetic(sigma, std::abs(s[1])) * m - law->viscous() * s[1] -
+           forcing->accel(t);
+    ++*evaluations;
+  }
+};
+
+// TOMS 748 refinement of a bracketed sign change of f on [a, b] (f(a) and f(b) of opposite
+// signs or f(b) = 0) to 4 roundings of t.
+template <class F>
+double refine(F f, double a, double b) {
+  double fa = f(a), fb = f(b);
+  if (fb == 0) return b;
+  if (fa == 0) return a;
+  std::uintmax_t iterations = 200;
+  auto close = [](double lo, double hi) {
+    return hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo), std::abs(hi));
+  };
+  const auto r = boost::math::tools::toms748_solve(f, a, b, fa, fb, close, iterations);
+  // The end on the event's side: f(hi) past the event (<= 0 for x', >= 0 for a boundary).
+  return r.second;
+}
+
+}  // namespace
+
+void validate(const IntegratorOptions& o) {
+  if (!(o.relative_tolerance > 0 && o.relative_tolerance < 1))
+    throw InvalidParameter("relative_tolerance", o.relative_tolerance, "must be in (0, 1)");
+  if (!(o.absolute_tolerance > 0 && o.absolute_tolerance < 1))
+    throw InvalidParameter("absolute_tolerance", o.absolute_tolerance, "must be in (0, 1)");
+}
+
+IntegratorStatistics& IntegratorStatistics::operator+=(const IntegratorStatistics& o) noexcept {
+  steps += o.steps;
+  rejected += o.rejected;
+  rhs_evaluations += o.rhs_evaluations;
+  events += o.events;
+  slips += o.slips;
+  sticks += o.sticks;
+  return *this;
+}
+
+IntegratorStatistics& IntegratorStatistics::operator-=(const IntegratorStatistics& o) noexcept {
+  steps -= o.steps;
+  rejected -= o.rejected;
+  rhs_evaluations -= o.rhs_evaluations;
+  events -= o.events;
+  slips -= o.slips;
+  sticks -= o.sticks;
+  return *this;
+}
+
+bool integrable_profile(const TableProfile& profile) noexcept {
+  return profile.piecewise_polynomial() != nullptr || profile.smooth() != nullptr;
+}
+
+std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
+                               IntervalSink* sink, IntegratorStatistics* stats) {
+  if (!integrable_profile(setup.profile))
+    throw InvalidParameter("profile", setup.profile.kind(),
+                           "the slip integrator needs a piecewise-polynomial or smooth table "
+                           "motion (use time-stepping)");
+  validate(setup.options);
+  require_finite("t0", state.t);
+  require_moderate("x0", state.x);
+  require_moderate("v0", state.xd);
+  if (!std::isfinite(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
+  const FrictionLaw& law = setup.law;
+  const auto pieces = setup.friction.pieces();
+  const double P = setup.profile.period();
+  Forcing forcing(setup.profile);
+  IntegratorStatistics st;
+  auto dense = odeint::make_dense_output(setup.options.absolute_tolerance,
+                                         setup.options.relative_tolerance, kMaxStepPerPeriod * P,
+                                         odeint::runge_kutta_dopri5<State>());
+  double t = state.t, x = state.x, v = state.xd, dt = 1e-3 * P;
+  int breaking = 0;  // after a stick break: the direction of the slip that follows
+  std::size_t count = 0;
+  auto emit = [&](double t1, double x1, double v1, int direction, ArcEnd end) {
+    if (sink) sink->on_interval({t, t1, x, v, x1, v1, static_cast<std::int8_t>(direction), end});
+    ++count;
+    if (end != ArcEnd::horizon && end != ArcEnd::acceleration_switch) ++st.events;
+    t = t1;
+    x = x1;
+    v = v1;
+  };
+  for (long long guard = 0; t < t_end && guard < kMaxIntervals; ++guard) {
+    int sigma = v > 0 ? 1 : v < 0 ? -1 : 0;
+    if (sigma == 0) {
+      sigma = breaking;
+      breaking = 0;
+      if (sigma == 0) {
+        const double ms = law.static_coefficient() * setup.friction.bound(x);
+        forcing.open(t);
+        const double a = forcing.accel(t);
+        if (sticks(a, ms)) {  // held exactly (x' = 0) until y'' leaves the static bound
+          const detail::StickEnd e = forcing.stick_end(ms, t, t_end);
+          ++st.sticks;
+          emit(e.t, x, 0.0, 0, e.direction != 0 ? ArcEnd::stick_break : ArcEnd::horizon);
+          breaking = e.direction;
+          continue;
+        }
+        sigma = a > 0 ? -1 : 1;
+      }
+    }
+    // Slip in direction sigma on the friction piece ahead, up to the window's end.
+    std::size_t pi = setup.friction.piece_index(x);
+    if (sigma < 0 && pi > 0 && x == pieces[pi].begin) --pi;  // moving left from a boundary
+    const AffinePiece& piece = pieces[pi];
+    const double X = sigma > 0 ? piece.end : piece.begin;
+    const double window_end = std::min(forcing.open(t), t_end);
+    long long evaluations = 0;
+    const SlipRhs rhs{sigma, &piece, &law, &forcing, &evaluations};
+    dense.initialize(State{x, v}, t, std::min(dt, window_end - t));
+    bool had_positive = sigma * v > 0;  // x' = 0 counts only after x' has left 0
+    double prev_t = t;
+    long long window_steps = 0;
+    double t1 = window_end;
+    ArcEnd end = ArcEnd::acceleration_switch;
+    State s1{x, v};
+    for (bool done = false; !done;) {
+      const auto [ta, tb] = dense.do_step(rhs);
+      ++window_steps;
+      const double hi = std::min(tb, window_end);
+      for (int k = 1; k <= kSamplesPerStep && !done; ++k) {
+        const double ts = k == kSamplesPerStep ? hi : ta + (hi - ta) * k / kSamplesPerStep;
+        State q;
+        dense.calc_state(ts, q);
+        const double g = sigma * q[1], p = std::isfinite(X) ? sigma * (q[0] - X) : -kInf;
+        const bool stopped = had_positive && g <= 0, crossed = p >= 0;
+        if (stopped || crossed) {
+          auto velocity = [&](double tt) { State z; dense.calc_state(tt, z); return sigma * z[1]; };
+          auto position = [&](double tt) { State z; dense.calc_state(tt, z); return sigma * (z[0] - X); };
+          const double tv = stopped ? refine(velocity, prev_t, ts) : kInf;
+          const double tx = crossed ? refine(position, prev_t, ts) : kInf;
+          t1 = std::min(tv, tx);
+          end = tv <= tx ? ArcEnd::velocity_zero : ArcEnd::friction_boundary;
+          dense.calc_state(t1, s1);
+          done = true;
+          break;
+        }
+        had_positive = had_positive || g > 0;
+        prev_t = ts;
+      }
+      if (!done && tb >= window_end) {
+        dense.calc_state(window_end, s1);
+        t1 = window_end;
+        end = window_end >= t_end ? ArcEnd::horizon : ArcEnd::acceleration_switch;
+        done = true;
+      }
+    }
+    dt = dense.current_time_step();
+    st.rhs_evaluations += evaluations;
+    const long long attempts = (evaluations - 1) / 6;  // FSAL dopri5: 6 new stages per try
+    st.steps += window_steps;
+    ++st.slips;
+    double x1 = s1[0], v1 = s1[1];
+    if (end == ArcEnd::velocity_zero) v1 = 0;
+    if (end == ArcEnd::friction_boundary) x1 = X;
+    if (sigma * v1 < 0) v1 = 0;  // rounding of the interpolant at the event
+    st.rejected += attempts - window_steps;
+    emit(t1, x1, v1, sigma, end);
+  }
+  state = {t, x, v};
+  if (stats) *stats += st;
+  return count;
+}
+
+}  // namespace selfalign
