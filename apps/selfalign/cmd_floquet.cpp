@@ -60,8 +60,10 @@ json floquet_json(const ProfileModel& model, const FloquetAnalysis& a, double fd
       model.three_phase && !model.jerk && model.law.is_unit()
           ? number_or_null(slip_slip_multiplier(model.three_phase->a2, model.three_phase->a3))
           : json(nullptr);
-  j["law"] = law_json(model.law);
+  j["law"] = law_json(model.law, model.output_units());
   j["pattern"] = a.steady.pattern;
+  j["method"] = to_string(a.steady.method);
+  j["integrator"] = integrator_json(a.steady.method, model.integrator, a.steady.integrator);
   return j;
 }
 
@@ -100,6 +102,7 @@ void run_floquet(const ConfigFlags& flags, const FloquetFlags& f) {
   const ProfileModel model = build_profile_model(config);  // case 0: InvalidParameter
   FloquetOptions options;
   options.fd_step = require_in_half_open("fd-step", f.fd_step, 0.0, 0.1);
+  options.steady.integrator = model.integrator;  // Stribeck or viscous laws
   const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(model.profile.get());
   // The analytic matrix (eqs. 25-33) is the paper's law's; any other law: saltation and FD.
   const FloquetAnalysis analysis = three_phase && model.law.is_unit()

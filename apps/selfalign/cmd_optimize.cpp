@@ -97,7 +97,7 @@ void run_optimize(OptimizeFlags& f) {
                    {"max_velocity", f.limits.max_velocity},
                    {"max_acceleration", f.limits.max_acceleration},
                    {"max_jerk", number_or_null(f.limits.max_jerk)}}},
-                 {"law", law_json(f.options.law)},
+                 {"law", law_json(f.options.law, OutputUnits{})},
                  {"results", json::array()}};
   TextTable table;
   for (const OptimizationResult& r : results) {

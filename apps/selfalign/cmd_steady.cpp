@@ -59,9 +59,9 @@ json steady_json(const ProfileModel& model, const std::optional<SteadyState>& st
   j["case_a_priori"] = paper_three_phase(model)
                            ? json(static_cast<int>(predict_case(*model.three_phase)))
                            : json(nullptr);
-  j["law"] = law_json(model.law);
+  j["law"] = law_json(model.law, model.output_units());
   for (const char* key : {"v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
-                          "periods", "method", "pattern"})
+                          "periods", "method", "pattern", "integrator"})
     j[key] = nullptr;
   if (!steady) return j;
   j["pattern"] = steady->pattern;  // the stick/slip sequence, e.g. "stick,forward,backward"
@@ -73,6 +73,7 @@ json steady_json(const ProfileModel& model, const std::optional<SteadyState>& st
   j["converged"] = steady->converged;
   j["periods"] = steady->periods;
   j["method"] = to_string(steady->method);
+  j["integrator"] = integrator_json(steady->method, model.integrator, steady->integrator);
   return j;
 }
 
@@ -92,6 +93,11 @@ std::string steady_table(const json& j, UnitSystem units) {
     t.row("converged", std::string(j["converged"].get<bool>() ? "yes" : "NO") + ", " +
                            table_text(j["periods"]) + " periods, " + table_text(j["method"]) +
                            " solver");
+  if (!j["integrator"].is_null())
+    t.row("integrator", "rtol " + table_text(j["integrator"]["relative_tolerance"]) + ", " +
+                            table_text(j["integrator"]["steps"]) + " steps (" +
+                            table_text(j["integrator"]["rejected"]) + " rejected), " +
+                            table_text(j["integrator"]["events"]) + " events");
   t.row("profile", table_text(j["profile"]) + ", period " + with_unit("period", D::time) +
                        ", stroke " + with_unit("stroke", D::length));
   if (!j["a2"].is_null())
@@ -111,7 +117,9 @@ void run_steady(const ConfigFlags& flags, bool as_json) {
   if (config.out) require_output_path("out", *config.out, config.samples.value_or(""), "--samples");
   const ProfileModel model = build_profile_model(config, NonPhysicalProfile::allow);
   std::optional<SteadyState> steady;
-  if (model.profile) steady = steady_state(*model.profile, model.law);
+  SteadyStateOptions options;
+  options.integrator = model.integrator;  // Stribeck or viscous laws
+  if (model.profile) steady = steady_state(*model.profile, model.law, options);
   const json report = steady_json(model, steady);
   deliver_report(report, steady_table(report, model.units), as_json, config.out);
 }

@@ -56,7 +56,7 @@ json stop_json(const SimulateModel& model, const StoppingOptions& o, const Stopp
   const bool stopped = r.kind != StopKind::not_stopped;
   j["stop"] = to_string(r.kind);
   j["accumulation_proven"] = r.kind == StopKind::accumulation && r.accumulation_proven;
-  j["law"] = law_json(model.law);
+  j["law"] = law_json(model.law, model.output_units());
   j["end_position"] = stopped ? json(u.length(r.end_position)) : json(nullptr);
   j["process_time"] = stopped ? number_or_null(u.time(r.process_time)) : json(nullptr);
   j["entry_time"] = number_or_null(u.time(r.entry_time));

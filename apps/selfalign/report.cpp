@@ -9,12 +9,6 @@
 
 namespace selfalign::cli {
 
-nlohmann::json law_json(const FrictionLaw& law) {
-  return {{"static", law.static_coefficient()},
-          {"kinetic_forward", law.kinetic_forward()},
-          {"kinetic_backward", law.kinetic_backward()}};
-}
-
 nlohmann::json number_or_null(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
@@ -29,6 +23,7 @@ std::string unit_label(UnitSystem units, Dimension d) {
     case Dimension::velocity: return "m/s";
     case Dimension::acceleration: return "m/s^2";
     case Dimension::jerk: return "m/s^3";
+    case Dimension::rate: return "1/s";
     case Dimension::none: break;
   }
   return "[-]";

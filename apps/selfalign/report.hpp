@@ -11,6 +11,7 @@
 
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/io/simulate_config.hpp"
+#include "selfalign/io/summary_json.hpp"
 #include "selfalign/io/unit_system.hpp"
 
 namespace selfalign::cli {
@@ -18,9 +19,6 @@ namespace selfalign::cli {
 /// The value as a JSON number, or null for NaN and ±inf (JSON has neither).
 nlohmann::json number_or_null(double value);
 
-/// The friction law as report fields, ratios to mu (mu_1): {"static", "kinetic_forward",
-/// "kinetic_backward"}; all 1 for the paper's law.
-nlohmann::json law_json(const FrictionLaw& law);
 
 /// A CSV field: shortest text that reads back as the same double; "nan", "inf", "-inf".
 std::string csv_number(double value);

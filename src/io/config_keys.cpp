@@ -19,7 +19,9 @@ const ConfigKey kKeys[] = {
     {"units", &C::units, D::none, "", "", "run",
      "unit system of every input and output: dimensionless (Sect. 3.2) or si"},
     {"method", &C::method, D::none, "", "", "run",
-     "solver: exact (event-driven; piecewise-constant or piecewise-linear y'') or time-stepping (Moreau)"},
+     "solver: exact (event-driven; piecewise-constant or piecewise-linear y'', or fourier on "
+     "piecewise-constant friction), integrator (exact sticks, Dormand-Prince slips; what exact "
+     "runs under a Stribeck or viscous law) or time-stepping (Moreau)"},
     {"profile", &C::profile, D::none, "", "", "profile",
      "table motion: three-phase (Sect. 4.4.3; with jerk: trapezoidal acceleration), "
      "quadratic-sequence (durations, accelerations), piecewise-linear (times, accelerations, "
@@ -79,6 +81,15 @@ const ConfigKey kKeys[] = {
     {"mu_backward", &C::mu_backward, D::none, "[-]", "[-]", "law",
      "kinetic friction coefficient of backward slip (x' < 0), > 0 (default: mu; the forward "
      "one is mu)"},
+    {"stribeck_velocity", &C::stribeck_velocity, D::velocity, "[-]", "[m/s]", "law",
+     "Stribeck velocity v_s, > 0: the kinetic coefficient falls from mu_static at rest to mu "
+     "(mu_backward) as mu + (mu_static - mu) exp(-(|x'|/v_s)^delta) (default: none, Coulomb); "
+     "solved by the slip integrator"},
+    {"stribeck_exponent", &C::stribeck_exponent, D::none, "[-]", "[-]", "law",
+     "Stribeck exponent delta, in (0, 100] (with stribeck_velocity)"},
+    {"viscous", &C::viscous, D::rate, "[-]", "[1/s]", "law",
+     "viscous friction rate c >= 0: a force -m c x' while slipping (default: none); solved by "
+     "the slip integrator"},
     {"mu", &C::mu, D::none, "[-]", "[-]", "scales",
      "low-friction coefficient mu_1; with g and length_scale sets T = sqrt(L/(mu g)), > 0"},
     {"g", &C::g, D::none, "[m/s^2]", "[m/s^2]", "scales", "gravitational acceleration, > 0"},
@@ -96,6 +107,10 @@ const ConfigKey kKeys[] = {
     {"theta", &C::theta, D::none, "[-]", "[-]", "solver", "time-stepping theta, in [0, 1]"},
     {"output_step", &C::output_step, D::time, "[-]", "[s]", "solver",
      "spacing of the trajectory samples, >= 0; 0: h (time-stepping) or Δt/200 (exact)"},
+    {"relative_tolerance", &C::relative_tolerance, D::none, "[-]", "[-]", "solver",
+     "slip integrator (Stribeck, viscous): relative tolerance of each step, in (0, 1)"},
+    {"absolute_tolerance", &C::absolute_tolerance, D::none, "[-]", "[-]", "solver",
+     "slip integrator: absolute tolerance of each step on the dimensionless x and x', in (0, 1)"},
     {"out", &C::out, D::none, "", "", "output", "trajectory CSV file (default: none written)"},
     {"summary", &C::summary, D::none, "", "", "output",
      "summary JSON file, - for stdout (default: <out without extension>.summary.json when out "
@@ -109,6 +124,7 @@ std::string_view conversion_factor(Dimension d) {
     case D::velocity: return "L/T";
     case D::acceleration: return "mu g";
     case D::jerk: return "mu g / T";
+    case D::rate: return "1/T";
     case D::none: break;
   }
   return "";

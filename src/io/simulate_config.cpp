@@ -58,6 +58,7 @@ double to_si(Dimension d, double v, const Scales& s) {
     case D::velocity: return s.velocity_to_si(v);
     case D::acceleration: return s.acceleration_to_si(v);
     case D::jerk: return s.acceleration_to_si(v) / s.time();
+    case D::rate: return v / s.time();
     case D::none: break;
   }
   return v;
@@ -70,6 +71,7 @@ double to_dimensionless(Dimension d, double v, const Scales& s) {
     case D::velocity: return s.velocity_from_si(v);
     case D::acceleration: return s.acceleration_from_si(v);
     case D::jerk: return s.acceleration_from_si(v) * s.time();
+    case D::rate: return v * s.time();
     case D::none: break;
   }
   return v;
@@ -106,6 +108,9 @@ SimulateConfig simulate_config_defaults() {
   d.step = 1e-4;
   d.theta = 0.5;
   d.output_step = 0.0;
+  d.stribeck_exponent = 1.0;
+  d.relative_tolerance = 1e-10;
+  d.absolute_tolerance = 1e-12;
   return d;
 }
 

@@ -113,7 +113,10 @@ FrictionLaw friction_law(const SimulateConfig& c) {
     throw InvalidParameter("mu_backward", back,
                            "must be <= mu_static = " + format_number(s) +
                                " (the static coefficient is >= the kinetic one)");
-  return FrictionLaw(s / mu, 1.0, back / mu);
+  FrictionLaw law(s / mu, 1.0, back / mu);
+  if (r.stribeck_velocity) law = law.with_stribeck(*r.stribeck_velocity, *r.stribeck_exponent);
+  if (r.viscous) law = law.with_viscous(*r.viscous);
+  return law;
 }
 
 namespace {
@@ -127,6 +130,8 @@ void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.options.step = *c.step;
   m.options.theta = *c.theta;
   m.options.output_step = require_non_negative("output_step", *c.output_step);
+  m.options.integrator = {*c.relative_tolerance, *c.absolute_tolerance};
+  validate(m.options.integrator);
   m.friction = make_friction(c, m.units, m.scales);
   m.law = friction_law(c);
   m.profile = make_profile(c, m.units, m.scales);
@@ -182,6 +187,8 @@ ProfileModel build_profile_model(const SimulateConfig& config, NonPhysicalProfil
   try {
     const SimulateConfig c = si ? to_dimensionless(resolved, m.scales) : resolved;
     m.law = friction_law(c);
+    m.integrator = {*c.relative_tolerance, *c.absolute_tolerance};
+    validate(m.integrator);
     if (*c.profile == "three-phase") {
       const ThreePhaseParameters p = three_phase_parameters(c);
       validate(p);

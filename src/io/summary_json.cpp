@@ -85,21 +85,44 @@ json scales_json(const SimulateModel& m) {
 
 }  // namespace
 
+json law_json(const FrictionLaw& law, const OutputUnits& u) {
+  const bool stribeck = law.stribeck_velocity() > 0;
+  return {{"static", law.static_coefficient()},  // ratios to mu [-]
+          {"kinetic_forward", law.kinetic_forward()},
+          {"kinetic_backward", law.kinetic_backward()},
+          {"stribeck_velocity", stribeck ? json(u.velocity(law.stribeck_velocity())) : json(nullptr)},
+          {"stribeck_exponent", stribeck ? json(law.stribeck_exponent()) : json(nullptr)},
+          {"viscous", law.viscous() > 0 ? json(law.viscous() / u.time(1.0)) : json(nullptr)}};
+}
+
+json integrator_json(Method method, const IntegratorOptions& options,
+                     const IntegratorStatistics& stats) {
+  if (method != Method::integrator) return nullptr;
+  return {{"stepper", "Boost.Odeint runge_kutta_dopri5, dense output"},
+          {"relative_tolerance", options.relative_tolerance},
+          {"absolute_tolerance", options.absolute_tolerance},
+          {"steps", stats.steps},
+          {"rejected", stats.rejected},
+          {"rhs_evaluations", stats.rhs_evaluations},
+          {"events", stats.events}};
+}
+
 json simulate_summary_json(const SimulateModel& model, const SimulationResult& result,
                            const std::optional<std::string>& trajectory_file) {
   const OutputUnits u = model.output_units();
   json j;
   j["units"] = to_string(model.units);
-  j["method"] = to_string(model.options.method);
+  j["method"] = to_string(result.method);  // integrator where exact met a speed-dependent law
   j["profile"] = profile_json(*model.profile, u);
   j["friction"] = friction_json(*model.friction, u);
-  j["law"] = {{"static", model.law.static_coefficient()},
-              {"kinetic_forward", model.law.kinetic_forward()},
-              {"kinetic_backward", model.law.kinetic_backward()}};  // ratios to mu [-]
+  j["law"] = law_json(model.law, u);
   j["initial"] = state_json(model.initial, u);
   j["final"] = state_json(result.final_state, u);
   j["periods"] = model.periods;
-  j[model.options.method == Method::exact ? "arcs" : "steps"] = result.work;
+  j[result.method == Method::time_stepping ? "steps"
+    : result.method == Method::exact       ? "arcs"
+                                           : "intervals"] = result.work;
+  j["integrator"] = integrator_json(result.method, model.options.integrator, result.integrator);
   j["mean_velocity_last_period"] = number_or_null(u.velocity(result.mean_velocity_last_period));
   j["stick_fraction"] = result.stick_fraction;  // [-]
   j["scales"] = scales_json(model);

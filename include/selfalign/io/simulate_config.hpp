@@ -51,6 +51,9 @@ struct SimulateConfig {
   // ---- friction law ----
   std::optional<double> mu_static;    ///< static coefficient [-], >= mu; unset: mu
   std::optional<double> mu_backward;  ///< kinetic coefficient of backward slip [-]; unset: mu
+  std::optional<double> stribeck_velocity;  ///< Stribeck v_s [-] | [m/s], > 0; unset: no decay
+  std::optional<double> stribeck_exponent;  ///< Stribeck delta [-], in (0, 100]
+  std::optional<double> viscous;  ///< viscous rate c [-] | [1/s], >= 0; unset: none
   // ---- scales (Sect. 3.2) ----
   std::optional<double> mu;            ///< mu_1 [-]
   std::optional<double> g;             ///< gravity [m/s^2]
@@ -65,6 +68,8 @@ struct SimulateConfig {
   std::optional<double> step;         ///< time-stepping h [-] | [s]
   std::optional<double> theta;        ///< time-stepping theta [-], in [0, 1]
   std::optional<double> output_step;  ///< sample spacing [-] | [s]; 0: solver default
+  std::optional<double> relative_tolerance;  ///< slip integrator rtol [-], in (0, 1)
+  std::optional<double> absolute_tolerance;  ///< slip integrator atol [-], in (0, 1)
   // ---- output ----
   std::optional<std::string> out;      ///< trajectory CSV path; unset: no CSV
   std::optional<std::string> summary;  ///< summary JSON path, "-" = stdout
@@ -79,7 +84,8 @@ enum class Dimension {
   time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
   velocity,     ///< [m/s] = L/T [-]
   acceleration, ///< [m/s^2] = mu g [-]
-  jerk          ///< [m/s^3] = mu g / T [-]
+  jerk,         ///< [m/s^3] = mu g / T [-]
+  rate          ///< [1/s] = 1/T [-] (a viscous coefficient per unit mass)
 };
 
 using TextField = std::optional<std::string> SimulateConfig::*;

@@ -45,8 +45,10 @@ struct SimulateModel {
 SimulateModel build_simulate_model(const SimulateConfig& config);
 
 /// The run's friction law in model units: FrictionLaw(mu_static/mu, 1, mu_backward/mu),
-/// the unit being mu = mu_1, the forward kinetic coefficient of the low-friction region.
-/// Throws InvalidParameter naming mu_static (< mu) or mu_backward (> mu_static, <= 0).
+/// the unit being mu = mu_1, the forward kinetic coefficient of the low-friction region, with
+/// a Stribeck decay (stribeck_velocity, stribeck_exponent) and a viscous term (viscous) when
+/// given (model units: pass a dimensionless config). Throws InvalidParameter naming mu_static
+/// (< mu), mu_backward (> mu_static, <= 0), stribeck_velocity, stribeck_exponent or viscous.
 FrictionLaw friction_law(const SimulateConfig& config);
 
 /// The table profile of a run and its unit system, for the analyses of the uniform table
@@ -64,6 +66,9 @@ struct ProfileModel {
   /// jerk-limited one, and the paper's jump-acceleration formulas do not apply), else none.
   std::optional<double> jerk;
   FrictionLaw law;                     ///< (mu_static, mu, mu_backward) / mu [-]
+  /// The slip integrator's tolerances (relative_tolerance, absolute_tolerance): used when the
+  /// law is speed-dependent (Stribeck, viscous).
+  IntegratorOptions integrator{};
 
   /// Converts results back to the run's unit system.
   OutputUnits output_units() const {

@@ -15,6 +15,16 @@
 namespace selfalign {
 
 /// The summary of `result`, a run of `model`. trajectory_file: the CSV written, or none (null).
+/// The friction law as JSON: static, kinetic_forward, kinetic_backward (ratios to mu [-]),
+/// stribeck_velocity [-] | [m/s], stribeck_exponent [-] and viscous [-] | [1/s] (null when the
+/// law has none).
+nlohmann::json law_json(const FrictionLaw& law, const OutputUnits& units);
+
+/// The slip integrator's provenance: stepper, tolerances, steps, rejected steps, right-hand-side
+/// evaluations and events; null unless method is Method::integrator.
+nlohmann::json integrator_json(Method method, const IntegratorOptions& options,
+                               const IntegratorStatistics& statistics);
+
 nlohmann::json simulate_summary_json(const SimulateModel& model, const SimulationResult& result,
                                      const std::optional<std::string>& trajectory_file);
 

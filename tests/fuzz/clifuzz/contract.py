@@ -41,21 +41,26 @@ NULLABLE = {
     # a period"; stick_fraction "null when no trajectory is written" (checked in check_json);
     # scales "null in dimensionless runs"; trajectory_file "or null"; friction "c_mu (null for
     # uniform)" (x_mu and width likewise have no meaning for uniform).
+    # "integrator" and the law's speed terms: null unless the law has them (docs/config.md).
     "simulate": {"mean_velocity_last_period", "stick_fraction", "scales", "trajectory_file",
-                 "friction.x_mu", "friction.width", "friction.c_mu"},
+                 "friction.x_mu", "friction.width", "friction.c_mu", "integrator",
+                 "law.stribeck_velocity", "law.stribeck_exponent", "law.viscous"},
     # docs/cli.md "steady" key table and the case-0 paragraph.
     "steady": {"case_a_priori", "v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
                "periods", "method", "a2", "a3", "t1", "t2", "t3", "y_ini", "y_dot_ini", "jerk",
-               "pattern"},
+               "pattern", "integrator", "law.stribeck_velocity", "law.stribeck_exponent",
+               "law.viscous"},
     # docs/cli.md "floquet": matrix, multipliers "null where available is false";
     # slip_slip_lambda2_formula "null otherwise".
     "floquet": {"analytic.matrix", "analytic.multipliers", "saltation.matrix",
                 "saltation.multipliers", "finite_difference.matrix",
-                "finite_difference.multipliers", "slip_slip_lambda2_formula"},
+                "finite_difference.multipliers", "slip_slip_lambda2_formula", "spread",
+                "integrator", "law.stribeck_velocity", "law.stribeck_exponent", "law.viscous"},
     # docs/cli.md "converge": t_coincide "null if not reached", csv_file "or null".
     "converge": {"t_coincide", "csv_file"},
     # docs/cli.md "stop" key table; "Every report has ... csv_file (the CSV path or null)".
-    "stop": {"end_position", "process_time", "entry_time", "x_stick_min", "fractions.position",
+    "stop": {"law.stribeck_velocity", "law.stribeck_exponent", "law.viscous",
+             "end_position", "process_time", "entry_time", "x_stick_min", "fractions.position",
              "fractions.time", "fractions.periods_from_entry", "csv_file"},
     # docs/cli.md "accuracy": reaches false -> "nothing below is computed: null"; x_stick_min
     # "null when max|y''| > c_mu"; dx_d, x_d "null unless every entry stopped"; overshoot_* are
@@ -76,7 +81,7 @@ NULLABLE = {
     "sweep period": {"csv_file", "a2", "a3"},
     "sweep stroke": {"csv_file", "a2", "a3"},
     "sweep positioning": {"csv_file"},
-    "optimize": {"results.f", "results.v_bar", "results.max_jerk", "limits.max_jerk"},  # f, v_bar: infeasible results only (check_json); max_jerk: infinite (no limit, jumps)
+    "optimize": {"law.stribeck_velocity", "law.stribeck_exponent", "law.viscous", "results.f", "results.v_bar", "results.max_jerk", "limits.max_jerk"},  # f, v_bar: infeasible results only (check_json); max_jerk: infinite (no limit, jumps)
     "design": {"profile.jerk_m_per_s3"},
 }
 
