@@ -88,6 +88,10 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
                          const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& o) {
   const PiecewisePolynomialProfile& pwc = require_exact_profile(profile, "a stopping run");
+  if (law.velocity_dependent())  // the stop watch times crossings on closed-form arcs
+    throw InvalidParameter("law", law.describe(),
+                           "a stopping run needs a law without Stribeck or viscous terms (its "
+                           "crossing times come from closed-form arcs); simulate the run instead");
   if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");
   for (double p : o.fractions)
     if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");

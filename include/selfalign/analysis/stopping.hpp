@@ -76,7 +76,8 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
 /// high enough (stick_position_min of the pieces); the accumulation proof (eqs. 59, 60) is the
 /// paper's and applies to the two-region table with a three-phase profile under the paper's
 /// law only (elsewhere an accumulating run ends not_stopped). Throws InvalidParameter for a
-/// level that is not piecewise affine.
+/// level that is not piecewise affine, and for a velocity-dependent law (Stribeck, viscous:
+/// not yet; its crossing times would need the integrator to locate them as events).
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& options = {});
