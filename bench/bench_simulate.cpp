@@ -32,6 +32,7 @@
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace {
@@ -494,4 +495,58 @@ void fourier_steady_state_moreau(benchmark::State& st) {
 
 BENCHMARK(fourier_steady_state_exact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(fourier_steady_state_moreau)->Arg(2000)->Arg(20000)->Unit(benchmark::kMicrosecond);
+// ---- Stribeck + viscous friction: the slip integrator beside Moreau (issue 11) ------------
+// The paper's Sect. 7.2 three-phase profile on the uniform table under s = 1.3, k = 1,
+// v_s = 0.01, delta = 2, c = 0.1: one period from the steady state's phase-0 velocity, by the
+// integrator at two tolerances and by Moreau at three step sizes. Counter x_error: |x| after
+// the period against the integrator at rtol 1e-13 (the accuracy each run buys).
+struct StribeckCase {
+  ThreePhaseProfile profile{ThreePhaseParameters{1.0, 0.084, 2.3, 1.3}};
+  FrictionLaw law = FrictionLaw(1.3, 1.0).with_stribeck(0.01, 2.0).with_viscous(0.1);
+  UniformFriction uniform;
+  double v0 = 0, x_reference = 0;
+  StribeckCase() {
+    v0 = steady_state(profile, law).x_dot_0s;
+    ObjectState s{0, 0, v0};
+    advance_integrated({profile, *uniform.piecewise_affine(), law, {1e-13, 1e-15}}, s,
+                       profile.period());
+    x_reference = s.x;
+  }
+};
+const StribeckCase& stribeck_case() {
+  static const StribeckCase c;
+  return c;
+}
+
+void stribeck_integrator_per_period(benchmark::State& st) {
+  const StribeckCase& c = stribeck_case();
+  const double rtol = std::pow(10.0, -static_cast<double>(st.range(0)));
+  const IntegratorSetup setup{c.profile, *c.uniform.piecewise_affine(), c.law, {rtol, rtol / 100}};
+  ObjectState s;
+  IntegratorStatistics stats;
+  for (auto _ : st) {
+    s = {0, 0, c.v0};
+    stats = {};
+    advance_integrated(setup, s, c.profile.period(), nullptr, &stats);
+    benchmark::DoNotOptimize(s);
+  }
+  st.counters["x_error"] = std::abs(s.x - c.x_reference);
+  st.counters["steps"] = static_cast<double>(stats.steps);
+  st.counters["rejected"] = static_cast<double>(stats.rejected);
+}
+
+void stribeck_moreau_per_period(benchmark::State& st) {
+  const StribeckCase& c = stribeck_case();
+  const long long n = st.range(0);
+  TimeSteppingState s;
+  for (auto _ : st) {
+    s = make_time_stepping_state(c.profile, {0, 0, c.v0});
+    advance_time_stepping(c.profile, c.uniform, c.law, {c.profile.period() / n, 0.5}, s, n);
+    benchmark::DoNotOptimize(s);
+  }
+  st.counters["x_error"] = std::abs(s.object.x - c.x_reference);
+}
+
+BENCHMARK(stribeck_integrator_per_period)->Arg(10)->Arg(6)->Unit(benchmark::kMicrosecond);
+BENCHMARK(stribeck_moreau_per_period)->Arg(10000)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMicrosecond);
 }  // namespace

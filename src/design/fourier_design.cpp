@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "../profiles/periodic_extrema.hpp"
 #include "selfalign/design/local_search.hpp"
@@ -19,14 +21,13 @@ constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rou
 constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimiser
 
 // Fast evaluation of a Fourier design x = (A_1..A_N, B_1..B_N) (unscaled): trigonometric
-// tables on the extrema grid and on the M approximation nodes, extrema refined by Newton on
-// the next derivative from every near-extreme grid point.
+// tables on the extrema grid, extrema refined by Newton on the next derivative from every
+// near-extreme grid point, then the exact steady state of the scaled series (smooth solver).
 class FourierEvaluator {
  public:
-  FourierEvaluator(const ActuatorLimits& l, int order, int segments, const FrictionLaw& law)
-      : l_(l), law_(law), n_(order), m_(segments), w_(2 * std::numbers::pi / l.period) {
+  FourierEvaluator(const ActuatorLimits& l, int order, const FrictionLaw& law)
+      : l_(l), law_(law), n_(order), w_(2 * std::numbers::pi / l.period) {
     table(kSamplesPerHarmonic * n_, grid_cos_, grid_sin_);
-    table(m_, node_cos_, node_sin_);
   }
 
   // d-th derivative of y at t for coefficients x (unscaled).
@@ -71,6 +72,7 @@ class FourierEvaluator {
     bool valid = false;
     double scale = 0;  // common factor that makes the stroke Δy
     double v_bar = 0, max_velocity = 0, max_acceleration = 0;
+    Method method = Method::exact;  // of the steady state (integrator: velocity-dependent law)
   };
 
   Point evaluate(std::span<const double> x) const {
@@ -82,21 +84,30 @@ class FourierEvaluator {
     const detail::Extrema ev = extrema(x, 1), ea = extrema(x, 2);
     p.max_velocity = p.scale * std::max(-ev.min, ev.max);
     p.max_acceleration = p.scale * std::max(-ea.min, ea.max);
-    sampled(x, 1, node_cos_, node_sin_, m_, buf_);
-    const double h = l_.period / m_;
-    durations_.assign(static_cast<std::size_t>(m_), h);
-    accels_.resize(static_cast<std::size_t>(m_));
-    for (int i = 0; i < m_; ++i)  // eq. of fourier_design.hpp: node velocities exact
-      accels_[static_cast<std::size_t>(i)] =
-          p.scale * (buf_[static_cast<std::size_t>((i + 1) % m_)] - buf_[static_cast<std::size_t>(i)]) / h;
-    const auto profile =
-        PiecewisePolynomialProfile::from_accelerations(durations_, accels_, "fourier-approximation");
-    p.v_bar = trusted_v_bar(steady_state(profile, law_), max_abs_velocity(profile), l_.period);
+    const FourierProfile profile = scaled_profile(x, p.scale, ey, p.max_acceleration);
+    const SteadyState st = steady_state(profile, law_);
+    p.method = st.method;
+    p.v_bar = trusted_v_bar(st, p.max_velocity, l_.period);
     p.valid = std::isfinite(p.v_bar);
     return p;
   }
 
  private:
+  // The series scale * x with the extrema already found (no second search: with_extrema).
+  FourierProfile scaled_profile(std::span<const double> x, double scale,
+                                const detail::Extrema& ey, double peak_acceleration) const {
+    const auto n = static_cast<std::size_t>(n_);
+    std::vector<double> a(n), b(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      a[k] = scale * x[k];
+      b[k] = scale * x[n + k];
+    }
+    return FourierProfile::with_extrema(l_.period, std::move(a), std::move(b),
+                                        {.y_min = scale * ey.min,
+                                         .y_max = scale * ey.max,
+                                         .peak_acceleration = peak_acceleration});
+  }
+
   void table(int s, std::vector<double>& c, std::vector<double>& sn) const {
     c.resize(static_cast<std::size_t>(s * n_));
     sn.resize(c.size());
@@ -133,11 +144,20 @@ class FourierEvaluator {
 
   ActuatorLimits l_;
   FrictionLaw law_;
-  int n_, m_;
+  int n_;
   double w_;
-  std::vector<double> grid_cos_, grid_sin_, node_cos_, node_sin_;
-  mutable std::vector<double> buf_, durations_, accels_;
+  std::vector<double> grid_cos_, grid_sin_;
+  mutable std::vector<double> buf_;
 };
+
+// How the steady states were computed, for the result message.
+std::string solver_name(Method method) {
+  switch (method) {
+    case Method::exact: return "the exact smooth solver";
+    case Method::integrator: return "the slip integrator (velocity-dependent law)";
+    default: return "time-stepping";
+  }
+}
 
 // Scales a start so that max |x_i| = 0.5 (inside the [-1, 1] box).
 void normalise(std::vector<double>& x) {
@@ -202,7 +222,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   r.family = "fourier";
   r.limits = l;
   const int n = o.order;
-  const FourierEvaluator evaluator(l, n, o.approximation_segments, o.law);
+  const FourierEvaluator evaluator(l, n, o.law);
 
   LocalSearchProblem problem;
   problem.lower.assign(static_cast<std::size_t>(2 * n), -1.0);
@@ -282,8 +302,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
                r.max_jerk <= l.max_jerk * slack;
   r.message = r.feasible ? "order-" + std::to_string(n) + " optimum by LD_SLSQP (central FD " +
                                "gradients) from " + std::to_string(best.runs) +
-                               " starts; f on the " + std::to_string(o.approximation_segments) +
-                               "-segment approximation"
+                               " starts; f by " + solver_name(p.method)
                          : "no order-" + std::to_string(n) +
                                " Fourier profile moves the object forward within the limits";
   return r;

@@ -42,7 +42,7 @@ std::array<double, 4> FourierProfile::derivatives(double t) const {
   return d;
 }
 
-FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
+FourierProfile::FourierProfile(Unsampled, double period, std::vector<double> cos_coeffs,
                                std::vector<double> sin_coeffs)
     : period_(require_positive_moderate("period", period)),
       cos_(std::move(cos_coeffs)),
@@ -68,7 +68,12 @@ FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
     jerk_bound_ += kw * kw * kw * amplitude;
     snap_bound_ += kw * kw * kw * kw * amplitude;
   }
-  const int samples = 128 * static_cast<int>(n);
+}
+
+FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
+                               std::vector<double> sin_coeffs)
+    : FourierProfile(Unsampled{}, period, std::move(cos_coeffs), std::move(sin_coeffs)) {
+  const int samples = 128 * order();
   auto y = [this](double t) { return derivatives(t)[0]; };
   auto yd = [this](double t) { return derivatives(t)[1]; };
   auto ydd = [this](double t) { return derivatives(t)[2]; };
@@ -83,6 +88,26 @@ FourierProfile::FourierProfile(double period, std::vector<double> cos_coeffs,
                            "gives no finite table motion with these coefficients (stroke " +
                                format_number(stroke_) + ", peak acceleration " +
                                format_number(peak_) + ")");
+}
+
+FourierProfile FourierProfile::with_extrema(double period, std::vector<double> cos_coeffs,
+                                            std::vector<double> sin_coeffs,
+                                            const KnownExtrema& e) {
+  FourierProfile p(Unsampled{}, period, std::move(cos_coeffs), std::move(sin_coeffs));
+  require_finite("y_min", e.y_min);
+  require_finite("y_max", e.y_max);
+  if (!(e.y_max > e.y_min))
+    throw InvalidParameter("y_max", e.y_max,
+                           "must exceed y_min = " + format_number(e.y_min) + " (stroke > 0)");
+  if (!(e.peak_acceleration >= 0) || !std::isfinite(e.peak_acceleration))
+    throw InvalidParameter("peak_acceleration", e.peak_acceleration, "must be finite and >= 0");
+  p.offset_ = -e.y_min;
+  p.stroke_ = e.y_max - e.y_min;
+  p.peak_ = e.peak_acceleration;
+  if (!std::isfinite(p.stroke_))
+    throw InvalidParameter("y_max", e.y_max,
+                           "gives no finite stroke with y_min = " + format_number(e.y_min));
+  return p;
 }
 
 TableState FourierProfile::state(double t) const {

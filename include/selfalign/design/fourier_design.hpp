@@ -8,16 +8,16 @@
 /// derivative, each sign change refined by bisection to machine precision):
 ///   max|y'| <= y'_max,  max|y''| <= y''_max.
 ///
-/// Objective: FourierProfile is not piecewise constant, so steady_state() would time-step,
-/// which is O(h) accurate with an erratic constant (docs/time-stepping.md) and so noisy in the
-/// coefficients. Instead f is evaluated on the M-segment piecewise-constant approximation
-/// (fourier_approximation): nodes t_i = i Δt / M, accelerations
-///   a_i = (y'(t_{i+1}) - y'(t_i)) / (t_{i+1} - t_i),
-/// so the approximate table velocity is the piecewise-linear interpolant of y' and exact at the
-/// nodes (its mean is the trapezoid rule of y', exact for a trigonometric polynomial of order
-/// N < M, so the zero-mean velocity of the approximation equals y' at the nodes). The exact
-/// event-driven solver then makes f a smooth function of the coefficients; the approximation
-/// error is O((Δt/M)^2) in the table velocity.
+/// Objective: f of the exact steady state of the scaled series itself. FourierProfile is a
+/// SmoothMotion, so steady_state() uses the exact smooth solver (simulate/smooth_exact.hpp:
+/// closed-form sticks, slips as the exact antiderivatives of y'', events to machine
+/// precision), which makes f a smooth function of the coefficients. (Time-stepping would not:
+/// its O(h) error has an erratic constant, docs/time-stepping.md. The optimiser used to
+/// evaluate f on an M = 256-segment piecewise-constant approximation instead, with an
+/// O((Δt/M)^2) error in the table velocity; fourier_approximation below is that approximation.)
+/// The profile is built by FourierProfile::with_extrema from the extrema the constraints
+/// already needed, so each evaluation searches them once. Under a velocity-dependent law the
+/// steady state is the slip integrator's (steady_state.hpp).
 /// Optimiser: LD_SLSQP with central finite-difference gradients (OptimizeOptions::fd_step),
 /// deterministic multi-start: the Lanczos-smoothed Fourier series of the three-phase optimum,
 /// then seeded random starts with coefficients decaying as 1/k^2.
@@ -31,11 +31,16 @@
 
 namespace selfalign {
 
-/// The M-segment piecewise-constant approximation of any profile described above
-/// (segments >= 2; throws InvalidParameter otherwise).
+/// The M-segment piecewise-constant approximation of any profile: nodes t_i = i Δt / M,
+/// accelerations a_i = (y'(t_{i+1}) - y'(t_i)) / (t_{i+1} - t_i), so its table velocity is the
+/// piecewise-linear interpolant of y', exact at the nodes (its mean is the trapezoid rule of
+/// y', exact for a trigonometric polynomial of order N < M), with an O((Δt/M)^2) error in
+/// between. No longer the optimiser's objective (see above); kept as an independent
+/// check of the smooth solver and for profiles without one. segments >= 2; throws
+/// InvalidParameter otherwise.
 PiecewisePolynomialProfile fourier_approximation(const TableProfile& profile, int segments);
 
-/// Steady state of the M-segment approximation (exact solver).
+/// Steady state of the M-segment approximation (exact piecewise solver).
 SteadyState approximate_steady_state(const TableProfile& profile, int segments);
 
 /// max |y'| over the period of a Fourier profile (bisection-refined extrema).

@@ -20,6 +20,21 @@ class FourierProfile final : public TableProfile, public SmoothMotion {
   ///        motion is not finite (a period so short that (N w)^2 A_N overflows).
   FourierProfile(double period, std::vector<double> cos_coeffs, std::vector<double> sin_coeffs);
 
+  /// Extrema of y (before the offset c_0) and of |y''| over the period, known to the caller.
+  struct KnownExtrema {
+    double y_min;              ///< min of sum_k (A_k cos + B_k sin) over the period [-]
+    double y_max;              ///< max of the same sum [-], > y_min
+    double peak_acceleration;  ///< max |y''| over the period [-], >= 0
+  };
+  /// The profile of the constructor without its O(N^2) extrema search (128 N samples refined by
+  /// bisection), for a caller that already has the extrema (the Fourier optimiser computes them
+  /// for its constraints): c_0 = -y_min, stroke() = y_max - y_min, peak_acceleration() as given.
+  /// The coefficients are validated as by the constructor (finite, not all zero, N <= 1000);
+  /// the extrema must be finite with y_max > y_min and peak_acceleration >= 0 (InvalidParameter
+  /// otherwise) but are not checked against the coefficients: their accuracy is the caller's.
+  static FourierProfile with_extrema(double period, std::vector<double> cos_coeffs,
+                                     std::vector<double> sin_coeffs, const KnownExtrema& extrema);
+
   double period() const override { return period_; }
   TableState state(double t) const override;
   double peak_acceleration() const override { return peak_; }
@@ -41,6 +56,12 @@ class FourierProfile final : public TableProfile, public SmoothMotion {
   std::array<double, 4> derivatives(double t) const override;
 
  private:
+  struct Unsampled {};
+  /// Validates the coefficients and sets the jerk and snap bounds; offset, stroke and peak
+  /// are left to the caller.
+  FourierProfile(Unsampled, double period, std::vector<double> cos_coeffs,
+                 std::vector<double> sin_coeffs);
+
   double period_;
   std::vector<double> cos_, sin_;
   double offset_ = 0, peak_ = 0, stroke_ = 0, jerk_bound_ = 0, snap_bound_ = 0;
