@@ -21,7 +21,7 @@ constexpr double kLimitTol = 1e-9;
 // Stroke: rescaled exactly by the optimisers, then recomputed by the profile's own extrema.
 constexpr double kStrokeTol = 1e-9;
 // The Fourier optimiser's extrema grid has 32 N points per period (fourier_design.cpp);
-// the independent check samples 10x finer, and at least 10x the 256 approximation nodes.
+// the independent check samples 10x finer.
 constexpr int kCheckSamplesPerHarmonic = 320;
 
 const ActuatorLimits kFig6{};  // Δt = 0.072, Δy = 0.021, y'_max = 3.2, y''_max = 1275

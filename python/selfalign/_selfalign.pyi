@@ -1066,7 +1066,6 @@ class OptimizeOptions:
         *,
         order: int = 12,
         segments: int = 4,
-        approximation_segments: int = 256,
         starts: int = 8,
         max_evaluations: int = 3000,
         grid: int = 48,

@@ -33,22 +33,20 @@ bounded over the whole period.)doc")
 
   const OptimizeOptions d;
   py::class_<OptimizeOptions>(m, "OptimizeOptions", R"doc(
-Options of the optimisers: Fourier order, K segments, M-segment approximation of the Fourier
-objective, multi-starts, evaluations per local run, three-phase scan grid and polish count,
-seed, finite-difference step, and an optional progress(done, total) callable.)doc")
-      .def(py::init([](int order, int segments, int approximation_segments, int starts,
-                       int max_evaluations, int grid, int polish, unsigned seed, double fd_step,
+Options of the optimisers: Fourier order, K segments, multi-starts, evaluations per local run,
+three-phase scan grid and polish count, seed, finite-difference step, and an optional
+progress(done, total) callable.)doc")
+      .def(py::init([](int order, int segments, int starts, int max_evaluations, int grid,
+                       int polish, unsigned seed, double fd_step,
                        std::function<void(int, int)> progress, const FrictionLaw& law) {
              OptimizeOptions o;
-             o.order = order, o.segments = segments;
-             o.approximation_segments = approximation_segments, o.starts = starts;
+             o.order = order, o.segments = segments, o.starts = starts;
              o.max_evaluations = max_evaluations, o.grid = grid, o.polish = polish;
              o.seed = seed, o.fd_step = fd_step, o.law = law;
              o.progress = std::move(progress);
              return o;
            }),
            py::kw_only(), py::arg("order") = d.order, py::arg("segments") = d.segments,
-           py::arg("approximation_segments") = d.approximation_segments,
            py::arg("starts") = d.starts, py::arg("max_evaluations") = d.max_evaluations,
            py::arg("grid") = d.grid, py::arg("polish") = d.polish, py::arg("seed") = d.seed,
            py::arg("fd_step") = d.fd_step, py::arg("progress") = py::none(),

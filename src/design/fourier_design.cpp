@@ -171,7 +171,7 @@ void normalise(std::vector<double>& x) {
 
 PiecewisePolynomialProfile fourier_approximation(const TableProfile& profile, int segments) {
   if (segments < 2)
-    throw InvalidParameter("approximation_segments", static_cast<double>(segments),
+    throw InvalidParameter("segments", static_cast<double>(segments),
                            "must be >= 2");
   const double dt = profile.period(), h = dt / segments;
   std::vector<double> v(static_cast<std::size_t>(segments));

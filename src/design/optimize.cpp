@@ -37,7 +37,6 @@ void validate(const OptimizeOptions& o) {
   // order 12; order 100 already has 200 design variables).
   require_in("order", o.order, 1, 100);
   require_in("segments", o.segments, 2, 64);
-  require_in("approximation_segments", o.approximation_segments, 8, 4096);
   require_in("starts", o.starts, 1, 1000);
   require_in("max_evaluations", o.max_evaluations, 1, 1'000'000);
   require_in("grid", o.grid, 2, 2000);

@@ -10,8 +10,9 @@
 ///
 /// Objective: f of the exact steady state of the scaled series itself. FourierProfile is a
 /// SmoothMotion, so steady_state() uses the exact smooth solver (simulate/smooth_exact.hpp:
-/// closed-form sticks, slips as the exact antiderivatives of y'', events to machine
-/// precision), which makes f a smooth function of the coefficients. (Time-stepping would not:
+/// closed-form slip velocity x' = x'(t0) - (y' - y'(t0)) - sigma k m (t - t0), events
+/// isolated by safe steps and found to machine precision), which makes f a smooth function of
+/// the coefficients. (Time-stepping would not:
 /// its O(h) error has an erratic constant, docs/time-stepping.md. The optimiser used to
 /// evaluate f on an M = 256-segment piecewise-constant approximation instead, with an
 /// O((Δt/M)^2) error in the table velocity; fourier_approximation below is that approximation.)

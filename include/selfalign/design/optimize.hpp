@@ -42,9 +42,6 @@ void validate(const ActuatorLimits& limits);
 struct OptimizeOptions {
   int order = 12;            ///< Fourier order N, in [1, 100]
   int segments = 4;          ///< K of the piecewise-constant family, in [2, 64]
-  /// Fourier objective: the M-segment piecewise-constant approximation (fourier_design.hpp),
-  /// in [8, 4096].
-  int approximation_segments = 256;
   int starts = 8;            ///< multi-starts of the local optimiser, in [1, 1000]
   int max_evaluations = 3000;  ///< objective evaluations per local run, in [1, 1e6]
   int grid = 48;             ///< three-phase scan: grid points per acceleration axis, [2, 2000]
