@@ -21,6 +21,7 @@
 #include "selfalign/analysis/floquet.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/analysis/stopping.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/fourier.hpp"
@@ -260,4 +261,32 @@ TEST(SlipIntegrator, RefusesBadInputNamingTheParameter) {
     EXPECT_NE(message([&] { validate(IntegratorOptions{1e-10, tol}); }).find("absolute_tolerance"),
               std::string::npos);
   }
+}
+
+// A stopping run through the integrator (static = kinetic: the Coulomb motion) against the
+// exact solver's: the same stop, rest position, process time, entry time and target times.
+// The integrator locates the entry into x >= x_mu and the targets as events on its dense
+// output; rtol 1e-12 leaves errors of order 1e-11 in times and positions: 1e-9.
+TEST(SlipIntegrator, StoppingRunMatchesTheExactSolversWhenStaticEqualsKinetic) {
+  constexpr double kTol = 1e-9;
+  const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});
+  const TwoRegionFriction friction(0.1, 0.05, 2.5);
+  StoppingOptions o;
+  o.fractions = {0.5, 0.9};
+  o.integrator = {1e-12, 1e-14};
+  const StoppingRun exact = stopping_run(profile, friction, FrictionLaw(1.0, 1.0), {0, 0, 0}, o);
+  const StoppingRun integrated =
+      stopping_run(profile, friction, coulomb_through_integrator(1.0), {0, 0, 0}, o);
+  ASSERT_EQ(exact.kind, StopKind::permanent_stick);
+  ASSERT_EQ(integrated.kind, exact.kind);
+  EXPECT_NEAR(integrated.end_position, exact.end_position, kTol);
+  EXPECT_NEAR(integrated.process_time, exact.process_time, kTol);
+  EXPECT_NEAR(integrated.entry_time, exact.entry_time, kTol);
+  ASSERT_EQ(integrated.time_to_fraction.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k) {
+    ASSERT_FALSE(std::isnan(exact.time_to_fraction[k]));
+    EXPECT_NEAR(integrated.time_to_fraction[k], exact.time_to_fraction[k], kTol) << k;
+    EXPECT_EQ(integrated.periods_to_fraction[k], exact.periods_to_fraction[k]) << k;
+  }
+  EXPECT_EQ(integrated.stick_positions.size(), exact.stick_positions.size());
 }

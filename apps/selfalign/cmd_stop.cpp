@@ -57,6 +57,8 @@ json stop_json(const SimulateModel& model, const StoppingOptions& o, const Stopp
   j["stop"] = to_string(r.kind);
   j["accumulation_proven"] = r.kind == StopKind::accumulation && r.accumulation_proven;
   j["law"] = law_json(model.law, model.output_units());
+  // The solver of the run: the exact one, or the slip integrator for a Stribeck/viscous law.
+  j["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   j["end_position"] = stopped ? json(u.length(r.end_position)) : json(nullptr);
   j["process_time"] = stopped ? number_or_null(u.time(r.process_time)) : json(nullptr);
   j["entry_time"] = number_or_null(u.time(r.entry_time));
@@ -114,6 +116,7 @@ void run_stop(const ConfigFlags& flags, const StopFlags& f) {
   StoppingOptions options;
   options.max_periods = f.max_periods;
   options.fractions = f.fractions;
+  options.integrator = model.options.integrator;  // Stribeck or viscous laws
   const StoppingRun run = stopping_run(*model.profile, friction, model.law, model.initial, options);
 
   std::string csv;

@@ -841,7 +841,14 @@ class StopKind:
 class StoppingOptions:
     max_periods: int
     fractions: FloatArray
-    def __init__(self, *, max_periods: int = 10000, fractions: ArrayLike = ...) -> None: ...
+    integrator: IntegratorOptions
+    def __init__(
+        self,
+        *,
+        max_periods: int = 10000,
+        fractions: ArrayLike = ...,
+        integrator: IntegratorOptions = ...,
+    ) -> None: ...
 
 class StoppingRun:
     @property

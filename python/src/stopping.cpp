@@ -102,14 +102,20 @@ void bind_stopping_run(py::module_& m) {
 
   const StoppingOptions d;
   py::class_<StoppingOptions>(m, "StoppingOptions", "Options of stopping_run().")
-      .def(py::init([](int max_periods, const py::object& fractions) {
+      .def(py::init([](int max_periods, const py::object& fractions,
+                       const IntegratorOptions& integrator) {
              StoppingOptions o;
              o.max_periods = max_periods;
+             o.integrator = integrator;
              o.fractions = to_vector(fractions, "fractions");
              return o;
            }),
            py::kw_only(), py::arg("max_periods") = d.max_periods,
-           py::arg("fractions") = to_array(std::vector(d.fractions)))
+           py::arg("fractions") = to_array(std::vector(d.fractions)),
+           py::arg("integrator") = d.integrator)
+      .def_readwrite("integrator", &StoppingOptions::integrator,
+                     "IntegratorOptions: tolerances of the slip integrator (Stribeck, viscous "
+                     "laws), which locates the entry and the targets as events")
       .def_readwrite("max_periods", &StoppingOptions::max_periods,
                      "give up after this many table periods (a run also ends, not stopped, "
                      "when the state at a period start repeats exactly)")

@@ -69,3 +69,20 @@ def test_floquet_and_sweeps_run_through_the_integrator():
     v = np.asarray(grid["v_bar"])
     assert v.shape == (2, 1)
     assert v[0, 0] == pytest.approx(sa.steady_state(PROFILE, LAW).v_bar, abs=1e-12)
+
+
+def test_stopping_through_the_integrator_matches_the_exact_run():
+    # static = kinetic: the integrator's events (entry, targets, stops) against the exact
+    # solver's closed-form arcs
+    p = sa.ThreePhaseProfile(sa.ThreePhaseParameters(1.0, 0.084, 1.8, 1.1))
+    f = sa.TwoRegionFriction(0.1, 0.05, 2.5)
+    o = sa.StoppingOptions(fractions=[0.5, 0.9],
+                           integrator=sa.IntegratorOptions(relative_tolerance=1e-12,
+                                                           absolute_tolerance=1e-14))
+    exact = sa.stopping_run(p, f, sa.ObjectState(0, 0, 0), o, law=sa.FrictionLaw(1.0, 1.0))
+    integ = sa.stopping_run(p, f, sa.ObjectState(0, 0, 0), o,
+                            law=sa.FrictionLaw(1.0, 1.0).with_stribeck(1.0))
+    assert integ.kind == exact.kind == sa.StopKind.permanent_stick
+    for key in ("end_position", "process_time", "entry_time"):
+        assert getattr(integ, key) == pytest.approx(getattr(exact, key), abs=1e-9)
+    np.testing.assert_allclose(integ.time_to_fraction, exact.time_to_fraction, atol=1e-9)

@@ -250,6 +250,17 @@ const ObjectState& PeriodMap::Run::state() const noexcept {
                                               : stepping_.object;
 }
 
+const ObjectState& PeriodMap::Run::advance_to(double t_end, IntervalSink* sink,
+                                              std::span<const double> watch) {
+  if (!map_->integrator_)
+    throw InvalidParameter("method", to_string(map_->method()),
+                           "intervals and watched crossings come from the slip integrator only");
+  IntegratorStatistics stats;
+  advance_integrated(*map_->integrator_, smooth_state_, t_end, sink, &stats, watch);
+  map_->add(stats);
+  return smooth_state_;
+}
+
 const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
   if (map_->exact_) {
     advance_exact(*map_->exact_, exact_, t_end, sink);

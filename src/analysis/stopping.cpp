@@ -1,5 +1,6 @@
 #include "selfalign/analysis/stopping.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -25,15 +26,26 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Watches the arcs: entry into x >= x_mu, stops at x >= x_mu, and for each target the time
-// from which x stays at or beyond it (reset whenever an arc ends below it).
-struct StopWatch final : ArcSink {
+// Watches the motion: entry into x >= x_mu, stops at x >= x_mu, and for each target the time
+// from which x stays at or beyond it (reset whenever an arc ends below it). It takes the exact
+// solver's arcs (crossings by bisection on their closed form) and the slip integrator's
+// intervals (crossings located by the integrator as events on its dense output: watch()).
+struct StopWatch final : ArcSink, IntervalSink {
   double x_mu;
   std::vector<double> targets;  // positions to time
   StoppingRun& run;
   double last_stop_time = 0;
+  std::vector<std::pair<double, double>> crossed;  // (position, time) in the open interval
   StopWatch(double x_mu_, std::vector<double> targets_, StoppingRun& r)
       : x_mu(x_mu_), targets(std::move(targets_)), run(r) {}
+
+  // The positions whose crossings the integrator should report, sorted.
+  std::vector<double> watch() const {
+    std::vector<double> w = targets;
+    w.push_back(x_mu);
+    std::sort(w.begin(), w.end());
+    return w;
+  }
 
   // First time on the arc at which x >= X (x is monotone on an arc): bisection on the closed
   // form, to a relative 1e-15 of the arc's length.
@@ -47,21 +59,41 @@ struct StopWatch final : ArcSink {
     return hi;
   }
 
-  void on_arc(const Arc& a) override {
-    const double x_hi = std::max(a.x0, a.x1);
-    if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(a, x_mu);
+  // One arc or interval from x0 to x1 (x monotone on it), ending at t1 with `end`; crossing(X)
+  // is the first time at which x >= X on it, called only when x0 < X <= x1.
+  template <class Crossing>
+  void on_motion(double x0, double x1, double t1, ArcEnd end, Crossing crossing) {
+    const double x_hi = std::max(x0, x1);
+    if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(x_mu);
     for (std::size_t k = 0; k < targets.size(); ++k) {
       double& t = run.time_to_fraction[k];
-      if (a.x1 < targets[k]) {
+      if (x1 < targets[k]) {
         t = kNaN;  // back below (a slide back): not arrived yet
       } else if (std::isnan(t)) {
-        t = crossing(a, targets[k]);
+        t = crossing(targets[k]);
       }
     }
-    if (a.end == ArcEnd::velocity_zero) {
-      last_stop_time = a.t1;
-      if (a.x1 >= x_mu) run.stick_positions.push_back(a.x1);
+    if (end == ArcEnd::velocity_zero) {
+      last_stop_time = t1;
+      if (x1 >= x_mu) run.stick_positions.push_back(x1);
     }
+  }
+
+  void on_arc(const Arc& a) override {
+    on_motion(a.x0, a.x1, a.t1, a.end, [&](double X) { return crossing(a, X); });
+  }
+
+  void on_crossing(double position, double time, int direction) override {
+    if (direction > 0) crossed.emplace_back(position, time);
+  }
+  void on_interval(const MotionInterval& i) override {
+    on_motion(i.x0, i.x1, i.t1, i.end, [&](double X) {
+      if (i.x0 >= X) return i.t0;
+      for (const auto& [position, time] : crossed)
+        if (position == X) return time;
+      return i.t1;  // reached at the interval's end (x1 == X to rounding)
+    });
+    crossed.clear();
   }
 };
 
@@ -88,10 +120,6 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
                          const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& o) {
   const PiecewisePolynomialProfile& pwc = require_exact_profile(profile, "a stopping run");
-  if (law.velocity_dependent())  // the stop watch times crossings on closed-form arcs
-    throw InvalidParameter("law", law.describe(),
-                           "a stopping run needs a law without Stribeck or viscous terms (its "
-                           "crossing times come from closed-form arcs); simulate the run instead");
   if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");
   for (double p : o.fractions)
     if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");
@@ -134,17 +162,24 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
         break;
       }
 
-  const PeriodMap period_map(profile, friction, law);
+  PeriodMapOptions map_options;
+  map_options.integrator = o.integrator;
+  const PeriodMap period_map(profile, friction, law, map_options);
   PeriodMap::Run run = period_map.start(start);
   StopWatch watch(x_mu, targets, r);
   watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
   const double P_segments = pwc.period();
-  long long n_first = run.exact_state().period_index;
+  const bool integrated = period_map.method() == Method::integrator;
+  const std::vector<double> watched = integrated ? watch.watch() : std::vector<double>{};
+  long long n_first = integrated ? static_cast<long long>(std::floor(start.t / P_segments))
+                                 : run.exact_state().period_index;
   if (static_cast<double>(n_first) * P_segments + phase <= start.t) ++n_first;
   ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};
   long long look = n_first;
   auto advance_to_look = [&] {  // the next look (phase t1)
-    run.advance_to(static_cast<double>(look++) * P_segments + phase, &watch);
+    const double t_look = static_cast<double>(look++) * P_segments + phase;
+    if (integrated) run.advance_to(t_look, static_cast<IntervalSink*>(&watch), watched);
+    else run.advance_to(t_look, static_cast<ArcSink*>(&watch));
   };
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
     advance_to_look();

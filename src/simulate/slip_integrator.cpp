@@ -1,5 +1,6 @@
 #include "selfalign/simulate/slip_integrator.hpp"
 
+#include <algorithm>
 #include <array>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <boost/numeric/odeint/stepper/generation.hpp>
@@ -23,6 +24,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kSamplesPerStep = 4;         // sign checks of every step's dense output
 constexpr double kMaxStepPerPeriod = 1.0 / 32;  // longest step, in table periods
 constexpr long long kMaxIntervals = 2'000'000'000;  // a guard against a stalled run
+constexpr std::size_t kNoWatch = static_cast<std::size_t>(-1);
 
 double time_resolution(double t) {
   return 16 * std::numeric_limits<double>::epsilon() * (std::abs(t) + 1e-300);
@@ -146,7 +148,10 @@ bool integrable_profile(const TableProfile& profile) noexcept {
 }
 
 std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
-                               IntervalSink* sink, IntegratorStatistics* stats) {
+                               IntervalSink* sink, IntegratorStatistics* stats,
+                               std::span<const double> watch) {
+  if (!std::is_sorted(watch.begin(), watch.end()))
+    throw InvalidParameter("watch", "unsorted", "watched positions must be sorted ascending");
   if (!integrable_profile(setup.profile))
     throw InvalidParameter("profile", setup.profile.kind(),
                            "the slip integrator needs a piecewise-polynomial or smooth table "
@@ -203,6 +208,19 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
     long long evaluations = 0;
     const SlipRhs rhs{sigma, &piece, &law, &forcing, &evaluations};
     dense.initialize(State{x, v}, t, std::min(dt, window_end - t));
+    // The first watched position strictly ahead of x in the slip direction.
+    std::size_t watch_index = kNoWatch;
+    if (sigma > 0) {
+      const auto it = std::upper_bound(watch.begin(), watch.end(), x);
+      if (it != watch.end()) watch_index = static_cast<std::size_t>(it - watch.begin());
+    } else {
+      const auto it = std::lower_bound(watch.begin(), watch.end(), x);
+      if (it != watch.begin()) watch_index = static_cast<std::size_t>(it - watch.begin()) - 1;
+    }
+    auto next_watch = [&](std::size_t i) {
+      if (sigma > 0) return i + 1 < watch.size() ? i + 1 : kNoWatch;
+      return i > 0 ? i - 1 : kNoWatch;
+    };
     bool had_positive = sigma * v > 0;  // x' = 0 counts only after x' has left 0
     double prev_t = t;
     long long window_steps = 0;
@@ -228,8 +246,24 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
           end = tv <= tx ? ArcEnd::velocity_zero : ArcEnd::friction_boundary;
           dense.calc_state(t1, s1);
           done = true;
-          break;
         }
+        // Watched positions passed on (prev_t, min(ts, t1)]: reported, the slip goes on. Each
+        // one ahead of x(prev_t) (the earlier ones were reported at earlier samples).
+        for (const double upto = done ? t1 : ts; sink && watch_index != kNoWatch;) {
+          const double W = watch[watch_index];
+          State z;
+          dense.calc_state(upto, z);
+          if (done && end == ArcEnd::friction_boundary) z[0] = X;
+          if (sigma * (z[0] - W) < 0) break;
+          auto position = [&](double tt) {
+            State q2;
+            dense.calc_state(tt, q2);
+            return tt == upto ? sigma * (z[0] - W) : sigma * (q2[0] - W);
+          };
+          sink->on_crossing(W, refine(position, prev_t, upto), sigma);
+          watch_index = next_watch(watch_index);
+        }
+        if (done) break;
         had_positive = had_positive || g > 0;
         prev_t = ts;
       }

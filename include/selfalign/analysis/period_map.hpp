@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,10 @@ class PeriodMap {
     /// Advances to t_end >= the current time; every arc goes to sink (exact only; the
     /// time-stepping run takes whole steps, ending at the step nearest t_end).
     const ObjectState& advance_to(double t_end, ArcSink* sink = nullptr);
+    /// The same for the integrator's map: every stick and slip interval goes to sink, and
+    /// every crossing of a position in `watch` (sorted) to sink->on_crossing (integrator only;
+    /// throws for other methods).
+    const ObjectState& advance_to(double t_end, IntervalSink* sink, std::span<const double> watch);
     const ObjectState& state() const noexcept;
     /// The exact solver's state (segment and period index; exact only).
     const ExactState& exact_state() const noexcept { return exact_; }

@@ -15,6 +15,7 @@
 
 #include <vector>
 
+#include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
@@ -42,6 +43,9 @@ struct StoppingOptions {
   /// Fractions p for which the time to reach x_mu + p (x_stick,min - x_mu) for good is
   /// reported.
   std::vector<double> fractions{0.99, 0.999};
+  /// Slip integrator tolerances (a Stribeck or viscous law); its events then time the entry
+  /// and the targets (docs/slip-integrator.md).
+  IntegratorOptions integrator{};
 };
 
 struct StoppingRun {
@@ -76,8 +80,8 @@ StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& f
 /// high enough (stick_position_min of the pieces); the accumulation proof (eqs. 59, 60) is the
 /// paper's and applies to the two-region table with a three-phase profile under the paper's
 /// law only (elsewhere an accumulating run ends not_stopped). Throws InvalidParameter for a
-/// level that is not piecewise affine, and for a velocity-dependent law (Stribeck, viscous:
-/// not yet; its crossing times would need the integrator to locate them as events).
+/// level that is not piecewise affine. A velocity-dependent law (Stribeck, viscous) runs on the
+/// slip integrator, which locates the entry and the targets' crossings as events.
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& options = {});

@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 
 #include "selfalign/friction/friction_law.hpp"
@@ -74,6 +75,11 @@ class IntervalSink {
  public:
   virtual ~IntervalSink() = default;
   virtual void on_interval(const MotionInterval& interval) = 0;
+  /// A watched position crossed at `time` during the slip in `direction` (+1, -1) that the
+  /// next on_interval call closes; located on the dense output like the other events.
+  virtual void on_crossing(double position, double time, int direction) {
+    (void)position, (void)time, (void)direction;
+  }
 };
 
 /// What the integrator solves: a profile (piecewise polynomial or smooth; borrowed), a
@@ -90,9 +96,12 @@ struct IntegratorSetup {
 bool integrable_profile(const TableProfile& profile) noexcept;
 
 /// Advances `state` to t_end (>= state.t), calling sink (if any) for every interval and adding
-/// to stats (if any). Returns the number of intervals. Throws InvalidParameter for a profile
-/// that is neither piecewise polynomial nor smooth, bad options, a non-finite state or t_end.
+/// to stats (if any). Returns the number of intervals. With a sink, every crossing of a
+/// position in `watch` (sorted ascending) by a slip is reported to sink->on_crossing (stopping
+/// runs time their targets so). Throws InvalidParameter for a profile that is neither piecewise
+/// polynomial nor smooth, bad options, a non-finite state or t_end, an unsorted watch.
 std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
-                               IntervalSink* sink = nullptr, IntegratorStatistics* stats = nullptr);
+                               IntervalSink* sink = nullptr, IntegratorStatistics* stats = nullptr,
+                               std::span<const double> watch = {});
 
 }  // namespace selfalign
