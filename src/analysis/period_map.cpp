@@ -85,9 +85,10 @@ PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
 }
 
 // Exact where a closed form exists: piecewise-polynomial acceleration on a piecewise-affine
-// level, or a smooth motion on a piecewise-constant level; a velocity-dependent law by the
-// slip integrator (piecewise-polynomial or smooth profiles on piecewise-affine levels);
-// time-stepping otherwise.
+// level, or a smooth motion on a piecewise-constant level; the slip integrator for a
+// velocity-dependent law (piecewise-polynomial or smooth profiles on piecewise-affine levels)
+// and for a smooth motion on a level with slopes (a transition region); time-stepping
+// otherwise.
 void PeriodMap::choose_solver() {
   const PiecewisePolynomialProfile* pwp = profile_.piecewise_polynomial();
   const SmoothMotion* motion = profile_.smooth();
@@ -105,6 +106,10 @@ void PeriodMap::choose_solver() {
     exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
   } else if (motion && affine && piecewise_constant_level(*affine)) {
     smooth_ = std::make_unique<SmoothSetup>(SmoothSetup{*motion, *affine, law_});
+  } else if (motion && affine) {  // a smooth motion on sloped pieces: no closed form here
+    validate(options_.integrator);
+    integrator_ = std::make_unique<IntegratorSetup>(
+        IntegratorSetup{profile_, *affine, law_, options_.integrator});
   } else {
     if (options_.steps_per_period < 1)
       throw InvalidParameter("steps_per_period", options_.steps_per_period, "must be >= 1");

@@ -143,7 +143,12 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   std::unique_ptr<Runner> runner;
   double grid = o.output_step;
   Method method = o.method;
-  if (method == Method::exact && law.velocity_dependent()) method = Method::integrator;
+  const PiecewiseAffineFriction* affine = friction.piecewise_affine();
+  // No closed form: a speed-dependent law, or a smooth motion on a level with slopes.
+  if (method == Method::exact &&
+      (law.velocity_dependent() || (!profile.piecewise_polynomial() && profile.smooth() &&
+                                    affine && !piecewise_constant_level(*affine))))
+    method = Method::integrator;
   if (method == Method::integrator) {
     validate(o.integrator);
     const PiecewiseAffineFriction* f = friction.piecewise_affine();

@@ -18,8 +18,8 @@
 ///   - friction-level boundaries: x is monotone while slipping, so the first step that passes a
 ///     boundary brackets its only crossing, found by safeguarded Newton steps.
 /// Position-dependent levels with slopes (the transition region) are not taken here (their
-/// forced arcs are not closed-form for a general motion): PeriodMap and simulate() use
-/// time-stepping for them.
+/// forced arcs are not closed-form for a general motion): PeriodMap and simulate() use the
+/// slip integrator for them (slip_integrator.hpp).
 
 #include <cstddef>
 
