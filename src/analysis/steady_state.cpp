@@ -38,8 +38,19 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   if (r.method == Method::integrator)
     tol = std::max(tol, 10 * map.integrator_options().relative_tolerance);
   const IntegratorStatistics work_before = map.integrator_statistics();
-  // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0.
-  auto period_map = [&](double v, MotionCensus* census) { return map(0, v, nullptr, census); };
+  // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0. Every period
+  // keeps its census and displacement: the best iterate's are the result's (no extra period).
+  struct Period {
+    double v, g, displacement;
+    MotionCensus census;
+  };
+  auto evaluate = [&](double v) {
+    Period p{v, 0.0, 0.0, {}};
+    const ObjectState end = map(0, v, nullptr, &p.census);
+    p.g = end.xd - v;
+    p.displacement = end.x;
+    return p;
+  };
 
   // Secant iteration on g(v) = P(v) - v, started from rest: plain iterates first (they reach
   // the stick-determined fixed point exactly), then secant steps (affine slip-slip maps).
@@ -76,7 +87,8 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     if (std::isfinite(slope) && slope < 0) return r / std::min(-slope, 1.0);
     return g == 0 ? r : kInf;
   };
-  double v_prev = 0, g_prev = period_map(0, nullptr).xd - 0;
+  Period best = evaluate(0.0);
+  double v_prev = 0, g_prev = best.g;
   r.periods = 1;
   double slope = std::numeric_limits<double>::quiet_NaN();
   double best_v = 0, best_g = g_prev;
@@ -85,7 +97,8 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   bool secant_step = false;
   int stalls = 0;
   while (!done && r.periods < o.max_periods) {
-    const double g = period_map(v, nullptr).xd - v;
+    Period current = evaluate(v);
+    const double g = current.g;
     ++r.periods;
     if (std::abs(g - g_prev) > kSlopeResolution * (rounding(v) + rounding(v_prev)))
       slope = (g - g_prev) / (v - v_prev);
@@ -94,6 +107,7 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     if (std::abs(g) <= std::abs(best_g)) {
       best_v = v;
       best_g = g;
+      best = std::move(current);
     }
     if (g == 0 || error_estimate(best_v, best_g, slope) <= tol * scale(best_v) ||
         (stalls >= kStallsToStop && std::abs(best_g) <= kRoundingLevel * scale(best_v))) {
@@ -118,12 +132,13 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   done = done && std::abs(v) <= 2 * V;
   r.converged = done;
   r.x_dot_0s = v;
-  MotionCensus census;
-  const ObjectState end = period_map(v, &census);
-  r.displacement = end.x;
-  r.motion_case = census.motion_case();
-  r.pattern = census.pattern();
-  ++r.periods;
+  if (!(v == best.v)) {  // not converged: the last iterate's period, simulated once more
+    best = evaluate(v);
+    ++r.periods;
+  }
+  r.displacement = best.displacement;
+  r.motion_case = best.census.motion_case();
+  r.pattern = best.census.pattern();
   r.v_bar = r.displacement / P;  // eq. (10)
   r.f = objective_f(r.v_bar);    // eq. (11)
   r.integrator = map.integrator_statistics();
