@@ -115,3 +115,46 @@ TEST(CliLaw, DesignUnderAJerkLimitRecommendsARampedProfile) {
   EXPECT_LE(peak, 2000.0 * (1 + 1e-6));
   EXPECT_GE(peak, 2000.0 * 0.99);
 }
+
+// Stribeck and viscous laws: bad values name the key and its range; a good one runs the slip
+// integrator, and every report says so and carries the integrator's statistics.
+TEST(CliLaw, StribeckAndViscousBadValuesAreRefused) {
+  CliSandbox box;
+  expect_clean_failure(box, box.run({"simulate", "--stribeck-velocity", "0", "--out", "t.csv"}),
+                       {"stribeck_velocity = 0", "must be > 0"});
+  expect_clean_failure(box, box.run({"steady", "--stribeck-velocity", "0.01",
+                                     "--stribeck-exponent", "-1", "--out", "s.json"}),
+                       {"stribeck_exponent = -1", "(0, 100]"});
+  expect_clean_failure(box, box.run({"floquet", "--viscous", "-0.5", "--out", "f.json"}),
+                       {"viscous = -0.5", "[0, 1e50]"});
+  expect_clean_failure(box, box.run({"simulate", "--relative-tolerance", "1", "--out", "t.csv"}),
+                       {"relative_tolerance = 1", "(0, 1)"});
+  expect_clean_failure(box, box.run({"stop", "--absolute-tolerance", "0", "--out", "t.csv"}),
+                       {"absolute_tolerance = 0", "(0, 1)"});
+  expect_clean_failure(box, box.run({"optimize", "--family", "fourier", "--order", "2.5"}),
+                       {"--order", "not a whole number", "[1, 100]"});
+}
+
+TEST(CliLaw, StribeckRunsReportTheIntegrator) {
+  CliSandbox box;
+  const std::vector<std::string> law = {"--mu-static", "0.39", "--stribeck-velocity", "0.01",
+                                        "--viscous", "0.1", "--json"};
+  for (const std::string command : {"steady", "floquet"}) {
+    std::vector<std::string> args{command, "--friction", "uniform"};
+    args.insert(args.end(), law.begin(), law.end());
+    const auto r = box.run(args);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["method"], "integrator") << command;
+    EXPECT_GT(j["integrator"]["steps"].get<long long>(), 0) << command;
+    EXPECT_EQ(j["integrator"]["relative_tolerance"], 1e-10) << command;
+    EXPECT_EQ(j["law"]["stribeck_velocity"], 0.01) << command;
+  }
+  const auto r = box.run({"simulate", "--friction", "uniform", "--mu-static", "0.39",
+                          "--stribeck-velocity", "0.01", "--summary", "-"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["method"], "integrator");
+  EXPECT_GT(j["intervals"].get<long long>(), 0);
+  EXPECT_TRUE(j["law"]["viscous"].is_null());
+}

@@ -58,6 +58,20 @@ void guard_values(CLI::App& app) {
     option->check(kNotEmpty);
     option->check(kRepresentable);
     if (option->get_type_name() == "FILE") option->check(kNotAFlag);
+    if (option->get_type_name() == "INT" || option->get_type_name() == "UINT") {
+      // CLI11's own refusal ("Could not convert") names no range: name it from the help text.
+      const std::string help = option->get_description();
+      option->check(CLI::Validator(
+          [help](std::string& value) {
+            long long n = 0;
+            const char* begin = value.data() + (!value.empty() && value[0] == '+');
+            const auto [end, ec] = std::from_chars(begin, value.data() + value.size(), n);
+            return ec == std::errc() && end == value.data() + value.size()
+                       ? std::string()
+                       : "'" + value + "' is not a whole number (" + help + ")";
+          },
+          "", "WholeNumber"));
+    }
   }
   for (CLI::App* sub : app.get_subcommands({})) guard_values(*sub);
 }
