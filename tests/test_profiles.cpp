@@ -1,9 +1,11 @@
 // Tests for the other profile families: piecewise-constant sequences, Fourier series, samples.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -139,4 +141,44 @@ TEST(FourierProfile, RefusesOrdersBeyondAThousandAndOverflowingPeriods) {
   } catch (const InvalidParameter& e) {
     EXPECT_EQ(e.name(), "period");
   }
+}
+
+// Issue 11: with_extrema takes the extrema the caller already has instead of searching them.
+// y = sin(wt) + 0.5 sin(2wt) has min/max -+3 sqrt(3)/4 (TwoHarmonicsExtremaAreBoundedNotSampled)
+// and |y''| = w^2 |sin x + 2 sin 2x|, largest at cos x = (-1 + sqrt(129))/16 (d/dx = 0).
+TEST(FourierProfile, WithExtremaTakesTheGivenExtremaAndValidatesLikeTheConstructor) {
+  const double w = 2 * std::numbers::pi, y_max = 0.75 * std::sqrt(3.0);
+  const double x = std::acos((-1 + std::sqrt(129.0)) / 16);
+  const double peak = w * w * (std::sin(x) + 2 * std::sin(2 * x));
+  const FourierProfile searched(1.0, {}, {1.0, 0.5});
+  const FourierProfile given = FourierProfile::with_extrema(
+      1.0, {}, {1.0, 0.5}, {.y_min = -y_max, .y_max = y_max, .peak_acceleration = peak});
+  EXPECT_EQ(given.order(), 2);
+  EXPECT_DOUBLE_EQ(given.offset(), y_max);
+  EXPECT_DOUBLE_EQ(given.stroke(), 2 * y_max);
+  EXPECT_DOUBLE_EQ(given.peak_acceleration(), peak);
+  EXPECT_NEAR(searched.peak_acceleration(), peak, 1e-12 * peak);  // the by-hand peak is right
+  EXPECT_DOUBLE_EQ(given.jerk_bound(), searched.jerk_bound());
+  EXPECT_DOUBLE_EQ(given.snap_bound(), searched.snap_bound());
+  for (double t : {0.0, 0.1, 0.37, 0.9}) {
+    const std::array<double, 4> a = given.derivatives(t), b = searched.derivatives(t);
+    EXPECT_NEAR(a[0], b[0], 1e-13) << t;  // offsets differ by the constructor's search only
+    for (std::size_t d = 1; d < 4; ++d) EXPECT_EQ(a[d], b[d]) << t;
+  }
+  const FourierProfile::KnownExtrema ok{.y_min = -1, .y_max = 1, .peak_acceleration = 1};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(FourierProfile::with_extrema(1.0, {0.0}, {0.0}, ok), InvalidParameter);
+  EXPECT_THROW(FourierProfile::with_extrema(1.0, {nan}, {}, ok), InvalidParameter);
+  EXPECT_THROW(FourierProfile::with_extrema(1.0, std::vector<double>(1001, 1e-6), {}, ok),
+               InvalidParameter);
+  EXPECT_THROW(FourierProfile::with_extrema(0.0, {1.0}, {}, ok), InvalidParameter);
+  EXPECT_THROW(FourierProfile::with_extrema(1.0, {1.0}, {}, {.y_min = 1, .y_max = 1,
+                                                             .peak_acceleration = 1}),
+               InvalidParameter);
+  EXPECT_THROW(FourierProfile::with_extrema(1.0, {1.0}, {}, {.y_min = nan, .y_max = 1,
+                                                             .peak_acceleration = 1}),
+               InvalidParameter);
+  EXPECT_THROW(FourierProfile::with_extrema(1.0, {1.0}, {}, {.y_min = -1, .y_max = 1,
+                                                             .peak_acceleration = -1}),
+               InvalidParameter);
 }

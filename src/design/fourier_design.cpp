@@ -1,6 +1,7 @@
 #include "selfalign/design/fourier_design.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -19,6 +20,19 @@ namespace {
 
 constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
 constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimiser
+constexpr int kNewtonIterations = 8;       // cap of the Newton refinement of one extremum
+constexpr int kMaxDerivative = 5;          // tabulated powers (k w)^p: p = 0..5
+
+// The q-th derivative of a cos(theta) + b sin(theta) with respect to theta (q quarter turns),
+// from c = cos(theta), s = sin(theta).
+double quarter_turns(double a, double b, double c, double s, int q) {
+  switch (q % 4) {
+    case 0: return a * c + b * s;
+    case 1: return -a * s + b * c;
+    case 2: return -a * c - b * s;
+    default: return a * s - b * c;
+  }
+}
 
 // Fast evaluation of a Fourier design x = (A_1..A_N, B_1..B_N) (unscaled): trigonometric
 // tables on the extrema grid, extrema refined by Newton on the next derivative from every
@@ -28,23 +42,36 @@ class FourierEvaluator {
   FourierEvaluator(const ActuatorLimits& l, int order, const FrictionLaw& law)
       : l_(l), law_(law), n_(order), w_(2 * std::numbers::pi / l.period) {
     table(kSamplesPerHarmonic * n_, grid_cos_, grid_sin_);
+    powers_.resize(static_cast<std::size_t>((kMaxDerivative + 1) * n_));
+    for (int p = 0; p <= kMaxDerivative; ++p)
+      for (int k = 1; k <= n_; ++k) powers_[index(p, k)] = std::pow(k * w_, p);
   }
 
-  // d-th derivative of y at t for coefficients x (unscaled).
+  // d-th derivative of y at t for coefficients x (unscaled), d <= kMaxDerivative.
   double derivative(std::span<const double> x, int d, double t) const {
-    double s = 0;
-    const double shift = d * std::numbers::pi / 2;
+    double v = 0;
     for (int k = 1; k <= n_; ++k) {
-      const double kw = k * w_, ph = kw * t + shift;
-      s += std::pow(kw, d) * (x[k - 1] * std::cos(ph) + x[n_ + k - 1] * std::sin(ph));
+      const double ph = k * w_ * t;
+      v += power(d, k) * quarter_turns(x[k - 1], x[n_ + k - 1], std::cos(ph), std::sin(ph), d);
     }
-    return s;
+    return v;
+  }
+
+  // Derivatives d, d + 1 and d + 2 of y at t (d + 2 <= kMaxDerivative), in one pass.
+  std::array<double, 3> jet(std::span<const double> x, int d, double t) const {
+    std::array<double, 3> g{};
+    for (int k = 1; k <= n_; ++k) {
+      const double ph = k * w_ * t, c = std::cos(ph), s = std::sin(ph);
+      const double a = x[k - 1], b = x[n_ + k - 1];
+      for (int q = 0; q < 3; ++q) g[q] += power(d + q, k) * quarter_turns(a, b, c, s, d + q);
+    }
+    return g;
   }
 
   // min and max of the d-th derivative over the period (d = 0, 1, 2).
   detail::Extrema extrema(std::span<const double> x, int d) const {
     const int s = kSamplesPerHarmonic * n_;
-    sampled(x, d, grid_cos_, grid_sin_, s, buf_);
+    sampled(x, d, s, buf_);
     const auto [lo_it, hi_it] = std::minmax_element(buf_.begin(), buf_.end());
     detail::Extrema e{*lo_it, *hi_it};
     const double margin = 0.05 * (e.max - e.min), h = l_.period / s;
@@ -54,16 +81,7 @@ class FourierEvaluator {
       const double next = buf_[static_cast<std::size_t>((j + 1) % s)];
       const bool is_max = v >= prev && v >= next && v >= e.max - margin;
       const bool is_min = v <= prev && v <= next && v <= e.min + margin;
-      if (!is_max && !is_min) continue;
-      double t = j * h;  // Newton on the next derivative, kept within the neighbouring cells
-      for (int it = 0; it < 8; ++it) {
-        const double g1 = derivative(x, d + 1, t), g2 = derivative(x, d + 2, t);
-        if (g2 == 0) break;
-        t = std::clamp(t - g1 / g2, (j - 1) * h, (j + 1) * h);
-      }
-      const double r = derivative(x, d, t);
-      e.max = std::max(e.max, r);
-      e.min = std::min(e.min, r);
+      if (is_max || is_min) refine(x, d, j * h, h, e);
     }
     return e;
   }
@@ -93,6 +111,25 @@ class FourierEvaluator {
   }
 
  private:
+  std::size_t index(int p, int k) const { return static_cast<std::size_t>(p * n_ + k - 1); }
+  double power(int p, int k) const { return powers_[index(p, k)]; }  // (k w)^p
+
+  // Newton on the (d+1)-th derivative from the grid point t0, kept within the neighbouring
+  // cells [t0 - h, t0 + h]; every iterate's value of the d-th derivative widens e (each is a
+  // value the function takes). Stops when the step falls below 1e-15 Δt (converged).
+  void refine(std::span<const double> x, int d, double t0, double h, detail::Extrema& e) const {
+    double t = t0;
+    for (int it = 0; it < kNewtonIterations; ++it) {
+      const std::array<double, 3> g = jet(x, d, t);
+      e.max = std::max(e.max, g[0]);
+      e.min = std::min(e.min, g[0]);
+      if (g[2] == 0) break;
+      const double next = std::clamp(t - g[1] / g[2], t0 - h, t0 + h);
+      if (std::abs(next - t) <= 1e-15 * l_.period) break;
+      t = next;
+    }
+  }
+
   // The series scale * x with the extrema already found (no second search: with_extrema).
   FourierProfile scaled_profile(std::span<const double> x, double scale,
                                 const detail::Extrema& ey, double peak_acceleration) const {
@@ -119,26 +156,25 @@ class FourierEvaluator {
       }
   }
 
-  // d-th derivative on a tabulated grid of s points.
-  void sampled(std::span<const double> x, int d, const std::vector<double>& c,
-               const std::vector<double>& sn, int s, std::vector<double>& out) const {
-    out.assign(static_cast<std::size_t>(s), 0.0);
-    for (int j = 0; j < s; ++j) {
+  // d-th derivative on the extrema grid of s points: per harmonic, (k w)^d times the
+  // coefficients rotated by d quarter turns, then one dot product per grid point.
+  void sampled(std::span<const double> x, int d, int s, std::vector<double>& out) const {
+    const auto n = static_cast<std::size_t>(n_);
+    rot_cos_.resize(n);
+    rot_sin_.resize(n);
+    for (int k = 1; k <= n_; ++k) {
+      const double a = x[k - 1], b = x[n_ + k - 1], p = power(d, k);
+      // quarter_turns(a, b, c, s, d) = rot_cos c + rot_sin s
+      rot_cos_[k - 1] = p * quarter_turns(a, b, 1, 0, d);
+      rot_sin_[k - 1] = p * quarter_turns(a, b, 0, 1, d);
+    }
+    out.resize(static_cast<std::size_t>(s));
+    for (std::size_t j = 0; j < out.size(); ++j) {
+      const double* c = grid_cos_.data() + j * n;
+      const double* sn = grid_sin_.data() + j * n;
       double v = 0;
-      for (int k = 1; k <= n_; ++k) {
-        const double kw = std::pow(k * w_, d);
-        const double a = x[k - 1], b = x[n_ + k - 1];
-        const double cc = c[static_cast<std::size_t>(j * n_ + k - 1)];
-        const double ss = sn[static_cast<std::size_t>(j * n_ + k - 1)];
-        // derivative d of a cos + b sin: rotate by d quarter turns
-        switch (d % 4) {
-          case 0: v += kw * (a * cc + b * ss); break;
-          case 1: v += kw * (-a * ss + b * cc); break;
-          case 2: v += kw * (-a * cc - b * ss); break;
-          default: v += kw * (a * ss - b * cc); break;
-        }
-      }
-      out[static_cast<std::size_t>(j)] = v;
+      for (std::size_t k = 0; k < n; ++k) v += rot_cos_[k] * c[k] + rot_sin_[k] * sn[k];
+      out[j] = v;
     }
   }
 
@@ -146,8 +182,8 @@ class FourierEvaluator {
   FrictionLaw law_;
   int n_;
   double w_;
-  std::vector<double> grid_cos_, grid_sin_;
-  mutable std::vector<double> buf_;
+  std::vector<double> grid_cos_, grid_sin_, powers_;
+  mutable std::vector<double> buf_, rot_cos_, rot_sin_;
 };
 
 // How the steady states were computed, for the result message.

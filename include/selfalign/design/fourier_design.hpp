@@ -4,8 +4,9 @@
 ///
 /// Design variables: the 2N coefficients (A_1..A_N, B_1..B_N) in [-1, 1]; they are rescaled by
 /// a common factor so that the stroke is Δy exactly (the stroke is linear in the scale).
-/// Constraints over the whole period, from the profile's exact extrema (dense sampling of the
-/// derivative, each sign change refined by bisection to machine precision):
+/// Constraints over the whole period, from the extrema of y, y' and y'' (a grid of 32 N points
+/// per period, every near-extreme grid point refined by Newton on the next derivative; the
+/// optimum is checked again with the profile's bisection-refined extrema):
 ///   max|y'| <= y'_max,  max|y''| <= y''_max.
 ///
 /// Objective: f of the exact steady state of the scaled series itself. FourierProfile is a
