@@ -69,8 +69,10 @@ class PeriodMap {
   /// motions on piecewise-constant levels).
   bool has_arcs() const noexcept { return exact_ || smooth_; }
   double period() const noexcept { return profile_.period(); }
-  /// Time-stepping step h [-] (0 when exact).
-  double step() const noexcept { return has_arcs() ? 0.0 : stepping_.step; }
+  /// Time-stepping step h [-] (0 for the exact solvers and the integrator).
+  double step() const noexcept {
+    return method() == Method::time_stepping ? stepping_.step : 0.0;
+  }
   const TimeSteppingOptions& stepping() const noexcept { return stepping_; }
 
   /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only)
