@@ -595,6 +595,7 @@ class SteadyStateOptions:
     theta: float
     stepping_tol: float
     integrator: IntegratorOptions
+    initial_velocity: float
     def __init__(
         self,
         *,
@@ -604,6 +605,7 @@ class SteadyStateOptions:
         theta: float = 0.5,
         stepping_tol: float = 0.0,
         integrator: IntegratorOptions = ...,
+        initial_velocity: float = 0.0,
     ) -> None: ...
 
 class SteadyState:

@@ -46,9 +46,11 @@ void bind_steady_options(py::module_& m) {
   const SteadyStateOptions d;
   py::class_<SteadyStateOptions>(m, "SteadyStateOptions", "Options of steady_state().")
       .def(py::init([](int max_periods, double velocity_tol, int steps_per_period, double theta,
-                       double stepping_tol, const IntegratorOptions& integrator) {
+                       double stepping_tol, const IntegratorOptions& integrator,
+                       double initial_velocity) {
              SteadyStateOptions o;
              o.integrator = integrator;
+             o.initial_velocity = initial_velocity;
              o.max_periods = max_periods;
              o.velocity_tol = velocity_tol;
              o.steps_per_period = steps_per_period;
@@ -59,7 +61,11 @@ void bind_steady_options(py::module_& m) {
            py::kw_only(), py::arg("max_periods") = d.max_periods,
            py::arg("velocity_tol") = d.velocity_tol,
            py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
-           py::arg("stepping_tol") = d.stepping_tol, py::arg("integrator") = d.integrator)
+           py::arg("stepping_tol") = d.stepping_tol, py::arg("integrator") = d.integrator,
+           py::arg("initial_velocity") = d.initial_velocity)
+      .def_readwrite("initial_velocity", &SteadyStateOptions::initial_velocity,
+                     "x'_0 of the search's first period [-] (0: from rest); a nearby profile's "
+                     "x'_0s saves periods")
       .def_readwrite("integrator", &SteadyStateOptions::integrator,
                      "IntegratorOptions (speed-dependent laws); velocity_tol is then at least 10 "
                      "relative_tolerance")

@@ -75,6 +75,7 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   constexpr double kRoundingLevel = 1e-9;  // |g| / (1 + |v|): far above rounding, far below
                                            // any residual a secant step leaves off the floor
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  require_moderate("initial_velocity", o.initial_velocity);
   const double V = (profile.peak_acceleration() + 1) * P;
   auto scale = [&](double v) { return 1 + std::min(std::abs(v), V); };
   auto rounding = [&](double v) {
@@ -87,19 +88,32 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     if (std::isfinite(slope) && slope < 0) return r / std::min(-slope, 1.0);
     return g == 0 ? r : kInf;
   };
-  Period best = evaluate(0.0);
-  double v_prev = 0, g_prev = best.g;
+  const double v_start = o.initial_velocity;
+  Period best = evaluate(v_start);
+  double v_prev = v_start, g_prev = best.g;
   r.periods = 1;
   double slope = std::numeric_limits<double>::quiet_NaN();
-  double best_v = 0, best_g = g_prev;
+  double best_v = v_start, best_g = g_prev;
   bool done = g_prev == 0;
   double v = v_prev + g_prev;  // plain iterate
   bool secant_step = false;
   int stalls = 0;
+  bool probed = false;
+  constexpr double kProbeStep = 1e-6;  // relative: far above rounding, far below |v|'s scale
+  // The tightest bracket the iterates give (g decreasing through the fixed point: g > 0 below
+  // it, g < 0 above it): secant steps must land inside it, else it is bisected.
+  double above = 0, below = 0;
+  bool have_above = false, have_below = false;
+  auto note_side = [&](double vv, double gg) {
+    if (gg > 0 && (!have_below || vv > below)) below = vv, have_below = true;
+    if (gg < 0 && (!have_above || vv < above)) above = vv, have_above = true;
+  };
+  note_side(v_prev, g_prev);
   while (!done && r.periods < o.max_periods) {
     Period current = evaluate(v);
     const double g = current.g;
     ++r.periods;
+    note_side(v, g);
     if (std::abs(g - g_prev) > kSlopeResolution * (rounding(v) + rounding(v_prev)))
       slope = (g - g_prev) / (v - v_prev);
     const bool stalled = secant_step && !(std::abs(g) <= kStallFactor * std::abs(best_g));
@@ -116,12 +130,27 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     }
     double next = v + g;  // plain iterate
     secant_step = false;
+    // Residuals too close to each other to give a slope (a start near the fixed point, a map
+    // with λ near 1): one probe a resolvable distance towards the fixed point measures it, and
+    // the secant takes over (plain iterates would crawl at rate λ).
+    if (!std::isfinite(slope) && !probed && r.periods >= 3 && g != 0) {
+      next = v + std::copysign(kProbeStep * scale(v), g);
+      probed = true;
+    }
     if (r.periods > 3 && std::isfinite(slope) && slope < -1e-3) {
       const double secant = v - g / slope;
       if (std::abs(secant) <= 2 * V) {
         next = secant;
         secant_step = true;
       }
+    }
+    // A secant step that leaves the bracket, or one that stalled far above the rounding floor
+    // (a kink in g between iterates can trap the secant in a cycle), is replaced by bisection.
+    const bool bracketed = have_above && have_below && below < above;
+    if (bracketed && std::abs(best_g) > kRoundingLevel * scale(best_v) &&
+        (stalls >= 1 || (secant_step && !(next > below && next < above)))) {
+      next = 0.5 * (above + below);
+      secant_step = false;
     }
     v_prev = v;
     g_prev = g;

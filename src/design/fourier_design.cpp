@@ -103,7 +103,12 @@ class FourierEvaluator {
     p.max_velocity = p.scale * std::max(-ev.min, ev.max);
     p.max_acceleration = p.scale * std::max(-ea.min, ea.max);
     const FourierProfile profile = scaled_profile(x, p.scale, ey, p.max_acceleration);
-    const SteadyState st = steady_state(profile, law_);
+    // Warm start: the previous evaluation's x'_0s (the optimiser's finite-difference neighbours
+    // lie 1e-6 apart), about half the periods of a search from rest; the same fixed point.
+    SteadyStateOptions options;
+    options.initial_velocity = warm_;
+    const SteadyState st = steady_state(profile, law_, options);
+    if (st.converged) warm_ = st.x_dot_0s;
     p.method = st.method;
     p.v_bar = trusted_v_bar(st, p.max_velocity, l_.period);
     p.valid = std::isfinite(p.v_bar);
@@ -184,6 +189,7 @@ class FourierEvaluator {
   double w_;
   std::vector<double> grid_cos_, grid_sin_, powers_;
   mutable std::vector<double> buf_, rot_cos_, rot_sin_;
+  mutable double warm_ = 0;  // x'_0s of the last converged evaluation (single-threaded use)
 };
 
 // How the steady states were computed, for the result message.

@@ -40,6 +40,10 @@ struct SteadyStateOptions {
   int steps_per_period = 4000;
   double theta = 0.5;            ///< time-stepping theta
   double stepping_tol = 0;       ///< time-stepping: velocity_tol's role [-]; 0: 10 h
+  /// x'_0 of the search's first period [-] (0: from rest, the default). A nearby profile's
+  /// x'_0s (an optimiser's finite-difference neighbours) saves periods: the search converges to
+  /// the same fixed point where the steady state is unique.
+  double initial_velocity = 0;
   /// Slip integrator (velocity-dependent laws): its tolerances; velocity_tol is then raised to
   /// at least 10 relative_tolerance (the period map is no more accurate than that).
   IntegratorOptions integrator{};
