@@ -230,3 +230,22 @@ TEST(Optimize, CompareFamiliesOneRowEach) {
 }
 
 }  // namespace
+
+// The Fourier optimiser's gradient stencils run on worker threads, each point warm-started
+// from the stencil's centre: the result must not depend on the thread count (bit for bit).
+TEST(Optimize, FourierResultDoesNotDependOnTheThreadCount) {
+  OptimizeOptions o;
+  o.order = 4;
+  o.starts = 2;
+  o.max_evaluations = 200;  // a short run: enough stencils to race if anything were shared
+  o.threads = 1;
+  const OptimizationResult serial = optimize_fourier(kFig6, o, nullptr);
+  o.threads = 2;
+  const OptimizationResult parallel = optimize_fourier(kFig6, o, nullptr);
+  ASSERT_EQ(serial.feasible, parallel.feasible);
+  EXPECT_EQ(serial.parameters, parallel.parameters);
+  EXPECT_EQ(serial.f, parallel.f);
+  EXPECT_EQ(serial.evaluations, parallel.evaluations);
+  o.threads = -1;
+  EXPECT_THROW(optimize_fourier(kFig6, o, nullptr), InvalidParameter);
+}

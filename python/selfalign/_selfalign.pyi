@@ -1070,6 +1070,7 @@ class OptimizeOptions:
     segments: int
     starts: int
     law: FrictionLaw
+    threads: int
     def __init__(
         self,
         *,
@@ -1083,6 +1084,7 @@ class OptimizeOptions:
         fd_step: float = 1e-6,
         progress: Optional[Callable[[int, int], None]] = None,
         law: FrictionLaw = ...,
+        threads: int = 0,
     ) -> None: ...
 
 class OptimizationResult:

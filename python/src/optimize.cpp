@@ -38,8 +38,10 @@ three-phase scan grid and polish count, seed, finite-difference step, and an opt
 progress(done, total) callable.)doc")
       .def(py::init([](int order, int segments, int starts, int max_evaluations, int grid,
                        int polish, unsigned seed, double fd_step,
-                       std::function<void(int, int)> progress, const FrictionLaw& law) {
+                       std::function<void(int, int)> progress, const FrictionLaw& law,
+                       int threads) {
              OptimizeOptions o;
+             o.threads = threads;
              o.order = order, o.segments = segments, o.starts = starts;
              o.max_evaluations = max_evaluations, o.grid = grid, o.polish = polish;
              o.seed = seed, o.fd_step = fd_step, o.law = law;
@@ -50,7 +52,10 @@ progress(done, total) callable.)doc")
            py::arg("starts") = d.starts, py::arg("max_evaluations") = d.max_evaluations,
            py::arg("grid") = d.grid, py::arg("polish") = d.polish, py::arg("seed") = d.seed,
            py::arg("fd_step") = d.fd_step, py::arg("progress") = py::none(),
-           py::arg("law") = FrictionLaw{})
+           py::arg("law") = FrictionLaw{}, py::arg("threads") = d.threads)
+      .def_readwrite("threads", &OptimizeOptions::threads,
+                     "worker threads of the Fourier optimiser's gradient stencils (0: all cores; "
+                     "the result does not depend on it)")
       .def_readwrite("law", &OptimizeOptions::law, "friction law of every steady state")
       .def_readwrite("order", &OptimizeOptions::order, "Fourier order N")
       .def_readwrite("segments", &OptimizeOptions::segments, "K of the piecewise family")

@@ -5,6 +5,9 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #include <string>
 #include <vector>
 
@@ -12,6 +15,7 @@
 #include "selfalign/design/local_search.hpp"
 #include "selfalign/design/piecewise_design.hpp"
 #include "selfalign/design/three_phase_design.hpp"
+#include "selfalign/analysis/sweep.hpp"  // worker_threads
 #include "selfalign/error.hpp"
 
 namespace selfalign {
@@ -71,14 +75,15 @@ class FourierEvaluator {
   // min and max of the d-th derivative over the period (d = 0, 1, 2).
   detail::Extrema extrema(std::span<const double> x, int d) const {
     const int s = kSamplesPerHarmonic * n_;
-    sampled(x, d, s, buf_);
-    const auto [lo_it, hi_it] = std::minmax_element(buf_.begin(), buf_.end());
+    std::vector<double> buf;  // per call: evaluations may run on several threads
+    sampled(x, d, s, buf);
+    const auto [lo_it, hi_it] = std::minmax_element(buf.begin(), buf.end());
     detail::Extrema e{*lo_it, *hi_it};
     const double margin = 0.05 * (e.max - e.min), h = l_.period / s;
     for (int j = 0; j < s; ++j) {
-      const double v = buf_[static_cast<std::size_t>(j)];
-      const double prev = buf_[static_cast<std::size_t>((j + s - 1) % s)];
-      const double next = buf_[static_cast<std::size_t>((j + 1) % s)];
+      const double v = buf[static_cast<std::size_t>(j)];
+      const double prev = buf[static_cast<std::size_t>((j + s - 1) % s)];
+      const double next = buf[static_cast<std::size_t>((j + 1) % s)];
       const bool is_max = v >= prev && v >= next && v >= e.max - margin;
       const bool is_min = v <= prev && v <= next && v <= e.min + margin;
       if (is_max || is_min) refine(x, d, j * h, h, e);
@@ -91,9 +96,14 @@ class FourierEvaluator {
     double scale = 0;  // common factor that makes the stroke Δy
     double v_bar = 0, max_velocity = 0, max_acceleration = 0;
     Method method = Method::exact;  // of the steady state (integrator: velocity-dependent law)
+    double x_dot_0s = 0;            // of a converged steady state: the next evaluation's start
+    bool converged = false;
   };
 
-  Point evaluate(std::span<const double> x) const {
+  // Thread-safe. `warm`: the steady-state search starts there (a neighbour's x'_0s: the
+  // optimiser's finite-difference points lie 1e-6 apart, about half the periods of a start
+  // from rest, and the same fixed point).
+  Point evaluate(std::span<const double> x, double warm) const {
     Point p;
     const detail::Extrema ey = extrema(x, 0);
     if (!(ey.max - ey.min > 1e-300)) return p;
@@ -103,12 +113,11 @@ class FourierEvaluator {
     p.max_velocity = p.scale * std::max(-ev.min, ev.max);
     p.max_acceleration = p.scale * std::max(-ea.min, ea.max);
     const FourierProfile profile = scaled_profile(x, p.scale, ey, p.max_acceleration);
-    // Warm start: the previous evaluation's x'_0s (the optimiser's finite-difference neighbours
-    // lie 1e-6 apart), about half the periods of a search from rest; the same fixed point.
     SteadyStateOptions options;
-    options.initial_velocity = warm_;
+    options.initial_velocity = warm;
     const SteadyState st = steady_state(profile, law_, options);
-    if (st.converged) warm_ = st.x_dot_0s;
+    p.converged = st.converged;
+    p.x_dot_0s = st.x_dot_0s;
     p.method = st.method;
     p.v_bar = trusted_v_bar(st, p.max_velocity, l_.period);
     p.valid = std::isfinite(p.v_bar);
@@ -165,20 +174,19 @@ class FourierEvaluator {
   // coefficients rotated by d quarter turns, then one dot product per grid point.
   void sampled(std::span<const double> x, int d, int s, std::vector<double>& out) const {
     const auto n = static_cast<std::size_t>(n_);
-    rot_cos_.resize(n);
-    rot_sin_.resize(n);
+    std::vector<double> rot_cos(n), rot_sin(n);
     for (int k = 1; k <= n_; ++k) {
       const double a = x[k - 1], b = x[n_ + k - 1], p = power(d, k);
       // quarter_turns(a, b, c, s, d) = rot_cos c + rot_sin s
-      rot_cos_[k - 1] = p * quarter_turns(a, b, 1, 0, d);
-      rot_sin_[k - 1] = p * quarter_turns(a, b, 0, 1, d);
+      rot_cos[k - 1] = p * quarter_turns(a, b, 1, 0, d);
+      rot_sin[k - 1] = p * quarter_turns(a, b, 0, 1, d);
     }
     out.resize(static_cast<std::size_t>(s));
     for (std::size_t j = 0; j < out.size(); ++j) {
       const double* c = grid_cos_.data() + j * n;
       const double* sn = grid_sin_.data() + j * n;
       double v = 0;
-      for (std::size_t k = 0; k < n; ++k) v += rot_cos_[k] * c[k] + rot_sin_[k] * sn[k];
+      for (std::size_t k = 0; k < n; ++k) v += rot_cos[k] * c[k] + rot_sin[k] * sn[k];
       out[j] = v;
     }
   }
@@ -188,8 +196,6 @@ class FourierEvaluator {
   int n_;
   double w_;
   std::vector<double> grid_cos_, grid_sin_, powers_;
-  mutable std::vector<double> buf_, rot_cos_, rot_sin_;
-  mutable double warm_ = 0;  // x'_0s of the last converged evaluation (single-threaded use)
 };
 
 // How the steady states were computed, for the result message.
@@ -275,9 +281,8 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   problem.max_evaluations = o.max_evaluations;
   problem.feasibility_tol = kFeasibilityTol;
   problem.relative_tol = 1e-9;
-  problem.evaluate = [&evaluator, &l](std::span<const double> x) {
+  auto design = [&l](const FourierEvaluator::Point& p) {
     DesignEvaluation e;
-    const FourierEvaluator::Point p = evaluator.evaluate(x);
     if (!p.valid) {
       e.objective = design_objective(-1.0, l.period, l.stroke);
       e.constraints = {1.0, 1.0};
@@ -287,6 +292,24 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
     e.constraints = {p.max_velocity / l.max_velocity - 1.0,
                      p.max_acceleration / l.max_acceleration - 1.0};
     return e;
+  };
+  // Sequential evaluations warm-start from the last converged one; a finite-difference stencil
+  // from its centre (evaluated just before), on every worker thread alike: deterministic.
+  double warm = 0;
+  problem.evaluate = [&](std::span<const double> x) {
+    const FourierEvaluator::Point p = evaluator.evaluate(x, warm);
+    if (p.converged) warm = p.x_dot_0s;
+    return design(p);
+  };
+  tbb::task_arena arena(worker_threads(o.threads));
+  problem.evaluate_many = [&](const std::vector<std::vector<double>>& points,
+                              std::vector<DesignEvaluation>& out) {
+    const double centre = warm;
+    arena.execute([&] {
+      tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
+        out[i] = design(evaluator.evaluate(points[i], centre));
+      });
+    });
   };
 
   std::vector<std::vector<double>> starts;
@@ -321,7 +344,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
     r.message = infeasible_message("order-" + std::to_string(n) + " Fourier profile", best);
     return r;
   }
-  const FourierEvaluator::Point p = evaluator.evaluate(best.x);
+  const FourierEvaluator::Point p = evaluator.evaluate(best.x, 0.0);  // from rest: as reported
   const auto nn = static_cast<long>(n);
   std::vector<double> a(best.x.begin(), best.x.begin() + nn), b(best.x.begin() + nn, best.x.end());
   for (double& v : a) v *= p.scale;

@@ -107,21 +107,33 @@ class Run {
     grad_constraints_.assign(m * n, 0.0);
     double scale = 0;
     for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, std::abs(x[i]));
-    std::vector<double> xp(x, x + n);
+    // The stencil x +- h_i e_i, evaluated together (evaluate_many) or in turn, recorded in order.
+    std::vector<std::vector<double>> points(2 * n, std::vector<double>(x, x + n));
+    std::vector<double> steps(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const double h = p_.fd_step * std::max({std::abs(x[i]), scale, 1e-12});
-      xp[i] = x[i] + h;
-      const DesignEvaluation plus = evaluate(xp.data());
-      record(xp.data(), plus);
-      xp[i] = x[i] - h;
-      const DesignEvaluation minus = evaluate(xp.data());
-      record(xp.data(), minus);
-      xp[i] = x[i];
-      grad_objective_[i] = (plus.objective - minus.objective) / (2 * h);
-      for (std::size_t j = 0; j < m; ++j)
-        grad_constraints_[j * n + i] = (plus.constraints[j] - minus.constraints[j]) / (2 * h);
+      steps[i] = p_.fd_step * std::max({std::abs(x[i]), scale, 1e-12});
+      points[2 * i][i] = x[i] + steps[i];
+      points[2 * i + 1][i] = x[i] - steps[i];
     }
-    evaluate(x);  // restore the cache to the centre
+    std::vector<DesignEvaluation> values(2 * n);
+    if (p_.evaluate_many) {
+      p_.evaluate_many(points, values);
+      evaluations_ += static_cast<int>(2 * n);
+    } else {
+      for (std::size_t k = 0; k < 2 * n; ++k) values[k] = evaluate(points[k].data());
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const DesignEvaluation& plus = values[2 * i];
+      const DesignEvaluation& minus = values[2 * i + 1];
+      record(points[2 * i].data(), plus);
+      record(points[2 * i + 1].data(), minus);
+      grad_objective_[i] = (plus.objective - minus.objective) / (2 * steps[i]);
+      for (std::size_t j = 0; j < m; ++j)
+        grad_constraints_[j * n + i] = (plus.constraints[j] - minus.constraints[j]) / (2 * steps[i]);
+    }
+    cache_x_.assign(x, x + n);  // the cache holds the centre again (no re-evaluation)
+    cache_ = centre;
+    have_cache_ = true;
     have_grad_ = true;
     if (grad_j) std::copy(grad_objective_.begin(), grad_objective_.end(), grad_j);
     if (grad_g) std::copy(grad_constraints_.begin(), grad_constraints_.end(), grad_g);

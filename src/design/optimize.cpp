@@ -42,6 +42,7 @@ void validate(const OptimizeOptions& o) {
   require_in("grid", o.grid, 2, 2000);
   require_in("polish", o.polish, 1, 1000);
   require_positive("fd_step", o.fd_step);
+  if (o.threads < 0) throw InvalidParameter("threads", o.threads, "must be >= 0 (0: all cores)");
 }
 
 std::unique_ptr<TableProfile> rebuild_profile(const OptimizationResult& r) {

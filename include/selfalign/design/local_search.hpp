@@ -28,6 +28,11 @@ struct LocalSearchProblem {
   std::vector<std::string> constraint_names; ///< one per g_j, names the binding limit
   /// Evaluates J and every g_j (constraints.size() == constraint_names.size()).
   std::function<DesignEvaluation(std::span<const double> x)> evaluate;
+  /// Optional: evaluates every point of a finite-difference stencil at once (in parallel, say),
+  /// out[i] for points[i]; each must equal what evaluate would give. Empty: evaluate, in turn.
+  std::function<void(const std::vector<std::vector<double>>& points,
+                     std::vector<DesignEvaluation>& out)>
+      evaluate_many;
   bool gradient_based = false;  ///< LD_SLSQP with FD gradients; else LN_COBYLA
   double fd_step = 1e-6;        ///< relative FD step (gradient-based only)
   double feasibility_tol = 1e-10;  ///< g_j <= tol counts as feasible

@@ -50,6 +50,10 @@ struct OptimizeOptions {
   /// Relative central finite-difference step of the gradient-based (Fourier) optimiser:
   /// h_i = fd_step * max(|x_i|, max_j |x_j|), > 0.
   double fd_step = 1e-6;
+  /// Worker threads of the Fourier optimiser's finite-difference stencils, >= 0 (0: all
+  /// cores). The result does not depend on it: every stencil point is warm-started from its
+  /// centre, whatever thread evaluates it.
+  int threads = 0;
   /// The friction law every steady state is computed under (the paper's by default).
   FrictionLaw law;
   /// Called after each local run as progress(done, total); may be empty.
