@@ -486,6 +486,8 @@ class ArcKind(enum.IntEnum):
     parabolic = 1
     harmonic = 2
     hyperbolic = 3
+    driven = 4
+    driven_affine = 5
 
 class ArcEnd(enum.IntEnum):
     acceleration_switch = 0

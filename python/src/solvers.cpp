@@ -105,12 +105,15 @@ The closed form of one exact arc (an enum.IntEnum).
   stick      = 0  x' = 0, x constant (|y''| <= m(x))
   parabolic  = 1  constant friction: x'' = alpha (eqs. 12-24)
   harmonic   = 2  x'' = -omega^2 (x - x_e) (eqs. 42-47)
-  hyperbolic = 3  x'' = +omega^2 (x - x_e) (backward slip on rising friction))doc",
+  hyperbolic = 3  x'' = +omega^2 (x - x_e) (backward slip on rising friction)
+  driven     = 4  smooth (Fourier) table motion, constant friction: x'' = a - y''(t)
+  driven_affine = 5  Fourier motion on an affine level: x'' = -kappa (x - x_e) - y''(t))doc",
                          {{"stick", ArcKind::stick},
                           {"parabolic", ArcKind::parabolic},
                           {"harmonic", ArcKind::harmonic},
                           {"hyperbolic", ArcKind::hyperbolic},
-                          {"driven", ArcKind::driven}});
+                          {"driven", ArcKind::driven},
+                          {"driven_affine", ArcKind::driven_affine}});
   bind_int_enum<ArcEnd>(m, "ArcEnd", R"doc(
 What ended an arc (an enum.IntEnum).
   acceleration_switch = 0  the table acceleration changed (segment end)

@@ -60,15 +60,14 @@ def test_bad_method_string_is_an_invalid_parameter():
     assert info.value.name == "method"
 
 
-def test_exact_request_on_a_sloped_friction_map_runs_the_integrator_for_a_fourier_profile():
-    # Since issue 11 Fourier profiles are exact on piecewise-constant levels; across the
-    # transition region's slope there is no closed form, and "exact" runs the slip integrator
-    # (the result says so) instead of refusing.
+def test_exact_request_on_a_sloped_friction_map_is_exact_for_a_fourier_profile():
+    # Since issue 11 Fourier profiles are exact on piecewise-constant levels and across the
+    # transition region's slope too (harmonic-by-harmonic closed form), no longer refused.
     profile = sa.FourierProfile(1.0, [0.0], [0.05])
     r = sa.simulate(profile, sa.TwoRegionFriction(0.5, 0.05, 2.5),
                     options=sa.SimulationOptions(method="exact", duration=2.0))
-    assert r.method == sa.Method.integrator
-    assert r.integrator.steps > 0
+    assert r.method == sa.Method.exact
+    assert r.integrator.steps == 0
 
 
 def test_grids_must_be_one_dimensional():

@@ -211,16 +211,21 @@ def test_period_map_keeps_its_profile_and_friction_alive():
     assert period_map(0.3, 0.0).x == before.x
 
 
-def test_period_map_integrates_what_the_exact_solver_cannot_take():
-    # A Fourier profile is exact on piecewise-constant levels (issue 11), not on the
-    # transition region's slope: there the map takes the slip integrator (no arcs, no step).
+def test_period_map_integrates_what_the_exact_solvers_cannot_take():
+    # A Fourier profile is exact on the transition region's slope too (issue 11); a Stribeck
+    # law is not: there the map takes the slip integrator (no arcs, no step).
     period_map = sa.PeriodMap(sa.FourierProfile(1.0, [0.05], [0.0]),
                               sa.TwoRegionFriction(0.5, 0.05, 2.5), steps_per_period=200)
-    assert period_map.method == sa.Method.integrator
-    assert period_map.step == 0.0
-    assert period_map.finite_difference_monodromy(0.0, 0.0, 1e-6).shape == (2, 2)
+    assert period_map.method == sa.Method.exact
+    assert len(period_map.arcs(0.49, 0.05)) > 0
+    stribeck = sa.PeriodMap(sa.FourierProfile(1.0, [0.05], [0.0]),
+                            sa.TwoRegionFriction(0.5, 0.05, 2.5),
+                            sa.FrictionLaw(1.2, 1.0).with_stribeck(0.01), steps_per_period=200)
+    assert stribeck.method == sa.Method.integrator
+    assert stribeck.step == 0.0
+    assert stribeck.finite_difference_monodromy(0.0, 0.0, 1e-6).shape == (2, 2)
     with pytest.raises(sa.InvalidParameter):
-        period_map.arcs(0.0, 0.0)
+        stribeck.arcs(0.0, 0.0)
 
 
 # ---- static > kinetic: the hand-derived two-level steady states ------------------------------

@@ -87,7 +87,7 @@ PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
 // Exact where a closed form exists: piecewise-polynomial acceleration on a piecewise-affine
 // level, or a smooth motion on a piecewise-constant level; the slip integrator for a
 // velocity-dependent law (piecewise-polynomial or smooth profiles on piecewise-affine levels)
-// and for a smooth motion on a level with slopes (a transition region); time-stepping
+// and for a smooth motion other than a Fourier series on a level with slopes; time-stepping
 // otherwise.
 void PeriodMap::choose_solver() {
   const PiecewisePolynomialProfile* pwp = profile_.piecewise_polynomial();
@@ -104,7 +104,8 @@ void PeriodMap::choose_solver() {
     validate(stepping_);
   } else if (pwp && affine) {
     exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
-  } else if (motion && affine && piecewise_constant_level(*affine)) {
+  } else if (motion && affine &&
+             (piecewise_constant_level(*affine) || motion->fourier_series())) {
     smooth_ = std::make_unique<SmoothSetup>(SmoothSetup{*motion, *affine, law_});
   } else if (motion && affine) {  // a smooth motion on sloped pieces: no closed form here
     validate(options_.integrator);

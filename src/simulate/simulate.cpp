@@ -146,8 +146,9 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   const PiecewiseAffineFriction* affine = friction.piecewise_affine();
   // No closed form: a speed-dependent law, or a smooth motion on a level with slopes.
   if (method == Method::exact &&
-      (law.velocity_dependent() || (!profile.piecewise_polynomial() && profile.smooth() &&
-                                    affine && !piecewise_constant_level(*affine))))
+      (law.velocity_dependent() ||
+       (!profile.piecewise_polynomial() && profile.smooth() && !profile.smooth()->fourier_series() &&
+        affine && !piecewise_constant_level(*affine))))
     method = Method::integrator;
   if (method == Method::integrator) {
     validate(o.integrator);
@@ -166,7 +167,7 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
     const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
     const PiecewiseAffineFriction* f = friction.piecewise_affine();
     const SmoothMotion* motion = profile.smooth();
-    if (!p && motion && f && piecewise_constant_level(*f)) {  // smooth_exact.hpp
+    if (!p && motion && f && (piecewise_constant_level(*f) || motion->fourier_series())) {
       runner = std::make_unique<SmoothRunner>(*motion, *f, law, initial);
       if (grid == 0) grid = profile.period() / 200;
     } else {

@@ -7,6 +7,7 @@
 #include "arc_events.hpp"
 #include "smooth_stick.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/fourier.hpp"
 
 namespace selfalign {
 
@@ -49,6 +50,79 @@ double time_resolution(double t) {
 
 constexpr long long kMaxSteps = 100'000'000;  // a guard, never reached by resolvable motions
 
+// The friction piece a slip in direction sigma from x runs on (moving left from a boundary:
+// the piece below it).
+std::size_t slip_piece_index(const PiecewiseAffineFriction& f, double x, int sigma) {
+  std::size_t pi = f.piece_index(x);
+  if (sigma < 0 && pi > 0 && x == f.pieces()[pi].begin) --pi;
+  return pi;
+}
+
+struct AffineSlip {
+  double t1, x1, v1;
+  ArcEnd end;
+  DrivenAffineArc arc;
+};
+
+// One slip on an affine piece m = m0 + b (x - x0) under a Fourier motion: the closed form of
+// DrivenAffineArc, x'' = -kappa (x - center) - y'', its events isolated by safe steps as on a
+// constant level. While slipping g = sigma x' > 0 and g'' = sigma x^(3) = -kappa g - sigma
+// y^(3), so |g''| <= K |x'| + Y3 (K = |kappa|); over a step of length d, Taylor's bound on |x'|
+// with that remainder gives sup|x'| <= (|g| + |g1| d + Y3 d^2/2) / (1 - K d^2/2) =: G(d), so
+// B(d) = K G(d) + Y3 bounds |g''| there (docs/fourier-transition-region.md, eq. F9). The rising
+// bound likewise: |g^(3)| <= K (|g1| + d B(d)) + Y4.
+AffineSlip slip_on_affine_piece(const FourierProfile& series, const AffinePiece& pc,
+                                const FrictionLaw& law, int sigma, bool from_break,
+                                const ObjectState& s0, const std::array<double, 4>& d0,
+                                double t_end) {
+  const double kappa = sigma * law.kinetic(sigma) * pc.slope;
+  const double center = pc.begin - pc.bound_at_begin / pc.slope;  // m(center) = 0
+  const DrivenAffineArc arc{&series, s0.t, kappa, center};
+  const double K = std::abs(kappa), Y3 = series.jerk_bound(), Y4 = series.snap_bound();
+  const double d_max = 1 / std::sqrt(K);  // keeps 1 - K d^2/2 >= 1/2
+  const double X = sigma > 0 ? pc.end : pc.begin;
+  const double T = t_end - s0.t;
+  double tau = 0, g = sigma * s0.xd + 0.0;
+  double g1 = sigma * (-kappa * (s0.x - center) - d0[2]), g2 = sigma * (-kappa * s0.xd - d0[3]);
+  if (from_break) g1 = std::max(g1, 0.0);
+  auto bound = [&](double d) {  // B(d) of the comment
+    const double G = (std::abs(g) + std::abs(g1) * d + 0.5 * Y3 * d * d) / (1 - 0.5 * K * d * d);
+    return K * G + Y3;
+  };
+  AffineSlip r{t_end, s0.x, s0.xd, ArcEnd::horizon, arc};
+  for (long long i = 0; i < kMaxSteps; ++i) {
+    double d = std::min(safe_step(g, g1, K * std::abs(g) + Y3), d_max);
+    d = std::min(d, safe_step(g, g1, bound(d)));  // valid on [0, d]: B(d) covers it
+    double rise = 0;
+    if (g1 >= 0) {
+      rise = std::min(safe_step(g1, g2, K * std::abs(g1) + Y4), d_max);
+      rise = std::min(rise, safe_step(g1, g2, K * (std::abs(g1) + rise * bound(rise)) + Y4));
+    }
+    const double step = std::max(d, rise);
+    const double tn = std::min(tau + step, T);
+    const PosVel p = arc.state(s0.x, s0.xd, tn);
+    if (std::isfinite(X) && sigma * (p.x - X) >= 0) {  // the boundary: one crossing
+      auto position = [&](double q) {
+        const PosVel z = arc.state(s0.x, s0.xd, q);
+        return std::pair{sigma * (z.x - X), sigma * z.xd};
+      };
+      tau = detail::bracketed_root(position, tau, tn, 0.5 * (tau + tn), std::abs(s0.t) + tn);
+      const PosVel z = arc.state(s0.x, s0.xd, tau);
+      r = {s0.t + tau, X, sigma * z.xd > 0 ? z.xd : 0.0, ArcEnd::friction_boundary, arc};
+      return r;
+    }
+    if (tn >= T) return {t_end, p.x, sigma * p.xd > 0 ? p.xd : 0.0, ArcEnd::horizon, arc};
+    tau = tn;
+    g = sigma * p.xd;
+    if (!(g > 0) || step <= time_resolution(s0.t + tau))
+      return {s0.t + tau, p.x, 0.0, ArcEnd::velocity_zero, arc};
+    const std::array<double, 4> dn = series.derivatives(s0.t + tau);
+    g1 = sigma * (-kappa * (p.x - center) - dn[2]);
+    g2 = sigma * (-kappa * p.xd - dn[3]);
+  }
+  return r;
+}
+
 }  // namespace
 
 namespace detail {
@@ -90,10 +164,10 @@ bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept 
 
 std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
                            ArcSink* sink) {
-  if (!piecewise_constant_level(setup.friction))
+  if (!piecewise_constant_level(setup.friction) && !setup.motion.fourier_series())
     throw InvalidParameter("friction", "sloped pieces",
-                           "the smooth-profile solver needs a piecewise-constant friction level "
-                           "(use time-stepping)");
+                           "the smooth-profile solver takes sloped friction pieces under a Fourier "
+                           "motion only (use the slip integrator or time-stepping)");
   require_finite("t0", state.t);
   require_moderate("x0", state.x);
   require_moderate("v0", state.xd);
@@ -135,6 +209,26 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       sigma = v > 0 ? 1 : -1;
     }
 
+    if (sigma != 0 &&
+        pieces[slip_piece_index(setup.friction, x, sigma)].slope != 0) {  // transition region
+      pi = slip_piece_index(setup.friction, x, sigma);
+      const AffinePiece& pc = pieces[pi];
+      m = pc.bound(x);
+      const AffineSlip r = slip_on_affine_piece(*M.fourier_series(), pc, law, sigma, from_break,
+                                                {t, x, v}, d0, t_end);
+      if (sink) {
+        Arc a{t, r.t1, x, v, r.x1, r.v1, d0[2], d0[3], m, pc.slope, r.arc};
+        a.direction = static_cast<std::int8_t>(sigma);
+        a.end = r.end;
+        a.piece = pi;
+        sink->on_arc(a);
+      }
+      ++count;
+      t = r.t1;
+      x = r.x1;
+      v = r.v1;
+      continue;
+    }
     if (sigma != 0) {  // slip: g = sigma x' >= 0, |g''| <= Y3
       pi = setup.friction.piece_index(x);
       if (sigma < 0 && pi > 0 && x == pieces[pi].begin) --pi;  // moving left from a boundary

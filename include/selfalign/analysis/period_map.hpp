@@ -5,9 +5,9 @@
 /// period (or any horizon) by an exact solver where a closed form exists (piecewise-polynomial
 /// acceleration on a piecewise-affine level: simulate/exact.hpp; a smooth motion such as a
 /// Fourier series on a piecewise-constant level: simulate/smooth_exact.hpp), by the slip
-/// integrator for a velocity-dependent law and for a smooth motion on sloped pieces (exact
-/// sticks, Odeint dopri5 slips with event location: simulate/slip_integrator.hpp), by Moreau
-/// time-stepping otherwise.
+/// integrator for a velocity-dependent law and for a smooth motion other than a Fourier series
+/// on sloped pieces (exact sticks, Odeint dopri5 slips with event location:
+/// simulate/slip_integrator.hpp), by Moreau time-stepping otherwise.
 ///
 ///   P : (x, x') at t0  ->  (x, x') at t0 + Δt,
 /// with its arcs (exact), its stick/slip census, and its sensitivity dP/d(x, x'): the monodromy

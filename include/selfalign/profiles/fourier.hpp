@@ -45,6 +45,7 @@ class FourierProfile final : public TableProfile, public SmoothMotion {
   /// and |y^(4)| [-].
   double jerk_bound() const override { return jerk_bound_; }
   double snap_bound() const override { return snap_bound_; }
+  const FourierProfile* fourier_series() const override { return this; }
 
   int order() const noexcept { return static_cast<int>(cos_.size()); }
   const std::vector<double>& cos_coeffs() const noexcept { return cos_; }

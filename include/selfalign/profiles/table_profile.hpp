@@ -13,6 +13,7 @@
 namespace selfalign {
 
 class PiecewisePolynomialProfile;
+class FourierProfile;
 
 /// A smooth table motion with y and its first three derivatives in closed form and bounds on
 /// its third and fourth derivatives: what the exact solver for smooth profiles needs
@@ -27,6 +28,9 @@ class SmoothMotion {
   /// Upper bounds of sup_t |y^(3)(t)| and sup_t |y^(4)(t)| [-].
   virtual double jerk_bound() const = 0;
   virtual double snap_bound() const = 0;
+  /// The motion as a Fourier series, when it is one: then its slips on affine friction pieces
+  /// (transition regions) are closed-form too (DrivenAffineArc, simulate/arc.hpp).
+  virtual const FourierProfile* fourier_series() const { return nullptr; }
 };
 
 /// Table position, velocity and acceleration at one time [-].

@@ -27,6 +27,8 @@
 
 namespace selfalign {
 
+class FourierProfile;
+
 /// Position and velocity relative to the table [-].
 struct PosVel {
   double x, xd;
@@ -107,12 +109,32 @@ struct DrivenArc {
   Transition transition(double tau) const noexcept { return {1, tau, 0, 1}; }
 };
 
+/// Slip on an affine friction piece (a transition region) under a Fourier table motion:
+///   x'' = -kappa (x - center) - y''(t),   kappa = sigma k_sigma dm/dx,  m(center) = 0,
+/// in closed form harmonic by harmonic (docs/fourier-transition-region.md, eqs. F1-F8): with
+/// u = x - center, the homogeneous part (cos/sin of omega tau for kappa = omega^2 > 0,
+/// cosh/sinh of lambda tau for kappa = -lambda^2 < 0) plus, for every harmonic Omega_j = j w of
+/// -y'' = sum Omega_j^2 (A_j cos + B_j sin), its zero-state response written with
+/// sinc((Omega_j - omega) tau / 2): exact and free of cancellation at and near resonance
+/// (Omega_j = omega).
+struct DrivenAffineArc {
+  const FourierProfile* series = nullptr;  ///< the table motion (borrowed)
+  double t0 = 0;                           ///< absolute start time [-]
+  double kappa = 1;                        ///< sigma k_sigma dm/dx [-], != 0
+  double center = 0;                       ///< where the piece's level extrapolates to 0 [-]
+
+  PosVel state(double x0, double v0, double tau) const noexcept;
+  double acceleration(double x, double, double tau) const noexcept;
+  Transition transition(double tau) const noexcept;
+};
+
 /// The closed set of arc shapes. Add a shape here (with state, acceleration, transition and
 /// its events in src/simulate/arc_events.hpp) and every visitor must handle it.
-using ArcShape = std::variant<StickArc, PolynomialArc, HarmonicArc, HyperbolicArc, DrivenArc>;
+using ArcShape =
+    std::variant<StickArc, PolynomialArc, HarmonicArc, HyperbolicArc, DrivenArc, DrivenAffineArc>;
 
 /// The shape's index, for tables and bindings (ArcKind(shape.index())).
-enum class ArcKind : std::uint8_t { stick, parabolic, harmonic, hyperbolic, driven };
+enum class ArcKind : std::uint8_t { stick, parabolic, harmonic, hyperbolic, driven, driven_affine };
 
 /// What ended an arc.
 enum class ArcEnd : std::uint8_t {

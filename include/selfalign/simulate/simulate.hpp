@@ -69,7 +69,8 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
 /// The same under a friction law: static >= kinetic (direction-dependent) coefficients, and a
 /// velocity-dependent law (Stribeck, viscous), which has no closed form: method exact then runs
 /// the slip integrator (result.method says so), as does method integrator for any law. So
-/// does method exact for a smooth motion (Fourier) on a friction map with sloped pieces.
+/// does method exact for a smooth motion that is not a Fourier series on a friction map with
+/// sloped pieces (a Fourier series is closed-form there too).
 SimulationResult simulate(const TableProfile& profile, const FrictionMap& friction,
                           const FrictionLaw& law, const ObjectState& initial,
                           const SimulationOptions& options);

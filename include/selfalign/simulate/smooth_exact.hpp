@@ -17,9 +17,10 @@
 ///     second derivative |y''''| <= Y4: the same safe steps on both;
 ///   - friction-level boundaries: x is monotone while slipping, so the first step that passes a
 ///     boundary brackets its only crossing, found by safeguarded Newton steps.
-/// Position-dependent levels with slopes (the transition region) are not taken here (their
-/// forced arcs are not closed-form for a general motion): PeriodMap and simulate() use the
-/// slip integrator for them (slip_integrator.hpp).
+/// Affine pieces (the transition region) under a Fourier motion are closed-form too: the
+/// slip is a DrivenAffineArc (arc.hpp; docs/fourier-transition-region.md), its events isolated
+/// by the same safe steps with the bound of eq. (F9). Other smooth motions on sloped pieces
+/// are refused here (PeriodMap and simulate() give them to the slip integrator).
 
 #include <cstddef>
 
@@ -38,12 +39,14 @@ struct SmoothSetup {
   FrictionLaw law{};
 };
 
-/// True when the smooth solver can take this level: every piece has slope 0.
+/// True when every piece of the level has slope 0 (any smooth motion then; with slopes, Fourier
+/// motions only).
 bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept;
 
 /// Advances `state` to t_end (>= state.t), calling sink (if any) for every arc (DrivenArc for
-/// slips, StickArc for sticks). Returns the number of arcs. Throws InvalidParameter for a level
-/// with sloped pieces, a non-finite state or t_end.
+/// slips on constant pieces, DrivenAffineArc on sloped ones, StickArc for sticks). Returns the
+/// number of arcs. Throws InvalidParameter for a level with sloped pieces under a motion that
+/// is not a Fourier series, a non-finite state or t_end.
 std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
                            ArcSink* sink = nullptr);
 
