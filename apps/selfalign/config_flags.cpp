@@ -7,7 +7,7 @@ std::string group_title(std::string_view group) {
   if (group == "run") return "Run";
   if (group == "profile") return "Table profile";
   if (group == "friction") return "Friction map";
-  if (group == "law") return "Friction law (static, kinetic)";
+  if (group == "law") return "Friction law (static, kinetic, Stribeck, viscous)";
   if (group == "scales") return "Scales (SI conversion)";
   if (group == "initial") return "Initial state";
   if (group == "solver") return "Solver";

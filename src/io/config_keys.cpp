@@ -20,7 +20,7 @@ const ConfigKey kKeys[] = {
      "unit system of every input and output: dimensionless (Sect. 3.2) or si"},
     {"method", &C::method, D::none, "", "", "run",
      "solver: exact (event-driven; piecewise-constant or piecewise-linear y'', or fourier on "
-     "piecewise-constant friction), integrator (exact sticks, Dormand-Prince slips; what exact "
+     "any piecewise-affine friction), integrator (exact sticks, Dormand-Prince slips; what exact "
      "runs under a Stribeck or viscous law) or time-stepping (Moreau)"},
     {"profile", &C::profile, D::none, "", "", "profile",
      "table motion: three-phase (Sect. 4.4.3; with jerk: trapezoidal acceleration), "
