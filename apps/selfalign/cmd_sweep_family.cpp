@@ -101,7 +101,7 @@ void run_sweep_family(const FamilyFlags& f) {
                 {"stroke", model.from_model_units(D::length, pt.stroke)}};
   });
   write_sweep_outputs(paths, points_csv(points, values, fixed, f.swept, model.output_units()),
-                      j);
+                      j, model);
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ void run_sweep_positioning(const PositioningFlags& f) {
                                  sweep_options(*f.common, *bar, model));
   }
   write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
-                      cells_summary(config, model, f, g.r2, g.r3, cells));
+                      cells_summary(config, model, f, g.r2, g.r3, cells), model);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "sweep_common.hpp"
 
+#include "selfalign/io/summary_json.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -86,6 +88,7 @@ ProfileModel sweep_model(const SimulateConfig& config) {
 SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar, const ProfileModel& model) {
   SweepOptions o;
   o.law = model.law;
+  o.steady.integrator = model.integrator;  // Stribeck or viscous laws
   if (model.jerk) o.jerk = *model.jerk;
   o.threads = flags.threads;
   o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
@@ -109,9 +112,12 @@ SweepPaths resolve_sweep_paths(const SimulateConfig& config) {
   return paths;
 }
 
-void write_sweep_outputs(const SweepPaths& paths, const std::string& csv,
-                         nlohmann::json summary) {
+void write_sweep_outputs(const SweepPaths& paths, const std::string& csv, nlohmann::json summary,
+                         const ProfileModel& model) {
   summary["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
+  summary["law"] = law_json(model.law, model.output_units());
+  // Every cell's solver: the exact ones, or the slip integrator under a Stribeck/viscous law.
+  summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   const std::string summary_text = summary.dump(2) + "\n";
   AtomicFileSet files;
   if (paths.csv) files.add(*paths.csv, csv);

@@ -116,8 +116,8 @@ SweepPaths resolve_sweep_paths(const SimulateConfig& config);
 
 /// Writes the CSV and the summary, with "csv_file" added; files are committed together
 /// (AtomicFileSet), then standard output is written.
-void write_sweep_outputs(const SweepPaths& paths, const std::string& csv,
-                         nlohmann::json summary);
+void write_sweep_outputs(const SweepPaths& paths, const std::string& csv, nlohmann::json summary,
+                         const ProfileModel& model);
 
 /// The sweep subcommands, added under `selfalign sweep` (cmd_sweep.cpp).
 void add_sweep_accelerations_command(CLI::App& sweep);  // cmd_sweep_accelerations.cpp

@@ -547,6 +547,7 @@ class PeriodMap:
         *,
         steps_per_period: int = 4000,
         theta: float = 0.5,
+        integrator: IntegratorOptions = ...,
     ) -> None: ...
     @overload
     def __init__(
@@ -557,6 +558,7 @@ class PeriodMap:
         *,
         steps_per_period: int = 4000,
         theta: float = 0.5,
+        integrator: IntegratorOptions = ...,
     ) -> None: ...
     @property
     def profile(self) -> TableProfile: ...

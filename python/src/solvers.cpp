@@ -256,27 +256,30 @@ void bind_period_map(py::module_& m) {
   py::class_<PeriodMap>(m, "PeriodMap", R"doc(
 The map P: (x, x') at phase 0 -> (x, x') one table period Δt later [-], for a table profile,
 a friction level m(x) (FrictionMap; the uniform m = 1 without one) and a friction law
-(FrictionLaw). Integrated by the exact solver when the profile's acceleration is
-piecewise polynomial (constant or finite jerk) and the level piecewise affine, by Moreau
-time-stepping (h = Δt/steps_per_period) otherwise. Every analysis (steady state, Floquet,
+(FrictionLaw). Integrated by an exact solver when the profile's acceleration is
+piecewise polynomial (constant or finite jerk) or a Fourier series and the level piecewise
+affine, by the slip integrator (tolerances `integrator`, IntegratorOptions) under a Stribeck or
+viscous law, by Moreau time-stepping (h = Δt/steps_per_period) otherwise. Every analysis (steady state, Floquet,
 convergence, stopping, positioning, sweeps) iterates this map. The map keeps its profile and
 friction alive.)doc")
       .def(py::init([](const TableProfile& profile, const FrictionLaw& law,
-                       int steps_per_period, double theta) {
-             return std::make_unique<PeriodMap>(profile, law,
-                                                PeriodMapOptions{steps_per_period, theta});
+                       int steps_per_period, double theta, const IntegratorOptions& integrator) {
+             return std::make_unique<PeriodMap>(
+                 profile, law, PeriodMapOptions{steps_per_period, theta, integrator});
            }),
            py::arg("profile"), py::arg("law") = FrictionLaw{}, py::kw_only(),
            py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
-           py::keep_alive<1, 2>(), "The uniform low-friction table (m = 1) under `law`.")
+           py::arg("integrator") = d.integrator, py::keep_alive<1, 2>(), "The uniform low-friction table (m = 1) under `law`.")
       .def(py::init([](const TableProfile& profile, const FrictionMap& friction,
-                       const FrictionLaw& law, int steps_per_period, double theta) {
-             return std::make_unique<PeriodMap>(profile, friction, law,
-                                                PeriodMapOptions{steps_per_period, theta});
+                       const FrictionLaw& law, int steps_per_period, double theta,
+                       const IntegratorOptions& integrator) {
+             return std::make_unique<PeriodMap>(
+                 profile, friction, law, PeriodMapOptions{steps_per_period, theta, integrator});
            }),
            py::arg("profile"), py::arg("friction"), py::arg("law") = FrictionLaw{},
            py::kw_only(), py::arg("steps_per_period") = d.steps_per_period,
-           py::arg("theta") = d.theta, py::keep_alive<1, 2>(), py::keep_alive<1, 3>(), R"doc(
+           py::arg("theta") = d.theta, py::arg("integrator") = d.integrator,
+           py::keep_alive<1, 2>(), py::keep_alive<1, 3>(), R"doc(
 A table whose friction level is `friction` under `law`. steps_per_period (>= 1) and theta (in
 [0, 1]) apply to time-stepping only; raises InvalidParameter for them out of range when the
 map time-steps.)doc")
@@ -285,7 +288,8 @@ map time-steps.)doc")
                              "the friction level (UniformFriction(1) when none was given)")
       .def_property_readonly("law", &PeriodMap::law, "the friction law")
       .def_property_readonly("method", &PeriodMap::method,
-                             "Method.exact or Method.time_stepping (see the class doc)")
+                             "Method.exact, Method.integrator or Method.time_stepping (see the "
+                             "class doc)")
       .def_property_readonly("period", &PeriodMap::period, "Δt [-]")
       .def_property_readonly("step", &PeriodMap::step,
                              "time-stepping step h = Δt/steps_per_period [-]; 0 when exact")

@@ -77,10 +77,15 @@ NULLABLE = {
                      "accumulates_for_every_entry", "contraction_at_fixed_point"},
     # docs/cli.md "sweep period, sweep stroke": a2, a3 "(three-phase family; else null)";
     # summaries: csv_file.
-    "sweep accelerations": {"csv_file"},
-    "sweep period": {"csv_file", "a2", "a3"},
-    "sweep stroke": {"csv_file", "a2", "a3"},
-    "sweep positioning": {"csv_file"},
+    # and the law's speed terms (docs/config.md: null when the law has none).
+    "sweep accelerations": {"csv_file", "law.stribeck_velocity", "law.stribeck_exponent",
+                            "law.viscous"},
+    "sweep period": {"csv_file", "a2", "a3", "law.stribeck_velocity", "law.stribeck_exponent",
+                     "law.viscous"},
+    "sweep stroke": {"csv_file", "a2", "a3", "law.stribeck_velocity", "law.stribeck_exponent",
+                     "law.viscous"},
+    "sweep positioning": {"csv_file", "law.stribeck_velocity", "law.stribeck_exponent",
+                          "law.viscous"},
     "optimize": {"law.stribeck_velocity", "law.stribeck_exponent", "law.viscous", "results.f", "results.v_bar", "results.max_jerk", "limits.max_jerk"},  # f, v_bar: infeasible results only (check_json); max_jerk: infinite (no limit, jumps)
     "design": {"profile.jerk_m_per_s3"},
 }
