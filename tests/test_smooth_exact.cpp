@@ -18,7 +18,9 @@
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/friction/friction_map.hpp"
+#include "selfalign/design/fourier_design.hpp"
 #include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/simulate.hpp"
 #include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/simulate/smooth_exact.hpp"
@@ -219,5 +221,45 @@ TEST(SmoothExact, TransitionRegionMoreauOrderAndSaltation) {
     const Eigen::Matrix2d s = uniform_law.saltation_monodromy(x0, 0.05);
     const Eigen::Matrix2d f = uniform_law.finite_difference_monodromy(x0, 0.05, 1e-7);
     EXPECT_LT((s - f).cwiseAbs().maxCoeff(), 1e-6) << x0;
+  }
+}
+
+// The a posteriori longer steps (Hermite check against the fifth-derivative bound) change how
+// far the solver steps, not what it finds: the same motion with that bound hidden (every step
+// a safe step) gives the same arcs, events and state, over 20 periods of the order-12
+// Fig. 6-like series and the two-harmonic motion (rounding: 1e-12).
+TEST(SmoothExact, LongerStepsFindTheSameEventsAsSafeStepsAlone) {
+  struct WithoutFifthBound final : SmoothMotion {
+    const FourierProfile& p;
+    explicit WithoutFifthBound(const FourierProfile& q) : p(q) {}
+    std::array<double, 4> derivatives(double t) const override { return p.derivatives(t); }
+    double jerk_bound() const override { return p.jerk_bound(); }
+    double snap_bound() const override { return p.snap_bound(); }
+  };
+  struct Count final : ArcSink {
+    std::vector<Arc> arcs;
+    void on_arc(const Arc& a) override { arcs.push_back(a); }
+  };
+  std::vector<double> a, b;
+  const ThreePhaseProfile three({0.072, 0.021, 1000, 80});
+  fourier_series_of(*three.piecewise_polynomial(), 12, a, b);
+  const FourierProfile fig6(0.072, a, b);
+  const FourierProfile two(kTwoPi, {1.5, 0.1}, {0.0, 0.2});
+  const UniformFriction uniform;
+  for (const FourierProfile* profile : {&fig6, &two}) {
+    ASSERT_TRUE(std::isfinite(profile->fifth_derivative_bound()));
+    const WithoutFifthBound hidden(*profile);
+    Count fast, safe;
+    ObjectState s1{0, 0, 0}, s2{0, 0, 0};
+    const FrictionLaw law(1.2, 1.0);
+    advance_smooth({*profile, *uniform.piecewise_affine(), law}, s1, 20 * profile->period(), &fast);
+    advance_smooth({hidden, *uniform.piecewise_affine(), law}, s2, 20 * profile->period(), &safe);
+    ASSERT_EQ(fast.arcs.size(), safe.arcs.size());
+    for (std::size_t i = 0; i < fast.arcs.size(); ++i) {
+      EXPECT_EQ(fast.arcs[i].end, safe.arcs[i].end) << i;
+      EXPECT_NEAR(fast.arcs[i].t1, safe.arcs[i].t1, 1e-12) << i;
+    }
+    EXPECT_NEAR(s1.x, s2.x, 1e-12);
+    EXPECT_NEAR(s1.xd, s2.xd, 1e-12);
   }
 }

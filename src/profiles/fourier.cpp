@@ -67,6 +67,7 @@ FourierProfile::FourierProfile(Unsampled, double period, std::vector<double> cos
     const double amplitude = std::hypot(cos_[k], sin_[k]);
     jerk_bound_ += kw * kw * kw * amplitude;
     snap_bound_ += kw * kw * kw * kw * amplitude;
+    fifth_bound_ += kw * kw * kw * kw * kw * amplitude;
   }
 }
 

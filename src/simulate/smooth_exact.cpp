@@ -123,6 +123,27 @@ AffineSlip slip_on_affine_piece(const FourierProfile& series, const AffinePiece&
   return r;
 }
 
+// Minimum over [0, L] of the cubic Hermite interpolant of g from g(0) = g0, g'(0) = d0,
+// g(L) = g1, g'(L) = d1 (in u = s/L: a u^3 + b u^2 + c u + e, stationary points from its
+// derivative's quadratic).
+double hermite_minimum(double g0, double d0, double g1, double d1, double L) {
+  const double e = g0, c = L * d0, b = -3 * g0 - 2 * L * d0 + 3 * g1 - L * d1,
+               a = 2 * g0 + L * d0 - 2 * g1 + L * d1;
+  double lowest = std::min(g0, g1);
+  auto at = [&](double u) { return ((a * u + b) * u + c) * u + e; };
+  const double qa = 3 * a, qb = 2 * b, qc = c;
+  if (qa == 0) {
+    if (qb != 0 && -qc / qb > 0 && -qc / qb < 1) lowest = std::min(lowest, at(-qc / qb));
+    return lowest;
+  }
+  const double disc = qb * qb - 4 * qa * qc;
+  if (disc < 0) return lowest;
+  const double r = std::sqrt(disc);
+  for (const double u : {(-qb - r) / (2 * qa), (-qb + r) / (2 * qa)})
+    if (u > 0 && u < 1) lowest = std::min(lowest, at(u));
+  return lowest;
+}
+
 }  // namespace
 
 namespace detail {
@@ -175,7 +196,7 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
   const SmoothMotion& M = setup.motion;
   const auto pieces = setup.friction.pieces();
   const FrictionLaw& law = setup.law;
-  const double Y3 = M.jerk_bound(), Y4 = M.snap_bound();
+  const double Y3 = M.jerk_bound(), Y4 = M.snap_bound(), Y5 = M.fifth_derivative_bound();
   double t = state.t, x = state.x, v = state.xd;
   std::size_t count = 0;
   int breaking = 0;  // after a stick break: the direction the slip takes
@@ -243,6 +264,7 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       // starts with x'' = 0, static = kinetic at a break). The longer of the two is safe.
       double tau = 0, g = sigma * v + 0.0, g1 = sigma * (arc.accel - d0[2]), g2 = -sigma * d0[3];
       if (from_break) g1 = std::max(g1, 0.0);  // |y''| = s m at a break: x'' >= 0 but rounding
+      double long_step = 0;  // the a posteriori step below (0: none tried yet)
       for (long long i = 0; i < kMaxSteps; ++i) {
         const double quadratic = safe_step(g, g1, Y3);
         // |g''| <= |y^(3)(t)| + Y4 d: a tighter, local cubic bound, tried from twice the
@@ -250,8 +272,30 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
         const double local = safe_step_local(g, g1, 0.5 * std::abs(g2), Y4 / 6,
                                              std::max(2 * quadratic, 1e-300));
         const double step = std::max({quadratic, local, g1 >= 0 ? safe_step(g1, g2, Y4) : 0.0});
-        const double tn = std::min(tau + step, T);
-        const std::array<double, 4> d = M.derivatives(t + tn);
+        // A longer step checked a posteriori: on a constant level g'''' = -sigma y^(5), so the
+        // cubic Hermite interpolant of g from both ends of [0, L] is within Y5 L^4/384 of g
+        // (the interpolation error bound); where its minimum clears that, g > 0 on all of it.
+        // Grown by 1.5 after a success, halved after a failure, and kept short enough that the
+        // error bound stays below g/4 (near a zero the safe steps above converge instead).
+        std::array<double, 4> d{};
+        double tn = 0;
+        bool long_taken = false;
+        // L keeps the interpolation error below g/4: (96 g / Y5)^(1/4).
+        const double L = std::min({long_step, T - tau, std::sqrt(std::sqrt(96 * g / Y5))});
+        const double hermite_error = Y5 * L * L * L * L / 384;
+        if (L > 1.25 * step) {
+          d = M.derivatives(t + tau + L);
+          const double gl = sigma * (v - (d[1] - arc.yd0) + arc.accel * (tau + L));
+          const double g1l = sigma * (arc.accel - d[2]);
+          long_taken = hermite_minimum(g, g1, gl, g1l, L) > hermite_error;
+          long_step = long_taken ? 1.5 * long_step : std::max(step, 0.5 * long_step);
+          if (long_taken) tn = tau + L;
+        }
+        if (!long_taken) {
+          tn = std::min(tau + step, T);
+          d = M.derivatives(t + tn);
+          long_step = std::max(long_step, 2 * step);
+        }
         const double xn = x + v * tn - (d[0] - arc.y0 - arc.yd0 * tn) + 0.5 * arc.accel * tn * tn;
         const double vn = v - (d[1] - arc.yd0) + arc.accel * tn;
         if (std::isfinite(X) && sigma * (xn - X) >= 0) {  // the boundary: one crossing
@@ -267,9 +311,10 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
           tau = T;
           break;
         }
+        const double taken = tn - tau;
         tau = tn;
         g = sigma * vn;
-        if (!(g > 0) || step <= time_resolution(t + tau)) {
+        if (!(g > 0) || taken <= time_resolution(t + tau)) {
           end = ArcEnd::velocity_zero;
           break;
         }

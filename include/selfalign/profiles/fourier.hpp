@@ -45,6 +45,8 @@ class FourierProfile final : public TableProfile, public SmoothMotion {
   /// and |y^(4)| [-].
   double jerk_bound() const override { return jerk_bound_; }
   double snap_bound() const override { return snap_bound_; }
+  /// sum_k (k w)^5 sqrt(A_k^2 + B_k^2) [-].
+  double fifth_derivative_bound() const override { return fifth_bound_; }
   const FourierProfile* fourier_series() const override { return this; }
 
   int order() const noexcept { return static_cast<int>(cos_.size()); }
@@ -65,7 +67,7 @@ class FourierProfile final : public TableProfile, public SmoothMotion {
 
   double period_;
   std::vector<double> cos_, sin_;
-  double offset_ = 0, peak_ = 0, stroke_ = 0, jerk_bound_ = 0, snap_bound_ = 0;
+  double offset_ = 0, peak_ = 0, stroke_ = 0, jerk_bound_ = 0, snap_bound_ = 0, fifth_bound_ = 0;
 };
 
 }  // namespace selfalign

@@ -8,6 +8,7 @@
 /// min y = 0 (Sect. 4.4.3, constraint 1), so the stroke is Δy = max y.
 
 #include <array>
+#include <limits>
 #include <string>
 
 namespace selfalign {
@@ -28,6 +29,11 @@ class SmoothMotion {
   /// Upper bounds of sup_t |y^(3)(t)| and sup_t |y^(4)(t)| [-].
   virtual double jerk_bound() const = 0;
   virtual double snap_bound() const = 0;
+  /// An upper bound of sup_t |y^(5)(t)| [-]; +inf (the default) when unknown, which turns off
+  /// the a posteriori longer steps of the smooth solver (smooth_exact.cpp).
+  virtual double fifth_derivative_bound() const {
+    return std::numeric_limits<double>::infinity();
+  }
   /// The motion as a Fourier series, when it is one: then its slips on affine friction pieces
   /// (transition regions) are closed-form too (DrivenAffineArc, simulate/arc.hpp).
   virtual const FourierProfile* fourier_series() const { return nullptr; }
