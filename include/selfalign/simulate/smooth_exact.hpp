@@ -15,6 +15,11 @@
 ///     1e-15 of the time;
 ///   - stick breaking: while stuck, s m - y'' >= 0 and s m + y'' >= 0, each with a bound on its
 ///     second derivative |y''''| <= Y4: the same safe steps on both;
+///   - longer steps, checked a posteriori (a motion with a fifth-derivative bound Y5, such as a
+///     Fourier series): on a constant level g'''' = -sigma y^(5), so the cubic Hermite
+///     interpolant of g from both ends of a step of length L is within Y5 L^4 / 384 of g; a
+///     step whose interpolant's minimum clears that has no zero of x'. L is grown after a
+///     success, halved after a failure, and kept where that bound stays below g/4;
 ///   - friction-level boundaries: x is monotone while slipping, so the first step that passes a
 ///     boundary brackets its only crossing, found by safeguarded Newton steps.
 /// Affine pieces (the transition region) under a Fourier motion are closed-form too: the
