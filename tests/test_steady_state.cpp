@@ -243,3 +243,25 @@ TEST(SteadyState, WarmStartsReachTheSameFixedPointInFewerPeriods) {
   bad.initial_velocity = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(steady_state(harmonic, bad), InvalidParameter);
 }
+
+// A neighbour's slope (SteadyState::slope) with its x'_0s: the first step is a secant step,
+// so a start 1e-6 away converges in at most 3 periods, to the hand-derived v̄; a wrong slope
+// only costs periods (the bracket and the measured secant take over), never the fixed point.
+TEST(SteadyState, SlopeHintMakesTheFirstStepASecantStep) {
+  const oracle::SingleHarmonicCase c{6.283185307179586, 1.5, 0.1, 1.0, 1.0};
+  const FourierProfile harmonic(c.period, {c.A1, c.A2}, {0.0, 0.0});
+  const double expected = oracle::single_harmonic_vbar(c).vbar;
+  const SteadyState cold = steady_state(harmonic);
+  ASSERT_TRUE(std::isfinite(cold.slope));
+  SteadyStateOptions hinted;
+  hinted.initial_velocity = cold.x_dot_0s + 1e-6;
+  hinted.initial_slope = cold.slope;
+  const SteadyState fast = steady_state(harmonic, hinted);
+  ASSERT_TRUE(fast.converged);
+  EXPECT_LE(fast.periods, 3);
+  EXPECT_NEAR(fast.v_bar, expected, 1e-12);
+  hinted.initial_slope = -0.01;  // far off the map's slope
+  const SteadyState wrong = steady_state(harmonic, hinted);
+  ASSERT_TRUE(wrong.converged);
+  EXPECT_NEAR(wrong.v_bar, expected, 1e-12);
+}

@@ -600,6 +600,7 @@ class SteadyStateOptions:
     stepping_tol: float
     integrator: IntegratorOptions
     initial_velocity: float
+    initial_slope: float
     def __init__(
         self,
         *,
@@ -610,6 +611,7 @@ class SteadyStateOptions:
         stepping_tol: float = 0.0,
         integrator: IntegratorOptions = ...,
         initial_velocity: float = 0.0,
+        initial_slope: float = ...,
     ) -> None: ...
 
 class SteadyState:
@@ -635,6 +637,8 @@ class SteadyState:
     def motion_case(self) -> StickSlipCase: ...
     @property
     def pattern(self) -> str: ...
+    @property
+    def slope(self) -> float: ...
     @property
     def integrator(self) -> IntegratorStatistics: ...
 

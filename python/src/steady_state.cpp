@@ -47,8 +47,9 @@ void bind_steady_options(py::module_& m) {
   py::class_<SteadyStateOptions>(m, "SteadyStateOptions", "Options of steady_state().")
       .def(py::init([](int max_periods, double velocity_tol, int steps_per_period, double theta,
                        double stepping_tol, const IntegratorOptions& integrator,
-                       double initial_velocity) {
+                       double initial_velocity, double initial_slope) {
              SteadyStateOptions o;
+             o.initial_slope = initial_slope;
              o.integrator = integrator;
              o.initial_velocity = initial_velocity;
              o.max_periods = max_periods;
@@ -62,7 +63,11 @@ void bind_steady_options(py::module_& m) {
            py::arg("velocity_tol") = d.velocity_tol,
            py::arg("steps_per_period") = d.steps_per_period, py::arg("theta") = d.theta,
            py::arg("stepping_tol") = d.stepping_tol, py::arg("integrator") = d.integrator,
-           py::arg("initial_velocity") = d.initial_velocity)
+           py::arg("initial_velocity") = d.initial_velocity,
+           py::arg("initial_slope") = d.initial_slope)
+      .def_readwrite("initial_slope", &SteadyStateOptions::initial_slope,
+                     "g'(v) = lambda - 1 of a nearby profile's map (its SteadyState.slope), < 0; "
+                     "NaN: unknown. With initial_velocity the first step is a secant step")
       .def_readwrite("initial_velocity", &SteadyStateOptions::initial_velocity,
                      "x'_0 of the search's first period [-] (0: from rest); a nearby profile's "
                      "x'_0s saves periods")
@@ -115,6 +120,9 @@ void bind_steady_state(py::module_& m) {
                     "a posteriori Table 1 case of the steady period")
       .def_readonly("pattern", &SteadyState::pattern,
                     "the steady period's stick/slip sequence, e.g. 'stick,forward,backward'")
+      .def_readonly("slope", &SteadyState::slope,
+                    "the search's last estimate of g'(v) = lambda - 1 at the fixed point; NaN "
+                    "when none was measured")
       .def_readonly("integrator", &SteadyState::integrator,
                     "IntegratorStatistics of the slip integrator (zeros for other methods)")
       .def("__repr__", [](const SteadyState& s) {

@@ -92,10 +92,14 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   Period best = evaluate(v_start);
   double v_prev = v_start, g_prev = best.g;
   r.periods = 1;
-  double slope = std::numeric_limits<double>::quiet_NaN();
+  // A neighbour's slope (with its x'_0s as the start) makes the first step a secant step.
+  const bool hinted = std::isfinite(o.initial_slope) && o.initial_slope < 0;
+  double slope = hinted ? o.initial_slope : std::numeric_limits<double>::quiet_NaN();
   double best_v = v_start, best_g = g_prev;
   bool done = g_prev == 0;
   double v = v_prev + g_prev;  // plain iterate
+  if (hinted && slope < -1e-3 && std::abs(v_prev - g_prev / slope) <= 2 * V)
+    v = v_prev - g_prev / slope;  // secant step on the neighbour's slope
   bool secant_step = false;
   int stalls = 0;
   bool probed = false;
@@ -137,7 +141,7 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
       next = v + std::copysign(kProbeStep * scale(v), g);
       probed = true;
     }
-    if (r.periods > 3 && std::isfinite(slope) && slope < -1e-3) {
+    if ((r.periods > 3 || hinted) && std::isfinite(slope) && slope < -1e-3) {
       const double secant = v - g / slope;
       if (std::abs(secant) <= 2 * V) {
         next = secant;
@@ -158,6 +162,7 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   }
   v = done ? best_v : v;
   r.x_dot_0s_error = done ? error_estimate(best_v, best_g, slope) : kInf;
+  r.slope = slope;
   done = done && std::abs(v) <= 2 * V;
   r.converged = done;
   r.x_dot_0s = v;

@@ -97,13 +97,18 @@ class FourierEvaluator {
     double v_bar = 0, max_velocity = 0, max_acceleration = 0;
     Method method = Method::exact;  // of the steady state (integrator: velocity-dependent law)
     double x_dot_0s = 0;            // of a converged steady state: the next evaluation's start
+    double slope = std::numeric_limits<double>::quiet_NaN();  // its map's slope (ditto)
     bool converged = false;
   };
 
   // Thread-safe. `warm`: the steady-state search starts there (a neighbour's x'_0s: the
   // optimiser's finite-difference points lie 1e-6 apart, about half the periods of a start
   // from rest, and the same fixed point).
-  Point evaluate(std::span<const double> x, double warm) const {
+  struct Warm {
+    double velocity = 0;
+    double slope = std::numeric_limits<double>::quiet_NaN();
+  };
+  Point evaluate(std::span<const double> x, const Warm& warm) const {
     Point p;
     const detail::Extrema ey = extrema(x, 0);
     if (!(ey.max - ey.min > 1e-300)) return p;
@@ -114,10 +119,12 @@ class FourierEvaluator {
     p.max_acceleration = p.scale * std::max(-ea.min, ea.max);
     const FourierProfile profile = scaled_profile(x, p.scale, ey, p.max_acceleration);
     SteadyStateOptions options;
-    options.initial_velocity = warm;
+    options.initial_velocity = warm.velocity;
+    options.initial_slope = warm.slope;
     const SteadyState st = steady_state(profile, law_, options);
     p.converged = st.converged;
     p.x_dot_0s = st.x_dot_0s;
+    p.slope = st.slope;
     p.method = st.method;
     p.v_bar = trusted_v_bar(st, p.max_velocity, l_.period);
     p.valid = std::isfinite(p.v_bar);
@@ -295,16 +302,16 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   };
   // Sequential evaluations warm-start from the last converged one; a finite-difference stencil
   // from its centre (evaluated just before), on every worker thread alike: deterministic.
-  double warm = 0;
+  FourierEvaluator::Warm warm;
   problem.evaluate = [&](std::span<const double> x) {
     const FourierEvaluator::Point p = evaluator.evaluate(x, warm);
-    if (p.converged) warm = p.x_dot_0s;
+    if (p.converged) warm = {p.x_dot_0s, p.slope};
     return design(p);
   };
   tbb::task_arena arena(worker_threads(o.threads));
   problem.evaluate_many = [&](const std::vector<std::vector<double>>& points,
                               std::vector<DesignEvaluation>& out) {
-    const double centre = warm;
+    const FourierEvaluator::Warm centre = warm;
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
         out[i] = design(evaluator.evaluate(points[i], centre));
@@ -344,7 +351,7 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
     r.message = infeasible_message("order-" + std::to_string(n) + " Fourier profile", best);
     return r;
   }
-  const FourierEvaluator::Point p = evaluator.evaluate(best.x, 0.0);  // from rest: as reported
+  const FourierEvaluator::Point p = evaluator.evaluate(best.x, {});  // from rest: as reported
   const auto nn = static_cast<long>(n);
   std::vector<double> a(best.x.begin(), best.x.begin() + nn), b(best.x.begin() + nn, best.x.end());
   for (double& v : a) v *= p.scale;

@@ -14,6 +14,7 @@
 /// piecewise constant or linear, or the profile is smooth (Fourier: simulate/smooth_exact.hpp);
 /// time-stepping otherwise.
 
+#include <limits>
 #include <string>
 
 #include "selfalign/analysis/motion_case.hpp"
@@ -44,6 +45,9 @@ struct SteadyStateOptions {
   /// x'_0s (an optimiser's finite-difference neighbours) saves periods: the search converges to
   /// the same fixed point where the steady state is unique.
   double initial_velocity = 0;
+  /// g'(v) = λ - 1 of a nearby profile's period map (its SteadyState::slope), < 0; NaN (the
+  /// default): unknown. With initial_velocity, the search's first step is then a secant step.
+  double initial_slope = std::numeric_limits<double>::quiet_NaN();
   /// Slip integrator (velocity-dependent laws): its tolerances; velocity_tol is then raised to
   /// at least 10 relative_tolerance (the period map is no more accurate than that).
   IntegratorOptions integrator{};
@@ -67,6 +71,9 @@ struct SteadyState {
   /// The steady period's stick/slip sequence, cyclic and compressed (MotionCensus::pattern):
   /// e.g. "stick,forward,backward" (Table 1 case 3) or "forward,backward" (case 4).
   std::string pattern;
+  /// The search's last estimate of g'(v) = λ - 1 at the fixed point (secant of its iterates, or
+  /// the hint it started from); NaN when no slope was measured.
+  double slope = std::numeric_limits<double>::quiet_NaN();
   /// The slip integrator's work for this steady state (method integrator; zeros otherwise).
   IntegratorStatistics integrator;
 };
