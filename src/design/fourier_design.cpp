@@ -25,7 +25,8 @@ namespace {
 constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
 constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimiser
 constexpr int kNewtonIterations = 8;       // cap of the Newton refinement of one extremum
-constexpr int kMaxDerivative = 5;          // tabulated powers (k w)^p: p = 0..5
+constexpr int kMaxDerivative = 5;
+constexpr int kResync = 16;                // harmonics between exact cos/sin in jet()          // tabulated powers (k w)^p: p = 0..5
 
 // The q-th derivative of a cos(theta) + b sin(theta) with respect to theta (q quarter turns),
 // from c = cos(theta), s = sin(theta).
@@ -61,13 +62,20 @@ class FourierEvaluator {
     return v;
   }
 
-  // Derivatives d, d + 1 and d + 2 of y at t (d + 2 <= kMaxDerivative), in one pass.
+  // Derivatives d, d + 1 and d + 2 of y at t (d + 2 <= kMaxDerivative), in one pass: cos and
+  // sin of k w t by the rotation recurrence from one sincos, re-seeded every kResync harmonics
+  // (its rounding grows like k eps in between), as FourierProfile::derivatives does.
   std::array<double, 3> jet(std::span<const double> x, int d, double t) const {
     std::array<double, 3> g{};
+    const double theta = w_ * t, c1 = std::cos(theta), s1 = std::sin(theta);
+    double c = c1, s = s1;
     for (int k = 1; k <= n_; ++k) {
-      const double ph = k * w_ * t, c = std::cos(ph), s = std::sin(ph);
+      if (k > 1 && (k - 1) % kResync == 0) c = std::cos(k * theta), s = std::sin(k * theta);
       const double a = x[k - 1], b = x[n_ + k - 1];
       for (int q = 0; q < 3; ++q) g[q] += power(d + q, k) * quarter_turns(a, b, c, s, d + q);
+      const double c_next = c * c1 - s * s1;  // (k + 1) theta from k theta
+      s = s * c1 + c * s1;
+      c = c_next;
     }
     return g;
   }
