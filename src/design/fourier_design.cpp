@@ -80,11 +80,10 @@ class FourierEvaluator {
     return g;
   }
 
-  // min and max of the d-th derivative over the period (d = 0, 1, 2).
-  detail::Extrema extrema(std::span<const double> x, int d) const {
+  // min and max of the d-th derivative over the period (d = 0, 1, 2), from its samples on the
+  // extrema grid (sampled_all), every near-extreme grid point refined by Newton.
+  detail::Extrema extrema(std::span<const double> x, int d, const std::vector<double>& buf) const {
     const int s = kSamplesPerHarmonic * n_;
-    std::vector<double> buf;  // per call: evaluations may run on several threads
-    sampled(x, d, s, buf);
     const auto [lo_it, hi_it] = std::minmax_element(buf.begin(), buf.end());
     detail::Extrema e{*lo_it, *hi_it};
     const double margin = 0.05 * (e.max - e.min), h = l_.period / s;
@@ -118,11 +117,13 @@ class FourierEvaluator {
   };
   Point evaluate(std::span<const double> x, const Warm& warm) const {
     Point p;
-    const detail::Extrema ey = extrema(x, 0);
+    std::array<std::vector<double>, 3> grid;  // y, y', y'' on the extrema grid (per call)
+    sampled_all(x, grid);
+    const detail::Extrema ey = extrema(x, 0, grid[0]);
     if (!(ey.max - ey.min > 1e-300)) return p;
     p.scale = l_.stroke / (ey.max - ey.min);
     if (!std::isfinite(p.scale)) return p;
-    const detail::Extrema ev = extrema(x, 1), ea = extrema(x, 2);
+    const detail::Extrema ev = extrema(x, 1, grid[1]), ea = extrema(x, 2, grid[2]);
     p.max_velocity = p.scale * std::max(-ev.min, ev.max);
     p.max_acceleration = p.scale * std::max(-ea.min, ea.max);
     const FourierProfile profile = scaled_profile(x, p.scale, ey, p.max_acceleration);
@@ -185,24 +186,36 @@ class FourierEvaluator {
       }
   }
 
-  // d-th derivative on the extrema grid of s points: per harmonic, (k w)^d times the
-  // coefficients rotated by d quarter turns, then one dot product per grid point.
-  void sampled(std::span<const double> x, int d, int s, std::vector<double>& out) const {
+  // y, y', y'' on the extrema grid of 32 N points in one pass over the tables: per harmonic
+  // and derivative d, (k w)^d times the coefficients rotated by d quarter turns, then dot
+  // products with the tabulated cos and sin.
+  void sampled_all(std::span<const double> x, std::array<std::vector<double>, 3>& out) const {
     const auto n = static_cast<std::size_t>(n_);
-    std::vector<double> rot_cos(n), rot_sin(n);
-    for (int k = 1; k <= n_; ++k) {
-      const double a = x[k - 1], b = x[n_ + k - 1], p = power(d, k);
-      // quarter_turns(a, b, c, s, d) = rot_cos c + rot_sin s
-      rot_cos[k - 1] = p * quarter_turns(a, b, 1, 0, d);
-      rot_sin[k - 1] = p * quarter_turns(a, b, 0, 1, d);
+    std::array<std::vector<double>, 3> rc, rs;
+    for (int d = 0; d < 3; ++d) {
+      rc[d].resize(n);
+      rs[d].resize(n);
+      for (int k = 1; k <= n_; ++k) {
+        const double a = x[k - 1], b = x[n_ + k - 1], p = power(d, k);
+        // quarter_turns(a, b, c, s, d) = rc c + rs s
+        rc[d][k - 1] = p * quarter_turns(a, b, 1, 0, d);
+        rs[d][k - 1] = p * quarter_turns(a, b, 0, 1, d);
+      }
     }
-    out.resize(static_cast<std::size_t>(s));
-    for (std::size_t j = 0; j < out.size(); ++j) {
+    const auto samples = static_cast<std::size_t>(kSamplesPerHarmonic * n_);
+    for (auto& o : out) o.resize(samples);
+    for (std::size_t j = 0; j < samples; ++j) {
       const double* c = grid_cos_.data() + j * n;
       const double* sn = grid_sin_.data() + j * n;
-      double v = 0;
-      for (std::size_t k = 0; k < n; ++k) v += rot_cos[k] * c[k] + rot_sin[k] * sn[k];
-      out[j] = v;
+      double v0 = 0, v1 = 0, v2 = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        v0 += rc[0][k] * c[k] + rs[0][k] * sn[k];
+        v1 += rc[1][k] * c[k] + rs[1][k] * sn[k];
+        v2 += rc[2][k] * c[k] + rs[2][k] * sn[k];
+      }
+      out[0][j] = v0;
+      out[1][j] = v1;
+      out[2][j] = v2;
     }
   }
 
