@@ -24,9 +24,7 @@ std::size_t piece_for_direction(const PiecewiseAffineFriction& f, double x, int 
 }  // namespace
 
 ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object) {
-  require_finite("t0", object.t);
-  require_moderate("x0", object.x);
-  require_moderate("v0", object.xd);
+  validate(object);
   const PiecewisePolynomialProfile& p = setup.profile;
   constexpr double kMaxPeriodIndex = 1e15;  // period_index and its product with Δt stay exact
   if (!(std::abs(object.t / p.period()) <= kMaxPeriodIndex))

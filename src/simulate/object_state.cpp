@@ -1,6 +1,14 @@
 #include "selfalign/simulate/object_state.hpp"
 
+#include "selfalign/error.hpp"
+
 namespace selfalign {
+
+void validate(const ObjectState& start) {
+  require_finite("t0", start.t);
+  require_moderate("x0", start.x);
+  require_moderate("v0", start.xd);
+}
 
 void Trajectory::reserve(std::size_t n) {
   for (auto* v : {&t, &x, &xd, &y, &yd, &ydd}) v->reserve(n);

@@ -157,9 +157,7 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
                            "the slip integrator needs a piecewise-polynomial or smooth table "
                            "motion (use time-stepping)");
   validate(setup.options);
-  require_finite("t0", state.t);
-  require_moderate("x0", state.x);
-  require_moderate("v0", state.xd);
+  validate(state);
   if (!std::isfinite(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
   const FrictionLaw& law = setup.law;
   const auto pieces = setup.friction.pieces();

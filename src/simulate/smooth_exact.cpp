@@ -189,9 +189,7 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
     throw InvalidParameter("friction", "sloped pieces",
                            "the smooth-profile solver takes sloped friction pieces under a Fourier "
                            "motion only (use the slip integrator or time-stepping)");
-  require_finite("t0", state.t);
-  require_moderate("x0", state.x);
-  require_moderate("v0", state.xd);
+  validate(state);
   if (!std::isfinite(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
   const SmoothMotion& M = setup.motion;
   const auto pieces = setup.friction.pieces();

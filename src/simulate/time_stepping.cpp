@@ -12,9 +12,7 @@ void validate(const TimeSteppingOptions& o) {
 }
 
 TimeSteppingState make_time_stepping_state(const TableProfile& profile, const ObjectState& object) {
-  require_finite("t0", object.t);
-  require_moderate("x0", object.x);
-  require_moderate("v0", object.xd);
+  validate(object);
   TimeSteppingState s;
   s.object = object;
   s.t0 = object.t;

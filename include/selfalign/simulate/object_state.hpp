@@ -15,6 +15,10 @@ struct ObjectState {
   double xd = 0;  ///< relative velocity x' [-]
 };
 
+/// The start state every solver takes: throws InvalidParameter naming t0 (not finite), x0 or
+/// v0 (not finite, or beyond 1e50 in magnitude).
+void validate(const ObjectState& start);
+
 /// A sampled trajectory (columns of equal length) [-].
 struct Trajectory {
   std::vector<double> t, x, xd, y, yd, ydd;  ///< time, object x, x', table y, y', y''
