@@ -93,21 +93,13 @@ void PeriodMap::choose_solver() {
   const PiecewisePolynomialProfile* pwp = profile_.piecewise_polynomial();
   const SmoothMotion* motion = profile_.smooth();
   const PiecewiseAffineFriction* affine = friction_->piecewise_affine();
-  if (law_.velocity_dependent() && affine && integrable_profile(profile_)) {
-    validate(options_.integrator);
-    integrator_ = std::make_unique<IntegratorSetup>(
-        IntegratorSetup{profile_, *affine, law_, options_.integrator});
-  } else if (law_.velocity_dependent()) {  // explicit speed dependence in the stepper
-    if (options_.steps_per_period < 1)
-      throw InvalidParameter("steps_per_period", options_.steps_per_period, "must be >= 1");
-    stepping_ = {profile_.period() / options_.steps_per_period, options_.theta};
-    validate(stepping_);
-  } else if (pwp && affine) {
+  const bool closed_form = !law_.velocity_dependent();
+  if (closed_form && pwp && affine) {
     exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
-  } else if (motion && affine &&
-             (piecewise_constant_level(*affine) || motion->fourier_series())) {
+  } else if (closed_form && motion && affine && smooth_solver_applies(*motion, *affine)) {
     smooth_ = std::make_unique<SmoothSetup>(SmoothSetup{*motion, *affine, law_});
-  } else if (motion && affine) {  // a smooth motion on sloped pieces: no closed form here
+  } else if (affine && integrable_profile(profile_)) {
+    // A speed-dependent law, or a smooth motion on slopes the smooth solver cannot take.
     validate(options_.integrator);
     integrator_ = std::make_unique<IntegratorSetup>(
         IntegratorSetup{profile_, *affine, law_, options_.integrator});

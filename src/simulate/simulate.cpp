@@ -144,31 +144,28 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   double grid = o.output_step;
   Method method = o.method;
   const PiecewiseAffineFriction* affine = friction.piecewise_affine();
-  // No closed form: a speed-dependent law, or a smooth motion on a level with slopes.
+  // No closed form: a speed-dependent law, or a smooth motion the smooth solver cannot take.
   if (method == Method::exact &&
-      (law.velocity_dependent() ||
-       (!profile.piecewise_polynomial() && profile.smooth() && !profile.smooth()->fourier_series() &&
-        affine && !piecewise_constant_level(*affine))))
+      (law.velocity_dependent() || (!profile.piecewise_polynomial() && profile.smooth() &&
+                                    affine && !smooth_solver_applies(*profile.smooth(), *affine))))
     method = Method::integrator;
   if (method == Method::integrator) {
     validate(o.integrator);
-    const PiecewiseAffineFriction* f = friction.piecewise_affine();
     if (!integrable_profile(profile))
       throw InvalidParameter("method", to_string(o.method),
                              "the slip integrator needs a piecewise-polynomial or smooth profile (" +
                                  profile.kind() + " here); use time-stepping");
-    if (!f)
+    if (!affine)
       throw InvalidParameter("method", to_string(o.method),
                              "the slip integrator needs a piecewise-affine friction map; use "
                              "time-stepping");
-    runner = std::make_unique<IntegratorRunner>(profile, *f, law, o.integrator, initial);
+    runner = std::make_unique<IntegratorRunner>(profile, *affine, law, o.integrator, initial);
     if (grid == 0) grid = profile.period() / 200;
   } else if (method == Method::exact) {
     const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
-    const PiecewiseAffineFriction* f = friction.piecewise_affine();
     const SmoothMotion* motion = profile.smooth();
-    if (!p && motion && f && (piecewise_constant_level(*f) || motion->fourier_series())) {
-      runner = std::make_unique<SmoothRunner>(*motion, *f, law, initial);
+    if (!p && motion && affine && smooth_solver_applies(*motion, *affine)) {
+      runner = std::make_unique<SmoothRunner>(*motion, *affine, law, initial);
       if (grid == 0) grid = profile.period() / 200;
     } else {
       if (!p)
@@ -176,10 +173,10 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
                                "needs a piecewise-constant or piecewise-linear acceleration, or a "
                                "smooth profile on a piecewise-constant friction map (" +
                                    profile.kind() + " here); use time-stepping");
-      if (!f)
+      if (!affine)
         throw InvalidParameter("method", "exact",
                                "needs a piecewise-affine friction map; use time-stepping");
-      runner = std::make_unique<ExactRunner>(*p, *f, law, initial);
+      runner = std::make_unique<ExactRunner>(*p, *affine, law, initial);
       if (grid == 0) grid = profile.period() / 200;
     }
   } else {

@@ -183,9 +183,14 @@ bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept 
   return true;
 }
 
+bool smooth_solver_applies(const SmoothMotion& motion,
+                           const PiecewiseAffineFriction& friction) noexcept {
+  return motion.fourier_series() != nullptr || piecewise_constant_level(friction);
+}
+
 std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
                            ArcSink* sink) {
-  if (!piecewise_constant_level(setup.friction) && !setup.motion.fourier_series())
+  if (!smooth_solver_applies(setup.motion, setup.friction))
     throw InvalidParameter("friction", "sloped pieces",
                            "the smooth-profile solver takes sloped friction pieces under a Fourier "
                            "motion only (use the slip integrator or time-stepping)");

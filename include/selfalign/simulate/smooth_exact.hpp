@@ -48,6 +48,11 @@ struct SmoothSetup {
 /// motions only).
 bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept;
 
+/// True when the smooth solver takes this motion on this level: a piecewise-constant level
+/// (any smooth motion), or any piecewise-affine level under a Fourier series.
+bool smooth_solver_applies(const SmoothMotion& motion,
+                           const PiecewiseAffineFriction& friction) noexcept;
+
 /// Advances `state` to t_end (>= state.t), calling sink (if any) for every arc (DrivenArc for
 /// slips on constant pieces, DrivenAffineArc on sloped ones, StickArc for sticks). Returns the
 /// number of arcs. Throws InvalidParameter for a level with sloped pieces under a motion that
