@@ -95,7 +95,6 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   // A neighbour's slope (with its x'_0s as the start) makes the first step a secant step.
   const bool hinted = std::isfinite(o.initial_slope) && o.initial_slope < 0;
   double slope = hinted ? o.initial_slope : std::numeric_limits<double>::quiet_NaN();
-  double best_v = v_start, best_g = g_prev;
   bool done = g_prev == 0;
   double v = v_prev + g_prev;  // plain iterate
   if (hinted && slope < -1e-3 && std::abs(v_prev - g_prev / slope) <= 2 * V)
@@ -120,15 +119,11 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     note_side(v, g);
     if (std::abs(g - g_prev) > kSlopeResolution * (rounding(v) + rounding(v_prev)))
       slope = (g - g_prev) / (v - v_prev);
-    const bool stalled = secant_step && !(std::abs(g) <= kStallFactor * std::abs(best_g));
+    const bool stalled = secant_step && !(std::abs(g) <= kStallFactor * std::abs(best.g));
     stalls = stalled ? stalls + 1 : 0;
-    if (std::abs(g) <= std::abs(best_g)) {
-      best_v = v;
-      best_g = g;
-      best = std::move(current);
-    }
-    if (g == 0 || error_estimate(best_v, best_g, slope) <= tol * scale(best_v) ||
-        (stalls >= kStallsToStop && std::abs(best_g) <= kRoundingLevel * scale(best_v))) {
+    if (std::abs(g) <= std::abs(best.g)) best = std::move(current);
+    if (g == 0 || error_estimate(best.v, best.g, slope) <= tol * scale(best.v) ||
+        (stalls >= kStallsToStop && std::abs(best.g) <= kRoundingLevel * scale(best.v))) {
       done = true;
       break;
     }
@@ -151,7 +146,7 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     // A secant step that leaves the bracket, or one that stalled far above the rounding floor
     // (a kink in g between iterates can trap the secant in a cycle), is replaced by bisection.
     const bool bracketed = have_above && have_below && below < above;
-    if (bracketed && std::abs(best_g) > kRoundingLevel * scale(best_v) &&
+    if (bracketed && std::abs(best.g) > kRoundingLevel * scale(best.v) &&
         (stalls >= 1 || (secant_step && !(next > below && next < above)))) {
       next = 0.5 * (above + below);
       secant_step = false;
@@ -160,8 +155,8 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
     g_prev = g;
     v = next;
   }
-  v = done ? best_v : v;
-  r.x_dot_0s_error = done ? error_estimate(best_v, best_g, slope) : kInf;
+  v = done ? best.v : v;
+  r.x_dot_0s_error = done ? error_estimate(best.v, best.g, slope) : kInf;
   r.slope = slope;
   done = done && std::abs(v) <= 2 * V;
   r.converged = done;
