@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "../tests/opaque_profile.hpp"  // the tests' closed-form-hiding wrapper
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/friction/friction_map.hpp"
@@ -472,16 +473,7 @@ void fourier_steady_state_exact(benchmark::State& st) {
 void fourier_steady_state_moreau(benchmark::State& st) {
   const FourierProfile& p = fig6_like_order12();
   const double v_exact = steady_state(p).v_bar;
-  struct Opaque final : TableProfile {  // the same motion, without its closed form
-    const TableProfile& q;
-    explicit Opaque(const TableProfile& r) : q(r) {}
-    double period() const override { return q.period(); }
-    TableState state(double t) const override { return q.state(t); }
-    double velocity(double t) const override { return q.velocity(t); }
-    double peak_acceleration() const override { return q.peak_acceleration(); }
-    double stroke() const override { return q.stroke(); }
-    std::string kind() const override { return "opaque"; }
-  } hidden(p);
+  const testing_support::Opaque hidden(p);  // the same motion, without its closed form
   SteadyStateOptions o;
   o.steps_per_period = static_cast<int>(st.range(0));
   SteadyState r;
