@@ -16,6 +16,12 @@ namespace selfalign::detail {
 
 inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// A step shorter than this at time t has converged onto its event (16 roundings of t): the
+// stepping solvers' (smooth_exact.cpp, slip_integrator.cpp) test for "no shorter step left".
+inline double time_resolution(double t) {
+  return 16 * std::numeric_limits<double>::epsilon() * (std::abs(t) + 1e-300);
+}
+
 struct SlipEvent {
   double tau = kInf;                   ///< time of the event after the arc's start [-]
   ArcEnd end = ArcEnd::horizon;        ///< velocity_zero, friction_boundary, or horizon: none

@@ -12,6 +12,7 @@
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "arc_events.hpp"
 #include "smooth_stick.hpp"
 
 namespace selfalign {
@@ -20,15 +21,13 @@ namespace {
 
 namespace odeint = boost::numeric::odeint;
 using State = std::array<double, 2>;  // (x, x')
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using detail::kInf;
 constexpr int kSamplesPerStep = 4;         // sign checks of every step's dense output
 constexpr double kMaxStepPerPeriod = 1.0 / 32;  // longest step, in table periods
 constexpr long long kMaxIntervals = 2'000'000'000;  // a guard against a stalled run
 constexpr std::size_t kNoWatch = static_cast<std::size_t>(-1);
 
-double time_resolution(double t) {
-  return 16 * std::numeric_limits<double>::epsilon() * (std::abs(t) + 1e-300);
-}
+using detail::time_resolution;
 
 // The table acceleration on one integration window, extended smoothly past the window's end:
 // a segment's polynomial a0 + j (t - tb) of a piecewise-polynomial profile, or the smooth
@@ -45,16 +44,16 @@ class Forcing {
     const auto segs = pwp_->segments();
     double n = std::floor(t / period_);
     std::size_t i = pwp_->segment_at(t - n * period_);
-    for (int pass = 0; pass < 2; ++pass) {  // t at a window's end up to rounding: the next one
-      const double end = i + 1 < segs.size() ? n * period_ + segs[i + 1].begin : (n + 1) * period_;
-      if (end - t > time_resolution(t)) break;
-      if (++i == segs.size()) i = 0, n += 1;
-    }
+    auto end_of = [&] {  // segment i of period n ends where the next begins
+      return i + 1 < segs.size() ? n * period_ + segs[i + 1].begin : (n + 1) * period_;
+    };
+    for (int pass = 0; pass < 2 && !(end_of() - t > time_resolution(t)); ++pass)
+      if (++i == segs.size()) i = 0, n += 1;  // t at a window's end up to rounding: the next
     const AccelerationSegment& s = segs[i];
     begin_ = n * period_ + s.begin;
     a0_ = s.accel;
     jerk_ = s.jerk;
-    return i + 1 < segs.size() ? n * period_ + segs[i + 1].begin : (n + 1) * period_;
+    return end_of();
   }
   double accel(double t) const {
     return pwp_ ? a0_ + jerk_ * (t - begin_) : smooth_->derivatives(t)[2];

@@ -43,10 +43,7 @@ double safe_step_local(double f, double f1, double c2, double c3, double from_ab
   return P(d) >= 0 ? d : 0.0;
 }
 
-// A step shorter than this at time t has converged (16 roundings of t).
-double time_resolution(double t) {
-  return 16 * std::numeric_limits<double>::epsilon() * (std::abs(t) + 1e-300);
-}
+using detail::time_resolution;
 
 constexpr long long kMaxSteps = 100'000'000;  // a guard, never reached by resolvable motions
 
