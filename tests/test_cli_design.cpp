@@ -2,7 +2,10 @@
 // infeasible request as a one-line error that leaves no file.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -36,7 +39,7 @@ TEST(CliDesign, ReportsTheProfileAndWritesTheControllerCsv) {
   EXPECT_LE(j["profile"]["velocity_peak_m_per_s"].get<double>(), 0.2 * (1 + 1e-12));
   const auto rows = lines(read_text(box.work_file("profile.csv")));
   ASSERT_GT(rows.size(), 3u);
-  EXPECT_EQ(rows[0], "t,y,y_dot,y_ddot");
+  EXPECT_EQ(rows[0], "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3");
 }
 
 TEST(CliDesign, InfeasibleRequestIsOneLineNamingTheLimit) {
@@ -51,6 +54,107 @@ TEST(CliDesign, MisuseIsOneLineNamingTheParameter) {
   std::vector<std::string> args = kSmall;
   args.insert(args.end(), {"--width", "-1", "--out", "d.json"});
   expect_clean_failure(box, box.run(args), {"width", "must be > 0"});
+}
+
+TEST(CliDesign, NominalDesignOfTheIssueCarriesAFragilityWarning) {
+  // The issue's task: y2'' = c_mu mu g exactly, so mu or c_mu a little low never stops.
+  CliSandbox box;
+  const auto r = box.run({"design", "--mass", "0.02", "--width", "0.003", "--mu", "0.2",
+                          "--c-mu", "2.5", "--distance", "0.04", "--stroke-max", "0.002",
+                          "--acceleration-max", "50", "--frequency-max", "30", "--tolerance",
+                          "1e-4", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_TRUE(j["fragility"]["fragile"].get<bool>());
+  EXPECT_LT(j["fragility"]["stop_margin"].get<double>(), 0.05);
+  ASSERT_FALSE(j["warnings"].empty());
+  EXPECT_NE(j["warnings"][0].get<std::string>().find("never stops"), std::string::npos);
+  EXPECT_TRUE(j["fragility"]["end_shift_mu_m"].is_null());  // mu 5% low: no end position
+}
+
+TEST(CliDesign, RobustDesignReportsVerificationAndActuatorCsv) {
+  CliSandbox box;
+  std::vector<std::string> args = kSmall;
+  args.insert(args.end(), {"--tolerance", "0.003", "--uncertain", "mu=normal:0.3,3%", "--robust",
+                           "--screening-runs", "50", "--verification-runs", "400", "--json",
+                           "--profile-csv", "p.csv", "--sample-rate", "1000", "--moving-mass",
+                           "2"});
+  const auto r = box.run(args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_TRUE(j.contains("robust"));
+  EXPECT_EQ(j["robust"]["verification"]["runs"].get<int>(), 400);
+  const double p = j["robust"]["verification"]["p_within"].get<double>();
+  EXPECT_EQ(j["robust"]["meets_target"].get<bool>(),
+            j["robust"]["verification"]["p_within_95ci"][0].get<double>() >= 0.99);
+  EXPECT_GE(p, 0);
+  // Actuator-ready: n = round(period x rate) rows, no repeated endpoint, the rate adjusted so
+  // the period is n samples: t_i = i period / n, and force = mass x y''.
+  const auto rows = lines(read_text(box.work_file("p.csv")));
+  const long long n = j["profile_csv"]["samples_per_period"].get<long long>();
+  ASSERT_EQ(static_cast<long long>(rows.size()), n + 1);
+  EXPECT_EQ(rows[0], "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3,force_n");
+  const double period = j["profile"]["period_s"].get<double>();
+  EXPECT_EQ(n, std::llround(period * 1000));
+  EXPECT_NEAR(j["profile_csv"]["sample_rate_hz"].get<double>(), n / period, 1e-9);
+  const auto fields = [](const std::string& row) {
+    std::vector<double> v;
+    std::stringstream ss(row);
+    std::string item;
+    while (std::getline(ss, item, ',')) v.push_back(std::stod(item));
+    return v;
+  };
+  const std::vector<double> last = fields(rows.back());
+  EXPECT_NEAR(last[0], period * (n - 1) / n, 1e-15);
+  for (std::size_t i = 1; i < rows.size(); i += 7) {
+    const std::vector<double> v = fields(rows[i]);
+    EXPECT_DOUBLE_EQ(v[5], 2 * v[3]);
+  }
+}
+
+TEST(CliDesign, BadUncertaintyIsOneLineNamingTheParameter) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--uncertain", "mu=normal:0.3,-0.01"}, "mu.sd"},
+      {{"--uncertain", "mu=normal:0.3,0.01,0.35,0.4"}, "mu.lower"},
+      {{"--uncertain", "width=samples:"}, "width.samples"},
+      {{"--uncertain", "mu=normal:0.3,0.01", "--robust", "--probability-target", "1"},
+       "probability_target"},
+      {{"--uncertain", "mu=normal:0.3,0.01", "--robust", "--probability-target", "0"},
+       "probability_target"},
+      {{"--uncertain", "friction=normal:0.3,0.01"}, "uncertain"},
+  };
+  for (const auto& [extra, name] : cases) {
+    CliSandbox box;
+    std::vector<std::string> args = kSmall;
+    args.insert(args.end(), {"--tolerance", "0.001", "--out", "d.json", "--profile-csv", "p.csv"});
+    args.insert(args.end(), extra.begin(), extra.end());
+    expect_clean_failure(box, box.run(args), {name});
+  }
+}
+
+TEST(CliMonteCarlo, EvaluatesADesignReportDeterministically) {
+  CliSandbox box;
+  std::vector<std::string> args = kSmall;
+  args.insert(args.end(), {"--tolerance", "0.001", "--out", "d.json"});
+  ASSERT_EQ(box.run(args).exit_code, 0);
+  const auto mc = [&](const std::string& threads) {
+    return box.run({"montecarlo", "--design", "d.json", "--tolerance", "0.001", "--uncertain",
+                    "mu=normal:0.3,3%", "--uncertain", "c_mu=uniform:2.4,2.6", "--runs", "300",
+                    "--threads", threads, "--json", "--worst-case", "--interior-points", "8"});
+  };
+  const auto one = mc("1"), two = mc("2");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(one.out, two.out);  // identical for any thread count
+  const json j = json::parse(one.out);
+  EXPECT_EQ(j["monte_carlo"]["runs"].get<int>(), 300);
+  EXPECT_NE(j["worst_case"]["method"].get<std::string>().find("corners"), std::string::npos);
+  EXPECT_EQ(j["uncertainty"]["mu"]["distribution"].get<std::string>(),
+            "normal(mean=0.3, sd=0.009)");
+  CliSandbox bad;
+  expect_clean_failure(bad, bad.run({"montecarlo", "--period-s", "0.05", "--stroke-m", "0.0005",
+                                     "--a2", "5", "--a3", "4", "--x-mu", "0.05", "--uncertain",
+                                     "mu=normal:0.3,-1%", "--out", "m.json"}),
+                       {"mu.sd"});
 }
 
 }  // namespace

@@ -1,10 +1,13 @@
 // `selfalign design`: from SI actuator limits and an object to the three-phase table profile
 // that minimises the process time T_p subject to accumulation (Δx_d = 0) or a positioning
-// tolerance (design/process_design.hpp). Reports the profile, v̄, T_p, the end position and its
-// band, the motion case, and writes the profile sampled for a motion controller.
+// tolerance (design/process_design.hpp), with its fragility to mu and c_mu
+// (robust/fragility.hpp); under --robust, the fastest profile that keeps P(within tolerance)
+// >= a target under the stated uncertainty (robust/robust_design.hpp). Writes the profile
+// sampled for a motion controller.
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -12,10 +15,14 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "report.hpp"
+#include "robust_flags.hpp"
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "selfalign/robust/robust_design.hpp"
 #include "selfalign/units.hpp"
 
 namespace selfalign::cli {
@@ -25,24 +32,57 @@ using nlohmann::json;
 
 struct DesignFlags {
   DesignRequest request;
-  bool as_json = false;
+  UncertaintyFlags uncertainty;
+  bool robust = false;
+  RobustOptions robust_options;
+  double fragility_level = 0.05;
+  int monte_carlo_runs = 0;  // nominal design: Monte Carlo under the uncertainty (0: none)
+  bool as_json = false, quiet = false;
   std::optional<std::string> out, profile_csv;
   double sample_rate = 10'000;  // [Hz]
+  std::optional<double> moving_mass;  // [kg]
 };
 
-// One period of the recommended profile, SI: t [s], y [m], y' [m/s], y'' [m/s^2].
-std::string profile_csv(const DesignRequest& q, const DesignResult& d, double rate) {
+// y''' at phase t [-]: the ramp's jerk on a jerk-limited profile; 0 on a jump profile's
+// plateaus (its jerk is impulsive at the switches).
+double jerk_at(const TableProfile& profile, double t) {
+  const PiecewisePolynomialProfile* pp = profile.piecewise_polynomial();
+  if (!pp) return std::numeric_limits<double>::quiet_NaN();
+  double jerk = 0;
+  for (const AccelerationSegment& s : pp->segments())
+    if (s.begin <= t) jerk = s.jerk;
+  return jerk;
+}
+
+// One period of the profile, SI, for a motion controller: n = round(period x rate) samples at
+// t_i = i period / n (i < n: no repeated endpoint, so playing it in a loop is seamless); the
+// rate becomes n / period, reported in `samples`.
+std::string profile_csv(const DesignRequest& q, const DesignResult& d, double rate,
+                        const std::optional<double>& moving_mass, json& samples) {
   const Scales sc(q.width, q.mu, q.gravity);
   const std::unique_ptr<TableProfile> recommended = recommended_profile(d);
   const TableProfile& profile = *recommended;
   const long long n = std::max(2LL, std::llround(d.period * rate));
-  std::string csv = "t,y,y_dot,y_ddot\n";
-  for (long long i = 0; i <= n; ++i) {
+  const double actual_rate = static_cast<double>(n) / d.period;
+  samples = {{"samples_per_period", n},
+             {"sample_rate_hz", actual_rate},
+             {"requested_sample_rate_hz", rate},
+             {"rate_adjusted", actual_rate != rate},
+             {"columns", moving_mass ? "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3,force_n"
+                                     : "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3"}};
+  if (moving_mass) samples["moving_mass_kg"] = *moving_mass;
+  std::string csv = samples["columns"].get<std::string>() + "\n";
+  const double jerk_si = sc.acceleration_to_si(1) / sc.time();
+  for (long long i = 0; i < n; ++i) {
     const double t = d.period * static_cast<double>(i) / static_cast<double>(n);
-    const TableState s = profile.state(sc.time_from_si(t));
+    const double tm = sc.time_from_si(t);
+    const TableState s = profile.state(tm);
+    const double ydd = sc.acceleration_to_si(s.ydd);
     csv += csv_number(t) + ',' + csv_number(sc.length_to_si(s.y)) + ',' +
-           csv_number(sc.velocity_to_si(s.yd)) + ',' + csv_number(sc.acceleration_to_si(s.ydd)) +
-           '\n';
+           csv_number(sc.velocity_to_si(s.yd)) + ',' + csv_number(ydd) + ',' +
+           csv_number(jerk_at(profile, tm) * jerk_si);
+    if (moving_mass) csv += ',' + csv_number(*moving_mass * ydd);
+    csv += '\n';
   }
   return csv;
 }
@@ -62,8 +102,8 @@ json design_json(const DesignRequest& q, const DesignResult& d) {
   j["case_name"] = describe(d.motion_case);
   j["v_bar_m_per_s"] = number_or_null(d.v_bar);
   j["x_mu_m"] = d.x_mu;
-  j["end_position_m"] = d.end_position;
-  j["error_band_m"] = d.error_band;
+  j["end_position_m"] = number_or_null(d.end_position);
+  j["error_band_m"] = number_or_null(d.error_band);
   j["process_time_s"] = number_or_null(d.process_time);
   j["stop"] = to_string(d.stop);
   j["requirement"] = q.tolerance == 0 ? "accumulation" : "tolerance";
@@ -80,6 +120,19 @@ std::string design_table(const json& j) {
   for (const char* key : {"case_name", "v_bar_m_per_s", "x_mu_m", "end_position_m",
                           "error_band_m", "process_time_s", "stop"})
     t.row(key, table_text(j[key]));
+  if (j.contains("robust")) {
+    const json& r = j["robust"];
+    t.row("robust meets_target", table_text(r["meets_target"]));
+    t.row("robust p_within", table_text(r["verification"]["p_within"]));
+    t.row("robust time_quantile_s", table_text(r["time_quantile_value_s"]));
+    t.row("robust binding", table_text(r["binding"]));
+    t.row("robust message", table_text(r["message"]));
+  }
+  if (j.contains("monte_carlo")) {
+    t.row("monte_carlo p_stop", table_text(j["monte_carlo"]["p_stop"]));
+    t.row("monte_carlo p_within", table_text(j["monte_carlo"]["p_within"]));
+  }
+  for (const json& w : j["fragility"]["warnings"]) t.row("WARNING (fragile)", w.get<std::string>());
   return t.str();
 }
 
@@ -88,12 +141,70 @@ void run_design(const DesignFlags& f) {
   if (f.profile_csv) require_output_path("profile-csv", *f.profile_csv);
   if (f.out && f.profile_csv && *f.out == *f.profile_csv)
     throw InvalidParameter("profile-csv", *f.profile_csv, "must differ from --out");
-  const DesignResult d = design_process(f.request);
-  if (!d.feasible) throw std::runtime_error("design infeasible: " + d.message);
-  const json report = design_json(f.request, d);
+  if (!(f.fragility_level > 0 && f.fragility_level < 1))
+    throw InvalidParameter("fragility-level", f.fragility_level, "must be in (0, 1)");
+  if (f.moving_mass && !(*f.moving_mass > 0 && std::isfinite(*f.moving_mass)))
+    throw InvalidParameter("moving-mass", *f.moving_mass, "must be > 0 [kg]");
+  if (f.monte_carlo_runs < 0 || f.monte_carlo_runs > 10'000'000)
+    throw InvalidParameter("monte-carlo", f.monte_carlo_runs, "must be in [0, 1e7]");
+  const ProcessUncertainty uncertainty = f.uncertainty.read();
+  const DesignRequest& q = f.request;
+  bool any_uncertain = false;
+  for (const UncertainInput& in : uncertain_inputs())
+    any_uncertain = any_uncertain || is_uncertain(uncertainty.*in.member);
+  json report;
+  DesignResult d;
+  if (f.robust) {
+    if (!any_uncertain)
+      throw InvalidParameter("uncertain", "none",
+                             "--robust needs at least one --uncertain input (or --uncertainty-file)");
+    validate(q);
+    RobustOptions o = f.robust_options;
+    ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
+    o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
+    const RobustDesignResult r = design_robust(q, uncertainty, o);
+    bar.finish();
+    if (r.verified == 0) throw std::runtime_error("design infeasible: " + r.message);
+    d = r.design;
+    report = design_json(q, d);
+    report["robust"] = {
+        {"meets_target", r.meets_target},
+        {"message", r.message},
+        {"binding", r.binding},
+        {"probability_target", o.probability_target},
+        {"time_quantile", o.time_quantile},
+        {"time_quantile_value_s", number_or_null(r.time_quantile_value)},
+        {"failures", {{"no_motion", r.failures.no_motion}, {"no_stop", r.failures.no_stop},
+                      {"outside", r.failures.outside}}},
+        {"candidates", r.candidates},
+        {"screened", r.screened},
+        {"verified", r.verified},
+        {"verification", monte_carlo_json(r.verification, o.time_quantile, 20)}};
+  } else {
+    d = design_process(q);
+    if (!d.feasible) throw std::runtime_error("design infeasible: " + d.message);
+    report = design_json(q, d);
+    if (f.monte_carlo_runs > 0) {
+      if (!any_uncertain)
+        throw InvalidParameter("monte-carlo", f.monte_carlo_runs,
+                               "needs at least one --uncertain input (or --uncertainty-file)");
+      MonteCarloOptions mo;
+      mo.runs = f.monte_carlo_runs;
+      mo.seed = f.robust_options.seed;
+      mo.threads = f.robust_options.threads;
+      report["monte_carlo"] = monte_carlo_json(monte_carlo(q, process_of(d), uncertainty, mo),
+                                               f.robust_options.time_quantile, 20);
+    }
+  }
+  if (any_uncertain) report["uncertainty"] = uncertainty_json(q, uncertainty);
+  report["fragility"] = fragility_json(fragility(q, process_of(d), f.fragility_level));
+  report["warnings"] = report["fragility"]["warnings"];
   if (f.profile_csv) {
+    json samples;
+    const std::string csv = profile_csv(q, d, f.sample_rate, f.moving_mass, samples);
+    report["profile_csv"] = samples;
     AtomicFileSet files;
-    files.add(*f.profile_csv, profile_csv(f.request, d, f.sample_rate), "profile-csv");
+    files.add(*f.profile_csv, csv, "profile-csv");
     if (f.out) files.add(*f.out, report.dump(2) + "\n", "out");
     files.commit();
     if (!f.out) deliver_report(report, design_table(report), f.as_json, std::nullopt);
@@ -109,37 +220,15 @@ void add_design_command(CLI::App& app) {
       "design",
       "Recommend a three-phase table profile from SI actuator limits: minimise the process "
       "time T_p subject to accumulation (Δx_d = 0) or --tolerance. Reports the profile, v̄, "
-      "T_p [s], the end position and its band, the motion case; --profile-csv writes one "
-      "period (t,y,y_dot,y_ddot in s, m, m/s, m/s^2) for a motion controller. An infeasible "
-      "request is an error naming the binding limit.");
+      "T_p [s], the end position and its band, the motion case, and its fragility to mu and "
+      "c_mu (warnings when a few per cent error stops it from stopping or moves the end "
+      "beyond the tolerance). --robust: the fastest profile (a T_p quantile) with "
+      "P(within --tolerance) >= --probability-target under the --uncertain inputs, "
+      "verified by Monte Carlo. --profile-csv writes one period for a motion controller. An "
+      "infeasible request is an error naming the binding limit.");
   auto f = std::make_shared<DesignFlags>();
   DesignRequest& q = f->request;
-  auto num = [&](const char* flag, double& field, const std::string& help) {
-    sub->add_option(flag, field, help + " Default: " + format_number(field))->group("Request");
-  };
-  num("--mass", q.mass, "object mass [kg] (reported only).");
-  num("--width", q.width, "object width [m], > 0.");
-  num("--mu", q.mu, "low-friction coefficient mu_1 [-], > 0.");
-  num("--c-mu", q.c_mu, "friction ratio mu_2/mu_1 of the stopping region [-], > 1.");
-  num("--g", q.gravity, "gravitational acceleration [m/s^2].");
-  num("--distance", q.distance, "desired end position from the start [m], > 0.");
-  num("--stroke-max", q.stroke_max, "actuator stroke limit [m], > 0.");
-  num("--frequency-min", q.frequency_min, "lowest table frequency [Hz], > 0.");
-  num("--frequency-max", q.frequency_max, "highest table frequency [Hz].");
-  num("--velocity-max", q.velocity_max, "table velocity limit [m/s], > 0.");
-  num("--acceleration-max", q.acceleration_max, "table acceleration limit [m/s^2], > 0.");
-  sub->add_option("--jerk-max", q.jerk_max,
-                  "table jerk limit [m/s^3], > 0: each switch becomes a ramp at this jerk "
-                  "(jerk-limited three-phase profile). Default: none (jump accelerations)")
-      ->group("Request");
-  sub->add_option("--mu-static", q.mu_static,
-                  "static friction coefficient [-], >= mu. Default: mu")
-      ->group("Request");
-  sub->add_option("--mu-backward", q.mu_backward,
-                  "kinetic friction coefficient of backward slip [-], <= mu-static. Default: mu")
-      ->group("Request");
-  num("--tolerance", q.tolerance,
-      "allowed positioning error Δx_d [m]; 0 requires accumulation (Δx_d = 0).");
+  add_request_flags(sub, q);
   sub->add_option("--acceleration-grid", q.acceleration_grid,
                   "candidates per acceleration axis, in [2, 200]")->group("Search");
   sub->add_option("--period-grid", q.period_grid, "candidate periods, in [1, 100]")
@@ -149,15 +238,53 @@ void add_design_command(CLI::App& app) {
   sub->add_option("--entries", q.entries,
                   "steady entries per candidate (Sect. 7.1), in [2, 1000]")
       ->group("Search");
+  add_uncertainty_flags(sub, f->uncertainty);
+  RobustOptions& ro = f->robust_options;
+  sub->add_flag("--robust", f->robust,
+                "design for the uncertainty: minimise the --time-quantile of T_p subject to "
+                "P(|end - distance| <= tolerance) >= --probability-target (needs --tolerance > 0 "
+                "and an --uncertain input)")
+      ->group("Robust");
+  sub->add_option("--probability-target", ro.probability_target,
+                  "required P(within tolerance), in (0, 1). Default: 0.99")->group("Robust");
+  sub->add_option("--time-quantile", ro.time_quantile,
+                  "the quantile of T_p minimised, in (0, 1). Default: 0.99")->group("Robust");
+  sub->add_option("--screening-runs", ro.screening_runs,
+                  "Monte-Carlo draws per candidate in the screen, in [10, 1e5]. Default: 200")
+      ->group("Robust");
+  sub->add_option("--verification-runs", ro.verification_runs,
+                  "Monte-Carlo runs verifying each finalist, in [100, 1e7]. Default: 4000")
+      ->group("Robust");
+  sub->add_option("--finalists", ro.finalists, "candidates verified, in [1, 1000]. Default: 6")
+      ->group("Robust");
+  sub->add_option("--seed", ro.seed, "seed of the Monte-Carlo draws. Default: 1")->group("Robust");
+  sub->add_option("--threads", ro.threads, "worker threads, >= 0 (0: all cores). Default: 0")
+      ->group("Robust");
+  sub->add_option("--monte-carlo", f->monte_carlo_runs,
+                  "without --robust: also evaluate the nominal design by this many Monte-Carlo "
+                  "runs under the --uncertain inputs. Default: 0 (none)")
+      ->group("Robust");
+  sub->add_option("--fragility-level", f->fragility_level,
+                  "relative error of mu and c_mu the fragility check applies, in (0, 1). "
+                  "Default: 0.05")
+      ->group("Robust");
   sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");
+  sub->add_flag("--quiet", f->quiet, "no progress bar")->group("Output");
   sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE")->group("Output");
   sub->add_option("--profile-csv", f->profile_csv,
-                  "write one period of the profile, sampled at --sample-rate, to FILE")
+                  "write one period of the profile to FILE: t_s,y_m,y_dot_m_per_s,"
+                  "y_ddot_m_per_s2,y_dddot_m_per_s3[,force_n]; round(period x rate) samples, no "
+                  "repeated endpoint (loops seamlessly); the rate is adjusted to make the period "
+                  "a whole number of samples and the report says so")
       ->type_name("FILE")
       ->group("Output");
   sub->add_option("--sample-rate", f->sample_rate,
                   "profile CSV sample rate [Hz], > 0, at most 1e7 rows a period "
                   "(sample-rate / frequency-min <= 1e7)")
+      ->group("Output");
+  sub->add_option("--moving-mass", f->moving_mass,
+                  "mass the actuator moves [kg], > 0: adds force_n = mass x y'' to the profile "
+                  "CSV (inertial force; friction and the part's reaction excluded)")
       ->group("Output");
   sub->callback([f] {
     // One period has sample_rate / frequency rows; the slowest allowed frequency bounds it.

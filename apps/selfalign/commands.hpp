@@ -27,5 +27,7 @@ void add_accumulation_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_optimize_command(CLI::App& app);
 void add_design_command(CLI::App& app);
+/// `selfalign montecarlo`: a designed process under uncertain inputs (cmd_montecarlo.cpp).
+void add_montecarlo_command(CLI::App& app);
 
 }  // namespace selfalign::cli

@@ -88,6 +88,7 @@ constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_sweep_command,
     &selfalign::cli::add_optimize_command,
     &selfalign::cli::add_design_command,
+    &selfalign::cli::add_montecarlo_command,
 };
 
 }  // namespace

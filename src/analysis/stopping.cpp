@@ -185,6 +185,12 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
     advance_to_look();
     const ObjectState& obj = run.state();
     if (obj.x == previous.x && obj.xd == previous.xd) break;  // periodic orbit, not a stop
+    // No position holds the object (eq. 41 gives +inf): it can never stop for good. Once its
+    // entry is known there is nothing left to find.
+    if (std::isinf(r.x_stick_min) && !std::isnan(r.entry_time)) {
+      r.never_stops = true;
+      break;
+    }
     previous = obj;
     if (obj.xd != 0 || obj.x < x_mu) continue;
     if (sticks_permanently(friction, law, peak, obj.x)) {  // eq. (40)

@@ -7,6 +7,7 @@
 
 #include "../analysis/parallel_cells.hpp"
 #include "selfalign/analysis/positioning.hpp"
+#include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -98,30 +99,26 @@ double settling(const StoppingRun& run) {
 
 }  // namespace
 
-DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
+DesignCandidates design_candidates(const DesignRequest& q) {
   validate(q);
   const Scales sc(q.width, q.mu, q.gravity);  // L = width, so w = 1 in model units
   const double a_max = sc.acceleration_from_si(q.acceleration_max);
   const double v_max = sc.velocity_from_si(q.velocity_max);
-  const double distance = sc.length_from_si(q.distance);
-  const double tolerance = sc.length_from_si(q.tolerance);
-  const double jerk = sc.acceleration_from_si(q.jerk_max) * sc.time();  // [m/s^3] -> [-]
-  const FrictionLaw law = friction_law(q);
-  DesignResult r;
+  DesignCandidates out;
+  out.jerk = sc.acceleration_from_si(q.jerk_max) * sc.time();  // [m/s^3] -> [-]
+  const double jerk = out.jerk;
   const double a_hi = std::min(q.c_mu, a_max);
   if (a_hi <= 1) {
-    r.message = "acceleration_max = " + format_number(q.acceleration_max) +
-                " m/s^2 binds: the table must exceed mu g = " + format_number(sc.acceleration()) +
-                " m/s^2 to make the object slip";
-    return r;
+    out.message = "acceleration_max = " + format_number(q.acceleration_max) +
+                  " m/s^2 binds: the table must exceed mu g = " +
+                  format_number(sc.acceleration()) + " m/s^2 to make the object slip";
+    return out;
   }
-  // Candidate grid.
   const std::vector<double> periods = log_grid(sc.time_from_si(1 / q.frequency_max),
                                                sc.time_from_si(1 / q.frequency_min), q.period_grid);
   const std::vector<double> a2s = linear_grid(1 + (a_hi - 1) / q.acceleration_grid, a_hi,
                                               q.acceleration_grid);
   const std::vector<double> a3s = linear_grid(a_hi / q.acceleration_grid, a_hi, q.acceleration_grid);
-  std::vector<Candidate> cands;
   int non_physical = 0, too_fast = 0;
   for (double period : periods)
     for (int k = q.stroke_grid; k >= 1; --k) {
@@ -152,15 +149,30 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
             ++too_fast;
             continue;
           }
-          cands.push_back({p});
+          out.profiles.push_back(p);
         }
     }
+  if (out.profiles.empty())
+    out.message = "no three-phase profile fits the limits: " + std::to_string(non_physical) +
+                  " candidates cannot reach the stroke (stroke_max, frequency_min, "
+                  "acceleration_max and jerk_max bind: case 0), " + std::to_string(too_fast) +
+                  " exceed velocity_max = " + format_number(q.velocity_max) + " m/s";
+  return out;
+}
+
+DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
+  const DesignCandidates grid = design_candidates(q);
+  const Scales sc(q.width, q.mu, q.gravity);
+  const double distance = sc.length_from_si(q.distance);
+  const double tolerance = sc.length_from_si(q.tolerance);
+  const double jerk = grid.jerk;
+  const FrictionLaw law = friction_law(q);
+  DesignResult r;
+  std::vector<Candidate> cands;
+  for (const ThreePhaseParameters& p : grid.profiles) cands.push_back({p});
   r.candidates = static_cast<int>(cands.size());
   if (cands.empty()) {
-    r.message = "no three-phase profile fits the limits: " + std::to_string(non_physical) +
-                " candidates cannot reach the stroke (stroke_max, frequency_min, "
-                "acceleration_max and jerk_max bind: case 0), " + std::to_string(too_fast) +
-                " exceed velocity_max = " + format_number(q.velocity_max) + " m/s";
+    r.message = grid.message;
     return r;
   }
 
@@ -219,52 +231,64 @@ DesignResult design_process(const DesignRequest& q, const SweepOptions& sweep) {
     return r;
   }
 
-  // The recommended design, and its exact stopping run from rest.
-  const std::unique_ptr<TableProfile> profile = candidate_profile(best->p, jerk);
-  const TwoRegionFriction friction(best->x_mu, 1.0, q.c_mu);
+  DesignResult described = describe_design(q, best->p, best->x_mu, best->dx_d);
+  described.candidates = r.candidates;
+  described.feasible_candidates = r.feasible_candidates;
+  return described;
+}
+
+DesignResult describe_design(const DesignRequest& q, const ThreePhaseParameters& p, double x_mu,
+                             double dx_d) {
+  const Scales sc(q.width, q.mu, q.gravity);
+  const double jerk = sc.acceleration_from_si(q.jerk_max) * sc.time();
+  const FrictionLaw law = friction_law(q);
+  DesignResult r;
+  const std::unique_ptr<TableProfile> profile = candidate_profile(p, jerk);
+  const SteadyState steady = steady_state(*profile, law);
+  r.motion_case = steady.motion_case;
+  r.v_bar = sc.velocity_to_si(steady.v_bar);
+  const TwoRegionFriction friction(x_mu, 1.0, q.c_mu);
   StoppingOptions so;
   so.fractions = {kFraction};
   const StoppingRun run = stopping_run(*profile, friction, law, {0, 0, 0}, so);
   // Switch times: the jump profile's t1, t2, t3; under a jerk limit the starts of the ramps
   // down to -y2'' and up to +y3'', and the period.
-  double t1 = 0, t2 = 0, t3 = best->p.period, y_ini = 0, yd_ini = 0, swing = 0;
+  double t1 = 0, t2 = 0, t3 = p.period, y_ini = 0, yd_ini = 0, swing = 0;
   if (std::isinf(jerk)) {
-    const ThreePhaseSolution s = solve_three_phase(best->p);
+    const ThreePhaseSolution s = solve_three_phase(p);
     t1 = s.t1, t2 = s.t2, t3 = s.t3, y_ini = s.y_ini, yd_ini = s.yd_ini;
-    swing = best->p.a2 * (s.t2 - s.t1);
+    swing = p.a2 * (s.t2 - s.t1);
   } else {
     const JerkLimitedThreePhaseSolution s = solve_jerk_limited_three_phase(
-        {best->p.period, best->p.stroke, best->p.a2, best->p.a3, jerk});
+        {p.period, p.stroke, p.a2, p.a3, jerk});
     t1 = s.hold0;
     t2 = t1 + s.ramp_down + s.hold2;
     y_ini = profile->state(0).y, yd_ini = s.yd_ini, swing = s.velocity_swing;
   }
   r.feasible = run.kind != StopKind::not_stopped;
   r.message = r.feasible ? "ok" : "the recommended profile did not stop from rest";
-  r.dimensionless = best->p;
+  r.dimensionless = p;
   r.jerk_dimensionless = jerk;
   r.jerk = q.jerk_max;
-  r.x_mu_dimensionless = best->x_mu;
-  r.period = sc.time_to_si(best->p.period);
-  r.stroke = sc.length_to_si(best->p.stroke);
-  r.a2 = sc.acceleration_to_si(best->p.a2);
-  r.a3 = sc.acceleration_to_si(best->p.a3);
+  r.x_mu_dimensionless = x_mu;
+  r.period = sc.time_to_si(p.period);
+  r.stroke = sc.length_to_si(p.stroke);
+  r.a2 = sc.acceleration_to_si(p.a2);
+  r.a3 = sc.acceleration_to_si(p.a3);
   r.t1 = sc.time_to_si(t1);
   r.t2 = sc.time_to_si(t2);
   r.t3 = sc.time_to_si(t3);
   r.y_ini = sc.length_to_si(y_ini);
   r.y_dot_ini = sc.velocity_to_si(yd_ini);
   r.velocity_peak = sc.velocity_to_si(std::max(yd_ini, swing - yd_ini));
-  r.motion_case = best->motion_case;
-  r.v_bar = sc.velocity_to_si(best->v_bar);
-  r.x_mu = sc.length_to_si(best->x_mu);
+  r.x_mu = sc.length_to_si(x_mu);
   r.stop = run.kind;
   // Accumulation ends at x_stick,min in the limit; "arrived" is p = 0.999 of the way.
   const double band = run.kind == StopKind::accumulation
-                          ? (1 - kFraction) * (run.x_stick_min - best->x_mu)
-                          : best->dx_d;
+                          ? (1 - kFraction) * (run.x_stick_min - x_mu)
+                          : dx_d;
   r.end_position = sc.length_to_si(run.end_position);
-  r.error_band = sc.length_to_si(std::max(band, best->dx_d));
+  r.error_band = sc.length_to_si(std::max(band, dx_d));
   r.process_time = sc.time_to_si(run.kind == StopKind::accumulation ? run.time_to_fraction[0]
                                                                     : run.process_time);
   return r;

@@ -31,7 +31,9 @@ inline constexpr double kObservedAccumulationTol = 1e-9;
 enum class StopKind {
   permanent_stick,  ///< stuck for good at end_position (eq. 40)
   accumulation,     ///< stick positions accumulate at end_position = x_stick,min (eq. 60)
-  not_stopped       ///< max_periods reached without a proof (e.g. the object never arrives)
+  /// max_periods reached without a proof (e.g. the object never arrives), a periodic orbit
+  /// that never rests, or never_stops: proven never to stop (x_stick,min = +inf)
+  not_stopped
 };
 
 const char* to_string(StopKind kind);
@@ -55,6 +57,10 @@ struct StoppingRun {
   double process_time = 0;
   double entry_time = 0;     ///< first time x >= x_mu [-]; NaN if never
   double x_stick_min = 0;    ///< eq. (41) [-]
+  /// not_stopped with a proof: no position holds the object (s m(x) < max |y''| everywhere,
+  /// x_stick,min = +inf by eq. 41), so it never stops for good; the run ends as soon as the
+  /// object has entered the rough region (entry_time known) instead of after max_periods.
+  bool never_stops = false;
   /// For accumulation: true when proven by the map of eqs. (59), (60) (the two-region table,
   /// a three-phase profile, the paper's law); false when observed: the rest positions rose to
   /// within kObservedAccumulationTol of x_stick,min, each gap smaller than the one before

@@ -13,12 +13,13 @@
 /// T_p, end position and band then come from an exact stopping run from rest.
 /// Dimensionless inside with L = object width (so w = 1); SI in and out.
 
+#include <limits>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/stopping.hpp"
-#include <limits>
-#include <memory>
 
 #include "selfalign/analysis/sweep.hpp"
 #include "selfalign/friction/friction_law.hpp"
@@ -86,6 +87,23 @@ struct DesignResult {
   double jerk = std::numeric_limits<double>::infinity();
   double x_mu_dimensionless = 0;
 };
+
+/// The candidate grid of design_process, in model units (L = width, accelerations in mu g):
+/// periods log-spaced from 1/frequency_max to 1/frequency_min, strokes k/stroke_grid of
+/// stroke_max, (y2'', y3'') in (1, min(c_mu, a_max)] x (0, min(c_mu, a_max)], keeping the
+/// physical profiles within velocity_max. `message` says which limits bind when it is empty.
+struct DesignCandidates {
+  std::vector<ThreePhaseParameters> profiles;
+  double jerk = std::numeric_limits<double>::infinity();  ///< the jerk limit [-]
+  std::string message;
+};
+DesignCandidates design_candidates(const DesignRequest& request);
+
+/// A DesignResult for one profile (model units) and rough-region start x_mu [-]: its SI
+/// description, nominal steady state (motion case, v̄) and the exact stopping run from rest
+/// (end position, T_p); dx_d [-] widens the reported band (0: the run's own).
+DesignResult describe_design(const DesignRequest& request, const ThreePhaseParameters& profile,
+                             double x_mu, double dx_d);
 
 /// Runs the search. Infeasible requests return feasible = false with a message.
 DesignResult design_process(const DesignRequest& request, const SweepOptions& sweep = {});

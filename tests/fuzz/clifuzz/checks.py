@@ -20,7 +20,7 @@ def designated_outputs(case):
     outs = set(case.config_outputs)
     argv = case.argv()
     for i, a in enumerate(argv):
-        for flag in ("out", "summary", "profile-csv"):
+        for flag in ("out", "summary", "profile-csv", "runs-csv"):
             if a == "--" + flag and i + 1 < len(argv):
                 outs.add((argv[i + 1], flag))
             elif a.startswith("--" + flag + "="):

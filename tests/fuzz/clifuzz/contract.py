@@ -87,7 +87,23 @@ NULLABLE = {
     "sweep positioning": {"csv_file", "law.stribeck_velocity", "law.stribeck_exponent",
                           "law.viscous"},
     "optimize": {"law.stribeck_velocity", "law.stribeck_exponent", "law.viscous", "results.f", "results.v_bar", "results.max_jerk", "limits.max_jerk"},  # f, v_bar: infeasible results only (check_json); max_jerk: infinite (no limit, jumps)
-    "design": {"profile.jerk_m_per_s3"},
+    # docs/cli.md "design": jerk null without a limit; fragility's end positions and shifts
+    # null where a run with mu or c_mu off does not stop; T_p quantiles null (infinite) when
+    # more runs than 1 - q never stop; end-position quantiles null when none stopped.
+    "design": {"profile.jerk_m_per_s3", "fragility.end_m_with_c_mu_low_high",
+               "fragility.end_m_with_mu_low_high", "fragility.end_shift_c_mu_m",
+               "fragility.end_shift_mu_m", "fragility.end_nominal_m",
+               "robust.time_quantile_value_s"}
+              | {f"{block}.process_time_quantiles_s.{q}" for block in ("monte_carlo", "robust.verification") for q in ("0.5", "0.9", "0.99")}
+              | {f"{block}.end_position_quantiles_m.{q}" for block in ("monte_carlo", "robust.verification") for q in ("0.005", "0.05", "0.5", "0.95", "0.995")}
+              | {"monte_carlo.process_time_at_quantile_s", "robust.verification.process_time_at_quantile_s"},
+    # docs/cli.md "montecarlo": the same quantiles; the worst case's error, end and T_p null
+    # when a run in the box does not stop; jerk null without a limit.
+    "montecarlo": {"process.jerk_m_per_s3", "worst_case.worst_error_m",
+                   "worst_case.worst_end_position_m", "worst_case.slowest_process_time_s"}
+                  | {f"monte_carlo.process_time_quantiles_s.{q}" for q in ("0.5", "0.9", "0.99")}
+                  | {f"monte_carlo.end_position_quantiles_m.{q}" for q in ("0.005", "0.05", "0.5", "0.95", "0.995")}
+                  | {"monte_carlo.process_time_at_quantile_s"},
 }
 
 # Markers of library internals that must not reach a user's error line.

@@ -110,7 +110,9 @@ BIG_REQUESTS = {
                           ["--threads", "1000000000"]],
     "optimize": [["--order", "1000000000"], ["--segments", "1000000000"]],
     "design": [["--sample-rate", "1e12", "--profile-csv", "p.csv"],
-               ["--entries", "1000000000"], ["--acceleration-grid", "1000000000"]],
+               ["--entries", "1000000000"], ["--acceleration-grid", "1000000000"],
+               ["--uncertain", "mu=normal:0.3,3%", "--monte-carlo", "100000000"]],
+    "montecarlo": [["--runs", "100000000"], ["--worst-case", "--interior-points", "1000000"]],
 }
 
 # Base command lines: valid and cheap (a few ms in release).
@@ -133,6 +135,9 @@ BASE = {
                  ["--order", "3"], ["--segments", "3"], ["--quiet"]],
     "design": [["--acceleration-grid", "4"], ["--period-grid", "2"], ["--stroke-grid", "1"],
                ["--entries", "3"]],
+    "montecarlo": [["--period-s", "0.05"], ["--stroke-m", "0.0005"], ["--a2", "5"], ["--a3", "4"],
+                   ["--x-mu", "0.05"], ["--distance", "0.055"], ["--tolerance", "0.001"],
+                   ["--uncertain", "mu=normal:0.3,3%"], ["--runs", "50"]],
 }
 
 VALID_SAMPLES_CONSTANT = "t,ydd\n0,1\n0.5,-1\n1,0\n"

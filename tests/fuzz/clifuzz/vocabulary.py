@@ -36,7 +36,15 @@ FLAGS = {
     "design": ["mass", "width", "mu", "c-mu", "g", "distance", "stroke-max", "frequency-min",
                "frequency-max", "velocity-max", "acceleration-max", "tolerance",
                "acceleration-grid", "period-grid", "stroke-grid", "entries", "json", "out",
-               "profile-csv", "sample-rate"],
+               "profile-csv", "sample-rate", "jerk-max", "mu-static", "mu-backward", "uncertain",
+               "uncertainty-file", "robust", "probability-target", "time-quantile",
+               "screening-runs", "verification-runs", "finalists", "seed", "threads",
+               "monte-carlo", "fragility-level", "quiet", "moving-mass"],
+    "montecarlo": ["mass", "width", "mu", "c-mu", "g", "distance", "tolerance", "mu-static",
+                   "mu-backward", "uncertain", "uncertainty-file", "design", "period-s",
+                   "stroke-m", "a2", "a3", "jerk", "x-mu", "runs", "seed", "first-run",
+                   "max-periods", "threads", "time-quantile", "bins", "worst-case", "sigmas",
+                   "interior-points", "json", "quiet", "out", "runs-csv"],
 }
 SUBCOMMANDS = list(FLAGS)
 CONFIG_SUBS = [s for s in SUBCOMMANDS if "config" in FLAGS[s]]
@@ -48,20 +56,24 @@ KIND = {}  # flag -> num | int | list | text | file | out | range | bool
 for _f in ["period", "stroke", "a2", "a3", "x-mu", "width", "c-mu", "mu", "g", "length-scale",
            "mass", "t0", "x0", "v0", "periods", "step", "theta", "output-step", "fd-step", "v1",
            "v2", "x1", "from", "to", "velocity-max", "acceleration-max", "distance", "stroke-max",
-           "frequency-min", "frequency-max", "tolerance", "sample-rate"]:
+           "frequency-min", "frequency-max", "tolerance", "sample-rate", "jerk-max", "mu-static",
+           "mu-backward", "probability-target", "time-quantile", "fragility-level",
+           "moving-mass", "period-s", "stroke-m", "jerk", "sigmas"]:
     KIND[_f] = "num"
 for _f in ["samples-per-period", "max-periods", "entries", "n", "threads", "order", "segments",
-           "starts", "max-evaluations", "seed", "acceleration-grid", "period-grid", "stroke-grid"]:
+           "starts", "max-evaluations", "seed", "acceleration-grid", "period-grid", "stroke-grid",
+           "screening-runs", "verification-runs", "finalists", "monte-carlo", "runs", "first-run",
+           "bins", "interior-points"]:
     KIND[_f] = "int"
 for _f in ["durations", "accelerations", "fourier-cos", "fourier-sin", "fractions"]:
     KIND[_f] = "list"
-for _f in ["units", "method", "profile", "interpolation", "friction", "family"]:
+for _f in ["units", "method", "profile", "interpolation", "friction", "family", "uncertain"]:
     KIND[_f] = "text"
-for _f in ["config", "samples"]:
+for _f in ["config", "samples", "uncertainty-file", "design"]:
     KIND[_f] = "file"
-for _f in ["out", "summary", "profile-csv"]:
+for _f in ["out", "summary", "profile-csv", "runs-csv"]:
     KIND[_f] = "out"
 for _f in ["a2-range", "a3-range", "range"]:
     KIND[_f] = "range"
-for _f in ["json", "quiet", "log"]:
+for _f in ["json", "quiet", "log", "robust", "worst-case"]:
     KIND[_f] = "bool"

@@ -1,0 +1,207 @@
+// `selfalign montecarlo`: a designed process (a `design` report, or its profile given by flags)
+// under uncertain inputs: Monte Carlo (robust/monte_carlo.hpp) and, with --worst-case, the
+// worst case over the uncertainty box (robust/worst_case.hpp).
+
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "progress_bar.hpp"
+#include "report.hpp"
+#include "robust_flags.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+
+struct MonteCarloFlags {
+  DesignRequest request;
+  UncertaintyFlags uncertainty;
+  std::optional<std::string> design_file;
+  Process process{std::numeric_limits<double>::quiet_NaN(),
+                  std::numeric_limits<double>::quiet_NaN(),
+                  std::numeric_limits<double>::quiet_NaN(),
+                  std::numeric_limits<double>::quiet_NaN(),
+                  std::numeric_limits<double>::infinity(),
+                  std::numeric_limits<double>::quiet_NaN()};
+  MonteCarloOptions options;
+  bool worst = false;
+  WorstCaseOptions worst_options;
+  double time_quantile = 0.99;
+  int bins = 20;
+  bool as_json = false, quiet = false;
+  std::optional<std::string> out, runs_csv;
+};
+
+// The process of a `design` report: its profile and x_mu; flags given explicitly win.
+Process read_design(const std::string& path, const Process& flags) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidParameter("design", path, "must be a readable design report (JSON)");
+  std::stringstream text;
+  text << in.rdbuf();
+  json j;
+  try {
+    j = json::parse(text.str());
+  } catch (const json::parse_error&) {
+    throw InvalidParameter("design", path, "must be a JSON report of `selfalign design`");
+  }
+  const auto number = [&](const json& node, const char* key) {
+    if (!node.contains(key) || !node[key].is_number())
+      throw InvalidParameter("design", path, std::string("must hold a number ") + key);
+    return node[key].get<double>();
+  };
+  if (!j.contains("profile") || !j["profile"].is_object())
+    throw InvalidParameter("design", path, "must hold the profile of a `selfalign design` report");
+  const json& p = j["profile"];
+  Process r;
+  r.period = number(p, "period_s");
+  r.stroke = number(p, "stroke_m");
+  r.a2 = number(p, "a2_m_per_s2");
+  r.a3 = number(p, "a3_m_per_s2");
+  r.jerk = p.contains("jerk_m_per_s3") && p["jerk_m_per_s3"].is_number()
+               ? p["jerk_m_per_s3"].get<double>()
+               : std::numeric_limits<double>::infinity();
+  r.x_mu = number(j, "x_mu_m");
+  const auto keep = [](double flag, double file) { return std::isnan(flag) ? file : flag; };
+  r.period = keep(flags.period, r.period);
+  r.stroke = keep(flags.stroke, r.stroke);
+  r.a2 = keep(flags.a2, r.a2);
+  r.a3 = keep(flags.a3, r.a3);
+  r.x_mu = keep(flags.x_mu, r.x_mu);
+  if (!std::isinf(flags.jerk)) r.jerk = flags.jerk;
+  return r;
+}
+
+void run_monte_carlo(const MonteCarloFlags& f) {
+  if (f.out) require_output_path("out", *f.out);
+  if (f.runs_csv) require_output_path("runs-csv", *f.runs_csv);
+  if (f.out && f.runs_csv && *f.out == *f.runs_csv)
+    throw InvalidParameter("runs-csv", *f.runs_csv, "must differ from --out");
+  if (!(f.time_quantile > 0 && f.time_quantile < 1))
+    throw InvalidParameter("time-quantile", f.time_quantile, "must be in (0, 1)");
+  if (f.bins < 1 || f.bins > 10'000) throw InvalidParameter("bins", f.bins, "must be in [1, 1e4]");
+  const Process p = f.design_file ? read_design(*f.design_file, f.process) : f.process;
+  validate(p);
+  const ProcessUncertainty u = f.uncertainty.read();
+  const DesignRequest& q = f.request;
+  MonteCarloOptions o = f.options;
+  ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
+  o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
+  const MonteCarloResult r = monte_carlo(q, p, u, o);
+  bar.finish();
+  json report;
+  report["units"] = "si";
+  report["process"] = {{"period_s", p.period}, {"stroke_m", p.stroke}, {"a2_m_per_s2", p.a2},
+                       {"a3_m_per_s2", p.a3}, {"jerk_m_per_s3", number_or_null(p.jerk)},
+                       {"x_mu_m", p.x_mu}};
+  report["uncertainty"] = uncertainty_json(q, u);
+  report["monte_carlo"] = monte_carlo_json(r, f.time_quantile, f.bins);
+  if (f.worst) {
+    WorstCaseOptions w = f.worst_options;
+    w.threads = o.threads;
+    w.max_periods = o.max_periods;
+    report["worst_case"] = worst_case_json(worst_case(q, p, u, w));
+  }
+  TextTable t;
+  const json& m = report["monte_carlo"];
+  for (const char* key : {"runs", "stopped", "within", "never_entered", "p_stop", "p_within"})
+    t.row(key, table_text(m[key]));
+  t.row("p_within 95% CI", table_text(m["p_within_95ci"][0]) + " .. " +
+                               table_text(m["p_within_95ci"][1]));
+  for (const auto& [q_text, v] : m["process_time_quantiles_s"].items())
+    t.row("process time q" + q_text + " [s]", table_text(v));
+  t.row("process time q" + format_number(f.time_quantile) + " [s]",
+        table_text(m["process_time_at_quantile_s"]));
+  for (const auto& [q_text, v] : m["end_position_quantiles_m"].items())
+    t.row("end position q" + q_text + " [m]", table_text(v));
+  if (f.worst) {
+    const json& w = report["worst_case"];
+    t.row("worst case |end - target| [m]", table_text(w["worst_error_m"]));
+    t.row("worst case all within", table_text(w["all_within"]));
+    t.row("worst case slowest T_p [s]", table_text(w["slowest_process_time_s"]));
+    t.row("worst case search", w["method"].get<std::string>() + " (" +
+                                   std::to_string(w["evaluations"].get<int>()) + " runs in all)");
+  }
+  if (f.runs_csv) {
+    AtomicFileSet files;
+    files.add(*f.runs_csv, monte_carlo_csv(r), "runs-csv");
+    if (f.out) files.add(*f.out, report.dump(2) + "\n", "out");
+    files.commit();
+    if (!f.out) deliver_report(report, t.str(), f.as_json, std::nullopt);
+    return;
+  }
+  deliver_report(report, t.str(), f.as_json, f.out);
+}
+
+}  // namespace
+
+void add_montecarlo_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "montecarlo",
+      "Evaluate a designed process under uncertain inputs: P(stop), P(|end - distance| <= "
+      "tolerance) with its 95% interval, quantiles of T_p and of the end position, a "
+      "histogram; --worst-case searches the uncertainty box (corners, Halton points, "
+      "Nelder-Mead). Deterministic for a --seed, whatever --threads. The process comes from "
+      "--design (a `selfalign design` JSON report) or --period-s/--stroke-m/--a2/--a3/--x-mu.");
+  auto f = std::make_shared<MonteCarloFlags>();
+  add_request_flags(sub, f->request);
+  f->request.tolerance = 1e-4;
+  sub->get_option("--tolerance")->description(
+      "allowed |end - distance| [m], > 0. Default: 0.0001");
+  add_uncertainty_flags(sub, f->uncertainty);
+  sub->add_option("--design", f->design_file, "a `selfalign design --json` report to evaluate")
+      ->type_name("FILE")->group("Process");
+  Process& p = f->process;
+  sub->add_option("--period-s", p.period, "table period [s]")->group("Process");
+  sub->add_option("--stroke-m", p.stroke, "table stroke [m]")->group("Process");
+  sub->add_option("--a2", p.a2, "y2'' [m/s^2]")->group("Process");
+  sub->add_option("--a3", p.a3, "y3'' [m/s^2]")->group("Process");
+  sub->add_option("--jerk", p.jerk, "jerk limit [m/s^3] (default: jump accelerations)")
+      ->group("Process");
+  sub->add_option("--x-mu", p.x_mu, "start of the rough region [m]")->group("Process");
+  MonteCarloOptions& o = f->options;
+  sub->add_option("--runs", o.runs, "Monte-Carlo runs, in [1, 1e7]. Default: 10000")
+      ->group("Monte Carlo");
+  sub->add_option("--seed", o.seed, "seed of the draws. Default: 1")->group("Monte Carlo");
+  sub->add_option("--first-run", o.first_run,
+                  "index of the first run (a chunk of a larger study). Default: 0")
+      ->group("Monte Carlo");
+  sub->add_option("--max-periods", o.max_periods,
+                  "table periods after which a run counts as not stopped. Default: 3000")
+      ->group("Monte Carlo");
+  sub->add_option("--threads", o.threads, "worker threads, >= 0 (0: all cores). Default: 0")
+      ->group("Monte Carlo");
+  sub->add_option("--time-quantile", f->time_quantile,
+                  "the T_p quantile reported beside 0.5, 0.9, 0.99, in (0, 1). Default: 0.99")
+      ->group("Monte Carlo");
+  sub->add_option("--bins", f->bins, "histogram bins of the end position, in [1, 1e4]. Default: 20")
+      ->group("Monte Carlo");
+  sub->add_flag("--worst-case", f->worst, "also search the worst case over the uncertainty box")
+      ->group("Worst case");
+  sub->add_option("--sigmas", f->worst_options.sigmas,
+                  "an untruncated normal spans mean -/+ this many sd in the box, in (0, 8]. "
+                  "Default: 3")
+      ->group("Worst case");
+  sub->add_option("--interior-points", f->worst_options.interior_points,
+                  "Halton points inside the box, in [0, 1e5]. Default: 64")
+      ->group("Worst case");
+  sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");
+  sub->add_flag("--quiet", f->quiet, "no progress bar")->group("Output");
+  sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE")->group("Output");
+  sub->add_option("--runs-csv", f->runs_csv,
+                  "write one row per run (its inputs, stop kind, end position, T_p) to FILE")
+      ->type_name("FILE")->group("Output");
+  sub->callback([f] { run_monte_carlo(*f); });
+}
+
+}  // namespace selfalign::cli

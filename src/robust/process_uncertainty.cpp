@@ -1,0 +1,164 @@
+#include "selfalign/robust/process_uncertainty.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/units.hpp"
+
+namespace selfalign {
+namespace {
+
+double static_ratio_of(const DesignRequest& q) {
+  return std::isnan(q.mu_static) ? 1.0 : q.mu_static / q.mu;
+}
+
+const std::array<UncertainInput, kUncertainInputs> kInputs{{
+    {"mu", "-", &ProcessUncertainty::mu, [](const DesignRequest& q) { return q.mu; }, 0, false,
+     "kinetic friction coefficient of the smooth region"},
+    {"c_mu", "-", &ProcessUncertainty::c_mu, [](const DesignRequest& q) { return q.c_mu; }, 1,
+     false, "friction ratio of the rough region mu_2/mu_1"},
+    {"static_ratio", "-", &ProcessUncertainty::static_ratio, static_ratio_of, 1, true,
+     "static/kinetic ratio mu_static/mu_1"},
+    {"width", "m", &ProcessUncertainty::width, [](const DesignRequest& q) { return q.width; }, 0,
+     false, "transition width (the object's width)"},
+    {"x_mu_offset", "m", &ProcessUncertainty::x_mu_offset,
+     [](const DesignRequest&) { return 0.0; }, -std::numeric_limits<double>::infinity(), false,
+     "error of the rough region's start"},
+    {"amplitude", "-", &ProcessUncertainty::amplitude, [](const DesignRequest&) { return 1.0; },
+     0, false, "factor on the table's displacement"},
+    {"period_factor", "-", &ProcessUncertainty::period_factor,
+     [](const DesignRequest&) { return 1.0; }, 0, false, "factor on the table's period"},
+}};
+
+// The widest a normal draw reaches: u in [2^-54, 1 - 2^-54] maps to about +-8.3 sd.
+constexpr double kDrawSigmas = 8.3;
+
+std::uint64_t splitmix64(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+const std::array<UncertainInput, kUncertainInputs>& uncertain_inputs() { return kInputs; }
+
+std::size_t uncertain_input_index(const std::string& name) {
+  std::string names;
+  for (std::size_t k = 0; k < kInputs.size(); ++k) {
+    if (name == kInputs[k].name) return k;
+    names += (k ? ", " : "") + std::string(kInputs[k].name);
+  }
+  throw InvalidParameter("uncertain", name, "must name one of: " + names);
+}
+
+void set_input(ProcessUncertainty& u, const std::string& name, const std::string& text) {
+  u.*kInputs[uncertain_input_index(name)].member = parse_distribution(name, text);
+}
+
+void validate(const ProcessUncertainty& u) {
+  for (const UncertainInput& in : kInputs) {
+    const Distribution& d = u.*in.member;
+    validate(in.name, d);
+    if (!is_uncertain(d)) continue;
+    // Every draw must be a valid input: the support (a normal's to ~8.3 sd) within the domain.
+    const auto [lo, hi] = box(d, 0, kDrawSigmas);
+    if (in.inclusive ? !(lo >= in.lowest) : !(lo > in.lowest))
+      throw InvalidParameter(std::string(in.name) + ".lower", lo,
+                             std::string("draws must be ") + (in.inclusive ? ">= " : "> ") +
+                                 format_number(in.lowest) +
+                                 " (truncate the normal with a lower bound)");
+    require_moderate(std::string(in.name) + ".upper", hi);
+  }
+}
+
+InputValues nominal_inputs(const DesignRequest& q, const ProcessUncertainty& u) {
+  InputValues v{};
+  for (std::size_t k = 0; k < kInputs.size(); ++k)
+    v[k] = nominal(u.*kInputs[k].member, kInputs[k].known(q));
+  return v;
+}
+
+double uniform_draw(std::uint64_t seed, std::uint64_t run, std::uint64_t input) {
+  const std::uint64_t h =
+      splitmix64(splitmix64(splitmix64(seed) ^ run) + 0x632be59bd9b4e019ULL * (input + 1));
+  return (static_cast<double>(h >> 11) + 0.5) * 0x1.0p-53;
+}
+
+InputValues draw_inputs(const DesignRequest& q, const ProcessUncertainty& u, std::uint64_t seed,
+                        std::uint64_t run) {
+  InputValues v{};
+  for (std::size_t k = 0; k < kInputs.size(); ++k)
+    v[k] = quantile(u.*kInputs[k].member, uniform_draw(seed, run, k), kInputs[k].known(q));
+  return v;
+}
+
+Process process_of(const DesignResult& d) {
+  if (!d.feasible && !(d.period > 0))
+    throw InvalidParameter("design", "infeasible", "has no process to evaluate");
+  return {d.period, d.stroke, d.a2, d.a3, d.jerk, d.x_mu};
+}
+
+void validate(const Process& p) {
+  require_positive_moderate("period", p.period);
+  require_positive_moderate("stroke", p.stroke);
+  require_positive_moderate("a2", p.a2);
+  require_positive_moderate("a3", p.a3);
+  if (!(p.jerk > 0) || std::isnan(p.jerk))
+    throw InvalidParameter("jerk", p.jerk, "must be > 0 [m/s^3] (+inf: jump accelerations)");
+  require_positive_moderate("x_mu", p.x_mu);
+  // Case 0 does not depend on the units (eqs. 61-67 scale with the stroke and the period).
+  const bool physical =
+      std::isinf(p.jerk)
+          ? solve_three_phase({p.period, p.stroke, p.a2, p.a3}).physical
+          : solve_jerk_limited_three_phase({p.period, p.stroke, p.a2, p.a3, p.jerk}).physical;
+  if (!physical)
+    throw InvalidParameter("process", "a2 = " + format_number(p.a2) + ", a3 = " +
+                                          format_number(p.a3),
+                           "must be a physical three-phase profile for its period and stroke "
+                           "(case 0: the table cannot reach the stroke)");
+}
+
+ProcessOutcome run_process(const DesignRequest& q, const Process& p, const InputValues& v,
+                           int max_periods) {
+  const double mu = v[0], c_mu = v[1], ratio = v[2], width = v[3], offset = v[4];
+  const double amplitude = v[5], period_factor = v[6];
+  const Scales sc(width, mu, q.gravity);
+  // y~(t) -> a y~(t / p): stroke x a, accelerations x a / p^2, jerk x a / p^3.
+  const double acc = amplitude / (period_factor * period_factor);
+  const ThreePhaseParameters tp{sc.time_from_si(p.period * period_factor),
+                                sc.length_from_si(p.stroke * amplitude),
+                                sc.acceleration_from_si(p.a2 * acc),
+                                sc.acceleration_from_si(p.a3 * acc)};
+  std::unique_ptr<TableProfile> profile;
+  if (std::isinf(p.jerk)) {
+    profile = std::make_unique<ThreePhaseProfile>(tp);
+  } else {
+    const double jerk = sc.acceleration_from_si(p.jerk * acc / period_factor) * sc.time();
+    profile = std::make_unique<JerkLimitedThreePhaseProfile>(
+        JerkLimitedThreePhaseParameters{tp.period, tp.stroke, tp.a2, tp.a3, jerk});
+  }
+  const double backward = std::isnan(q.mu_backward) ? 1.0 : q.mu_backward / q.mu;
+  const FrictionLaw law(ratio, 1.0, std::min(backward, ratio));
+  const TwoRegionFriction friction(sc.length_from_si(p.x_mu + offset), 1.0, c_mu);
+  StoppingOptions so;
+  so.max_periods = max_periods;
+  so.fractions = {0.999};  // accumulation "arrives" 0.999 of the way (as design_process)
+  const StoppingRun run = law.is_unit()
+                              ? stopping_run(*profile, friction, {0, 0, 0}, so)
+                              : stopping_run(*profile, friction, law, {0, 0, 0}, so);
+  ProcessOutcome o;
+  o.kind = run.kind;
+  o.entry_time = sc.time_to_si(run.entry_time);
+  if (run.kind == StopKind::not_stopped) return o;
+  o.end_position = sc.length_to_si(run.end_position);
+  o.process_time = sc.time_to_si(run.kind == StopKind::accumulation ? run.time_to_fraction[0]
+                                                                    : run.process_time);
+  return o;
+}
+
+}  // namespace selfalign
