@@ -120,8 +120,42 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     sweep_period,
     sweep_stroke,
     velocity_convergence,
+    # robust design under uncertainty (docs/robust-design.md)
+    Known,
+    Normal,
+    Uniform,
+    Samples,
+    Interval,
+    ProcessUncertainty,
+    Process,
+    MonteCarloResult,
+    WorstCase,
+    Fragility,
+    FailureCounts,
+    RobustDesignResult,
+    parse_distribution,
+    uncertain_inputs,
+    process_of,
+    draw_inputs,
+    monte_carlo,
+    merge_monte_carlo,
+    worst_case,
+    fragility,
+    design_robust,
 )
+
+# Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,
+# mpi4py; docs/scale-out.md): Python wrappers over the extension's functions (their
+# __wrapped__), identical to them without an executor.
+from .scaleout import (  # noqa: E402
+    monte_carlo,
+    positioning_surfaces,
+    sweep_accelerations,
+    sweep_period,
+    sweep_stroke,
+)
+from . import scaleout  # noqa: E402
 
 __version__ = "0.1.0"
 
-__all__ = [name for name in dir() if not name.startswith("_")]
+__all__ = [name for name in dir() if not name.startswith("_") and name != "scaleout"]

@@ -26,5 +26,6 @@ void bind_stopping(py::module_& m);      // stick positions, stopping runs
 void bind_positioning(py::module_& m);   // positioning accuracy and surfaces
 void bind_optimize(py::module_& m);      // profile optimisation (Sect. 4.4.2)
 void bind_design(py::module_& m);        // design_process: SI limits -> recommended profile
+void bind_uncertainty(py::module_& m);   // distributions, Monte Carlo, worst case, design_robust
 
 }  // namespace selfalign::python

@@ -1,22 +1,28 @@
 // Convergence of two velocity responses (Sect. 6.2, Fig. 13; Lyapunov function eq. 35).
 #include "selfalign/analysis/convergence.hpp"
 
+#include <optional>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 
 namespace selfalign::python {
 
 void bind_convergence(py::module_& m) {
-  py::class_<SignInterval>(m, "SignInterval",
-                           "A maximal time interval on which the selected friction forces are "
-                           "equal (v̂1 = v̂2, the paper's '=') or not ('≠').")
+  py::class_<SignInterval> interval(m, "SignInterval",
+                                    "A maximal time interval on which the selected friction "
+                                    "forces are equal (v̂1 = v̂2, the paper's '=') or not ('≠').");
+  interval
       .def_readonly("t_begin", &SignInterval::t_begin, "[-]")
       .def_readonly("t_end", &SignInterval::t_end, "[-]")
       .def_readonly("same", &SignInterval::same, "True: '=', False: '≠'")
       .def("__repr__", [](const SignInterval& s) {
         return Repr("SignInterval")("t_begin", s.t_begin)("t_end", s.t_end)("same", s.same).str();
       });
+  def_record(interval, field("t_begin", &SignInterval::t_begin),
+             field("t_end", &SignInterval::t_end), field("same", &SignInterval::same));
 
   py::class_<VelocityConvergence> cls(m, "VelocityConvergence", R"doc(
 Two velocity responses v1, v2 of the same table motion and V = (v1 - v2)^2 / 2 (eq. 35). By
@@ -51,15 +57,30 @@ float64 views: samples on a uniform grid plus every event of either trajectory.)
         return d;
       },
       "the intervals as a dict of 1-D arrays: t_begin, t_end (float64), same (bool)");
+  const auto t_coincide = [](const VelocityConvergence& c) -> py::object {
+    return c.t_coincide ? py::object(py::float_(*c.t_coincide)) : py::object(py::none());
+  };
   cls.def_property_readonly(
-      "t_coincide",
-      [](const VelocityConvergence& c) -> py::object {
-        return c.t_coincide ? py::object(py::float_(*c.t_coincide)) : py::object(py::none());
-      },
+      "t_coincide", t_coincide,
       "first time from which v1 = v2 for good (both stuck together) [-]; None if not reached");
+  cls.def("__repr__", [t_coincide](const VelocityConvergence& c) {
+    return Repr("VelocityConvergence")("samples", static_cast<long long>(c.t.size()))(
+               "intervals", static_cast<long long>(c.intervals.size()))
+        .raw("t_coincide", py::repr(t_coincide(c)))
+        .str();
+  });
+  using C = VelocityConvergence;
+  def_record(cls, field("t", &C::t), field("v1", &C::v1), field("v2", &C::v2),
+             field("lyapunov", &C::lyapunov), field("intervals", &C::intervals),
+             field("t_coincide", t_coincide, [](C& c, const py::object& t) {
+               c.t_coincide =
+                   t.is_none() ? std::optional<double>() : std::optional(t.cast<double>());
+             }));
 
   const ConvergenceOptions d;
-  py::class_<ConvergenceOptions>(m, "ConvergenceOptions", "Options of velocity_convergence().")
+  using O = ConvergenceOptions;
+  py::class_<O> options(m, "ConvergenceOptions", "Options of velocity_convergence().");
+  options
       .def(py::init([](double v1, double v2, double t0, double duration, int samples_per_period) {
              return ConvergenceOptions{v1, v2, t0, duration, samples_per_period};
            }),
@@ -76,6 +97,8 @@ float64 views: samples on a uniform grid plus every event of either trajectory.)
                    "duration", o.duration)("samples_per_period", o.samples_per_period)
             .str();
       });
+  def_record(options, field("v1", &O::v1), field("v2", &O::v2), field("t0", &O::t0),
+             field("duration", &O::duration), field("samples_per_period", &O::samples_per_period));
 
   m.def("velocity_convergence",
         py::overload_cast<const TableProfile&, const ConvergenceOptions&>(&velocity_convergence), py::arg("profile"),

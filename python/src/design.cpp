@@ -3,19 +3,22 @@
 
 #include "bindings.hpp"
 #include "progress.hpp"
+#include "record.hpp"
+#include "repr.hpp"
 
 namespace selfalign::python {
 
 void bind_design(py::module_& m) {
   const DesignRequest d;
-  py::class_<DesignRequest>(m, "DesignRequest", R"doc(
+  py::class_<DesignRequest> request(m, "DesignRequest", R"doc(
 A design request in SI units (design_process): the object (mass [kg], width [m], mu [-],
 c_mu [-], g [m/s^2]), the distance to travel [m], the actuator limits (stroke_max [m],
 frequency_min/frequency_max [Hz], velocity_max [m/s], acceleration_max [m/s^2]), the
 positioning requirement (tolerance [m]; 0 requires accumulation, Δx_d = 0) and the search
-resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc")
-      .def(py::init<>())
-      .def(py::init([](double mass, double width, double mu, double c_mu, double gravity,
+resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc");
+  // One constructor only: pybind11 retries an overloaded function with conversions (int ->
+  // float) only for positional arguments, so a second overload would refuse mass=1.
+  request.def(py::init([](double mass, double width, double mu, double c_mu, double gravity,
                        double distance, double stroke_max, double frequency_min,
                        double frequency_max, double velocity_max, double acceleration_max,
                        double tolerance, int acceleration_grid, int period_grid, int stroke_grid,
@@ -63,12 +66,31 @@ resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc")
       .def_readwrite("stroke_grid", &DesignRequest::stroke_grid, "candidate strokes, >= 1")
       .def_readwrite("entries", &DesignRequest::entries, "steady entries per candidate, >= 2");
 
-  py::class_<DesignResult>(m, "DesignResult", R"doc(
+  using Q = DesignRequest;
+  def_record(request, field("mass", &Q::mass), field("width", &Q::width), field("mu", &Q::mu),
+             field("c_mu", &Q::c_mu), field("gravity", &Q::gravity),
+             field("distance", &Q::distance), field("stroke_max", &Q::stroke_max),
+             field("frequency_min", &Q::frequency_min), field("frequency_max", &Q::frequency_max),
+             field("velocity_max", &Q::velocity_max),
+             field("acceleration_max", &Q::acceleration_max), field("jerk_max", &Q::jerk_max),
+             field("mu_static", &Q::mu_static), field("mu_backward", &Q::mu_backward),
+             field("tolerance", &Q::tolerance), field("acceleration_grid", &Q::acceleration_grid),
+             field("period_grid", &Q::period_grid), field("stroke_grid", &Q::stroke_grid),
+             field("entries", &Q::entries));
+  request.def("__repr__", [](const DesignRequest& q) {
+    return Repr("DesignRequest")("mass", q.mass)("width", q.width)("mu", q.mu)("c_mu", q.c_mu)(
+               "distance", q.distance)("tolerance", q.tolerance)("stroke_max", q.stroke_max)(
+               "frequency_max", q.frequency_max)("acceleration_max", q.acceleration_max)
+        .str();
+  });
+
+  py::class_<DesignResult> result(m, "DesignResult", R"doc(
 The recommended three-phase profile (SI: period [s], stroke [m], a2/a3 [m/s^2], t1..t3 [s],
 y_ini [m], y_dot_ini and velocity_peak [m/s]), its motion case, and the predictions: v_bar
 [m/s], x_mu (where the high-friction region starts) [m], end_position and error_band [m],
-process_time T_p [s], stop kind. feasible = False with a message naming the binding limit.)doc")
-      .def_readonly("feasible", &DesignResult::feasible, "a design was found")
+process_time T_p [s], stop kind. feasible = False with a message naming the binding limit;
+its numbers are then NaN (absent, never 0).)doc");
+  result.def_readonly("feasible", &DesignResult::feasible, "a design was found")
       .def_readonly("message", &DesignResult::message, "why not, naming the binding limit")
       .def_readonly("period", &DesignResult::period, "Δt [s]")
       .def_readonly("stroke", &DesignResult::stroke, "Δy [m]")
@@ -92,7 +114,29 @@ process_time T_p [s], stop kind. feasible = False with a message naming the bind
                     "profiles meeting the requirement")
       .def_readonly("dimensionless", &DesignResult::dimensionless,
                     "the profile in model units (L = width)")
-      .def_readonly("x_mu_dimensionless", &DesignResult::x_mu_dimensionless, "x_mu [-]");
+      .def_readonly("x_mu_dimensionless", &DesignResult::x_mu_dimensionless, "x_mu [-]")
+      .def_readonly("jerk", &DesignResult::jerk, "jerk limit [m/s^3] (inf: jump accelerations)")
+      .def_readonly("jerk_dimensionless", &DesignResult::jerk_dimensionless, "[-]");
+  using R = DesignResult;
+  def_record(result, field("feasible", &R::feasible), field("message", &R::message),
+             field("period", &R::period), field("stroke", &R::stroke), field("a2", &R::a2),
+             field("a3", &R::a3), field("t1", &R::t1), field("t2", &R::t2), field("t3", &R::t3),
+             field("y_ini", &R::y_ini), field("y_dot_ini", &R::y_dot_ini),
+             field("velocity_peak", &R::velocity_peak), field("motion_case", &R::motion_case),
+             field("v_bar", &R::v_bar), field("x_mu", &R::x_mu),
+             field("end_position", &R::end_position), field("error_band", &R::error_band),
+             field("process_time", &R::process_time), field("stop", &R::stop),
+             field("candidates", &R::candidates),
+             field("feasible_candidates", &R::feasible_candidates),
+             field("dimensionless", &R::dimensionless), field("jerk", &R::jerk),
+             field("jerk_dimensionless", &R::jerk_dimensionless),
+             field("x_mu_dimensionless", &R::x_mu_dimensionless));
+  result.def("__repr__", [](const DesignResult& r) {
+    return Repr("DesignResult")("feasible", r.feasible)("period", r.period)("stroke", r.stroke)(
+               "a2", r.a2)("a3", r.a3)("x_mu", r.x_mu)("end_position", r.end_position)(
+               "process_time", r.process_time)
+        .str();
+  });
 
   m.def(
       "design_process",

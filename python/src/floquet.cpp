@@ -1,11 +1,15 @@
 // Floquet multipliers of the steady state (Sect. 6.1), three ways.
 #include "selfalign/analysis/floquet.hpp"
 
+#include <algorithm>
 #include <complex>
+#include <limits>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "matrix.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/error.hpp"
 
@@ -23,22 +27,32 @@ Eigen::Matrix2d matrix_from(const py::object& obj) {
   return m;
 }
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// What Python sees of a monodromy: NaN matrix and multipliers where the method does not apply
+// (the library leaves the identity and zeros there).
+Eigen::Matrix2d shown_matrix(const Monodromy& d) {
+  return d.available ? d.matrix : Eigen::Matrix2d::Constant(kNaN);
+}
+std::vector<std::complex<double>> shown_multipliers(const Monodromy& d) {
+  if (!d.available) return {{kNaN, kNaN}, {kNaN, kNaN}};
+  return {d.multipliers.begin(), d.multipliers.end()};
+}
+
 }  // namespace
 
 void bind_floquet(py::module_& m) {
-  py::class_<Monodromy>(m, "Monodromy", R"doc(
+  py::class_<Monodromy> monodromy(m, "Monodromy", R"doc(
 A monodromy matrix Φ(t0 + Δt, t0) acting on (Δx, Δx') and its eigenvalues (the Floquet
-multipliers). The multiplier 1 belongs to the freedom in position (eigenvector [1, 0]).)doc")
+multipliers). The multiplier 1 belongs to the freedom in position (eigenvector [1, 0]).)doc");
+  monodromy
       .def_property_readonly(
-          "matrix", [](const Monodromy& d) { return matrix_array(d.matrix); },
-          "Φ as a 2x2 float64 ndarray (a copy)")
+          "matrix", [](const Monodromy& d) { return matrix_array(shown_matrix(d)); },
+          "Φ as a 2x2 float64 ndarray (a copy); NaN where not available")
       .def_property_readonly(
-          "multipliers",
-          [](const Monodromy& d) {
-            return to_array(
-                std::vector<std::complex<double>>(d.multipliers.begin(), d.multipliers.end()));
-          },
-          "the two multipliers, largest modulus first (complex128 ndarray)")
+          "multipliers", [](const Monodromy& d) { return to_array(shown_multipliers(d)); },
+          "the two multipliers, largest modulus first (complex128 ndarray); NaN where not "
+          "available")
       .def_readonly("available", &Monodromy::available,
                     "False where the method does not apply (analytic: non-three-phase)")
       .def("__repr__", [](const Monodromy& d) {
@@ -46,10 +60,30 @@ multipliers). The multiplier 1 belongs to the freedom in position (eigenvector [
           return "(" + format_number(z.real()) + (z.imag() < 0 ? "-" : "+") +
                  format_number(std::abs(z.imag())) + "j)";
         };
+        const auto z = shown_multipliers(d);
         return Repr("Monodromy")("available", d.available)
-            .raw("multipliers", "[" + c(d.multipliers[0]) + ", " + c(d.multipliers[1]) + "]")
+            .raw("multipliers", "[" + c(z[0]) + ", " + c(z[1]) + "]")
             .str();
       });
+  def_record(
+      monodromy,
+      field(
+          "matrix", [](const Monodromy& d) { return matrix_array(d.matrix); },
+          [](Monodromy& d, const py::object& matrix) { d.matrix = matrix_from(matrix); }),
+      field(
+          "multipliers",
+          [](const Monodromy& d) {
+            return to_array(
+                std::vector<std::complex<double>>(d.multipliers.begin(), d.multipliers.end()));
+          },
+          [](Monodromy& d, const py::object& multipliers) {
+            using Complex = py::array_t<std::complex<double>, py::array::c_style |
+                                                                   py::array::forcecast>;
+            const auto z = Complex::ensure(multipliers);
+            if (!z || z.size() != 2) throw py::value_error("pickle state: expected 2 multipliers");
+            std::copy(z.data(), z.data() + 2, d.multipliers.begin());
+          }),
+      field("available", &Monodromy::available));
 
   m.def(
       "make_monodromy",
@@ -57,7 +91,8 @@ multipliers). The multiplier 1 belongs to the freedom in position (eigenvector [
       py::arg("matrix"), "A Monodromy of a 2x2 matrix: its eigenvalues, largest modulus first.");
 
   const FloquetOptions d;
-  py::class_<FloquetOptions>(m, "FloquetOptions", "Options of floquet_multipliers().")
+  py::class_<FloquetOptions> options(m, "FloquetOptions", "Options of floquet_multipliers().");
+  options
       .def(py::init([](double fd_step, const SteadyStateOptions& steady) {
              return FloquetOptions{fd_step, steady};
            }),
@@ -70,8 +105,12 @@ multipliers). The multiplier 1 belongs to the freedom in position (eigenvector [
             .raw("steady", py::repr(py::cast(o.steady)))
             .str();
       });
+  def_record(options, field("fd_step", &FloquetOptions::fd_step),
+             field("steady", &FloquetOptions::steady));
 
-  py::class_<FloquetAnalysis>(m, "FloquetAnalysis", "The three Floquet analyses of one profile.")
+  using A = FloquetAnalysis;
+  py::class_<A> analysis(m, "FloquetAnalysis", "The three Floquet analyses of one profile.");
+  analysis
       .def_readonly("steady", &FloquetAnalysis::steady, "the periodic solution analysed")
       .def_readonly("analytic", &FloquetAnalysis::analytic,
                     "linearised period map, eqs. (25)-(33) (three-phase profiles only): "
@@ -83,7 +122,18 @@ multipliers). The multiplier 1 belongs to the freedom in position (eigenvector [
                     "central differences of the exact period map")
       .def_readonly("spread", &FloquetAnalysis::spread,
                     "largest distance between corresponding multipliers of the available "
-                    "methods [-]");
+                    "methods [-]")
+      .def("__repr__", [](const FloquetAnalysis& a) {
+        return Repr("FloquetAnalysis")
+            .raw("analytic", py::repr(py::cast(a.analytic)))
+            .raw("saltation", py::repr(py::cast(a.saltation)))
+            .raw("finite_difference", py::repr(py::cast(a.finite_difference)))("spread",
+                                                                                a.spread)
+            .str();
+      });
+  def_record(analysis, field("steady", &A::steady), field("analytic", &A::analytic),
+             field("saltation", &A::saltation),
+             field("finite_difference", &A::finite_difference), field("spread", &A::spread));
 
   const char* doc = R"doc(
 Floquet analysis (Sect. 6.1) of a profile whose acceleration is piecewise constant: the

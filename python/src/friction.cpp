@@ -8,6 +8,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_field.hpp"
@@ -56,22 +57,38 @@ std::string footprint_repr(const Footprint& f) {
   return "PointFootprint()";
 }
 
+// The general FrictionField from node columns of equal length.
+FrictionField field_from_columns(const std::vector<double>& p, const std::vector<double>& l,
+                                 const std::vector<double>& r) {
+  if (l.size() != p.size() || r.size() != p.size())
+    throw InvalidParameter("friction field nodes",
+                           std::to_string(p.size()) + ", " + std::to_string(l.size()) + ", " +
+                               std::to_string(r.size()),
+                           "position, left and right must have the same length");
+  std::vector<FieldNode> nodes;
+  for (std::size_t i = 0; i < p.size(); ++i) nodes.push_back({p[i], l[i], r[i]});
+  return FrictionField(std::move(nodes));
+}
+
+// One column of a field's nodes (a record field of FrictionField).
+auto node_column(double FieldNode::*column) {
+  return [column](const FrictionField& f) {
+    std::vector<double> out;
+    for (const FieldNode& n : f.nodes()) out.push_back(n.*column);
+    return out;
+  };
+}
+
 py::dict field_nodes(const FrictionField& field) {
-  std::vector<double> position, left, right;
-  for (const FieldNode& n : field.nodes()) {
-    position.push_back(n.position);
-    left.push_back(n.left);
-    right.push_back(n.right);
-  }
   py::dict d;
-  d["position"] = to_array(std::move(position));
-  d["left"] = to_array(std::move(left));
-  d["right"] = to_array(std::move(right));
+  d["position"] = to_array(node_column(&FieldNode::position)(field));
+  d["left"] = to_array(node_column(&FieldNode::left)(field));
+  d["right"] = to_array(node_column(&FieldNode::right)(field));
   return d;
 }
 
 void bind_friction_field(py::module_& m) {
-  py::class_<FrictionField>(m, "FrictionField", R"doc(
+  py::class_<FrictionField> field_cls(m, "FrictionField", R"doc(
 The table's relative friction mu(xi)/mu_1 [-] over table position xi [-], piecewise linear
 with jumps (docs/friction-field.md). Its nodes (position, left, right): at `position` the
 field jumps from `left` (limit from the left) to `right` (value at and after the node: the
@@ -79,19 +96,12 @@ field is right-continuous); between nodes it goes straight from one node's right
 node's left; before the first node it is the first left, after the last the last right.
 Valid fields: >= 1 node; positions finite, |position| <= 1e50, strictly increasing; levels
 finite, in [0, 1e50], > 0 somewhere. Every constructor raises InvalidParameter otherwise.
-FieldFriction averages a field over the object's footprint (eq. 7).)doc")
+FieldFriction averages a field over the object's footprint (eq. 7).)doc");
+  field_cls
       .def(py::init([](const py::object& position, const py::object& left,
                        const py::object& right) {
-             const std::vector<double> p = to_vector(position, "position"),
-                                       l = to_vector(left, "left"), r = to_vector(right, "right");
-             if (l.size() != p.size() || r.size() != p.size())
-               throw InvalidParameter("friction field nodes",
-                                      std::to_string(p.size()) + ", " + std::to_string(l.size()) +
-                                          ", " + std::to_string(r.size()),
-                                      "position, left and right must have the same length");
-             std::vector<FieldNode> nodes;
-             for (std::size_t i = 0; i < p.size(); ++i) nodes.push_back({p[i], l[i], r[i]});
-             return FrictionField(std::move(nodes));
+             return field_from_columns(to_vector(position, "position"), to_vector(left, "left"),
+                                       to_vector(right, "right"));
            }),
            py::arg("position"), py::arg("left"), py::arg("right"),
            "The general form from 1-D arrays of equal length: node positions [-] and the "
@@ -150,53 +160,61 @@ bad input, and naming 'interpolation' for another word.)doc")
                              "True when the field is a step function (no ramps)")
       .def_property_readonly("min_level", &FrictionField::min_level, "smallest level [-]")
       .def_property_readonly("max_level", &FrictionField::max_level, "largest level [-]")
-      .def("__eq__", [](const FrictionField& a, const FrictionField& b) { return a == b; })
       .def("__repr__", [](const FrictionField& f) {
         return "<FrictionField nodes=" + std::to_string(f.nodes().size()) +
                " min_level=" + format_number(f.min_level()) +
                " max_level=" + format_number(f.max_level()) + ">";
       });
+  def_record(field_cls, &field_from_columns, field("position", node_column(&FieldNode::position)),
+             field("left", node_column(&FieldNode::left)),
+             field("right", node_column(&FieldNode::right)));
 
-  py::class_<PointFootprint>(m, "PointFootprint",
-                             "A point contact: the friction level is the field itself, "
-                             "m(x) = field(x).")
+  py::class_<PointFootprint> point(m, "PointFootprint",
+                                   "A point contact: the friction level is the field itself, "
+                                   "m(x) = field(x).");
+  point
       .def(py::init<>())
-      .def("__eq__", [](const PointFootprint&, const PointFootprint&) { return true; })
       .def("__repr__", [](const PointFootprint&) { return std::string("PointFootprint()"); });
+  def_record(point);
 
-  py::class_<UniformFootprint>(m, "UniformFootprint", R"doc(
+  py::class_<UniformFootprint> uniform(m, "UniformFootprint", R"doc(
 Uniform contact pressure over [x - width, x], x the object's leading edge: the friction level
-is the field's average over that window (eq. 7). Validated by FieldFriction.)doc")
+is the field's average over that window (eq. 7). Validated by FieldFriction.)doc");
+  uniform
       .def(py::init([](double width) { return UniformFootprint{width}; }), py::arg("width"),
            "width: the object's width w [-], in [1e-50, 1e50].")
       .def_readonly("width", &UniformFootprint::width, "w [-]")
-      .def("__eq__", [](const UniformFootprint& a, const UniformFootprint& b) { return a == b; })
       .def("__repr__",
            [](const UniformFootprint& u) { return Repr("UniformFootprint")("width", u.width).str(); });
+  def_record(uniform, field("width", &UniformFootprint::width));
 
-  py::class_<FieldFriction, FrictionMap>(m, "FieldFriction", R"doc(
+  py::class_<FieldFriction, FrictionMap> field_friction(m, "FieldFriction", R"doc(
 The friction level m(x) = the table's field averaged over the object's footprint (eq. 7):
 a point footprint gives m = field; a uniform footprint of width w the window average over
 [x - w, x], which for FrictionField.steps([x_mu], [1, c_mu]) is TwoRegionFriction(x_mu, w,
 c_mu). Piecewise affine (so the exact solver applies) for a point footprint, or a uniform one
 on a step field; a uniform footprint on a field with ramps gives a piecewise-quadratic level
-(pieces() is None: time-stepping only).)doc")
-      .def(py::init([](const FrictionField& field, const py::object& footprint) {
-             return FieldFriction(field, footprint_from(footprint));
-           }),
+(pieces() is None: time-stepping only).)doc");
+  const auto make_field_friction = [](const FrictionField& field, const py::object& footprint) {
+    return FieldFriction(field, footprint_from(footprint));
+  };
+  const auto footprint = [](const FieldFriction& f) { return footprint_object(f.footprint()); };
+  field_friction
+      .def(py::init(make_field_friction),
            py::arg("field"), py::arg("footprint"), R"doc(
 field: a FrictionField; footprint: PointFootprint(), UniformFootprint(width) or a float width
 (uniform). Raises InvalidParameter for a width outside [1e-50, 1e50] or below 1e-9 max
 |position|, or a level that cannot be resolved (slopes above 1e12, ramps narrower than 1e-9
 |position| under a point footprint); TypeError for another footprint type.)doc")
       .def_property_readonly("field", &FieldFriction::field, "the table's FrictionField")
-      .def_property_readonly(
-          "footprint", [](const FieldFriction& f) { return footprint_object(f.footprint()); },
-          "the object's footprint (PointFootprint or UniformFootprint)")
+      .def_property_readonly("footprint", footprint,
+                             "the object's footprint (PointFootprint or UniformFootprint)")
       .def("__repr__", [](const FieldFriction& f) {
         return "<FieldFriction nodes=" + std::to_string(f.field().nodes().size()) +
                " footprint=" + footprint_repr(f.footprint()) + ">";
       });
+  def_record(field_friction, make_field_friction, field("field", &FieldFriction::field),
+             field("footprint", footprint));
 }
 
 }  // namespace
@@ -244,7 +262,6 @@ object is held as long as |y''| <= static m(x); while slipping in direction sigm
           },
           py::arg("direction"), py::arg("speed"),
           "mu_sigma(speed) [-] for slip direction sigma (> 0 forward, < 0 backward)")
-      .def("__eq__", [](const FrictionLaw& a, const FrictionLaw& b) { return a == b; })
       .def("__repr__", [](const FrictionLaw& f) {
         Repr r("FrictionLaw");
         r("static", f.static_coefficient())("kinetic_forward", f.kinetic_forward())(
@@ -255,6 +272,20 @@ object is held as long as |y''| <= static m(x); while slipping in direction sigm
         if (f.viscous() > 0) r("viscous", f.viscous());
         return r.str();
       });
+  def_record(
+      law,
+      [](double s, double forward, double backward, double stribeck, double exponent,
+         double viscous) {
+        FrictionLaw f(s, forward, backward);
+        if (stribeck > 0) f = f.with_stribeck(stribeck, exponent);
+        return viscous > 0 ? f.with_viscous(viscous) : f;
+      },
+      field("static", &FrictionLaw::static_coefficient),
+      field("kinetic_forward", &FrictionLaw::kinetic_forward),
+      field("kinetic_backward", &FrictionLaw::kinetic_backward),
+      field("stribeck_velocity", &FrictionLaw::stribeck_velocity),
+      field("stribeck_exponent", &FrictionLaw::stribeck_exponent),
+      field("viscous", &FrictionLaw::viscous));
   m.attr("CoulombFriction") = law;
 
   py::class_<FrictionMap>(m, "FrictionMap", R"doc(
@@ -273,21 +304,25 @@ The map as affine pieces m(x) = bound_at_begin + slope (x - begin) on [begin, en
 covering the real line (the form the exact solver integrates), as a dict of 1-D float64
 arrays 'begin', 'end', 'bound_at_begin', 'slope'; None when the map is not piecewise affine.)doc");
 
-  py::class_<UniformFriction, FrictionMap>(m, "UniformFriction",
-                                           "Uniform Coulomb friction: m(x) = level (1 on the "
-                                           "paper's low-friction table).")
+  py::class_<UniformFriction, FrictionMap> uniform(m, "UniformFriction",
+                                                  "Uniform Coulomb friction: m(x) = level (1 on "
+                                                  "the paper's low-friction table).");
+  uniform
       .def(py::init<double>(), py::arg("level") = 1.0,
            "level: m = mu/mu_1 [-], finite and > 0. Raises InvalidParameter otherwise.")
       .def_property_readonly("level", &UniformFriction::level, "m [-]")
       .def("__repr__", [](const UniformFriction& f) {
         return Repr("UniformFriction")("level", f.level()).str();
       });
+  def_record(uniform, [](double level) { return UniformFriction(level); },
+             field("level", &UniformFriction::level));
 
-  py::class_<TwoRegionFriction, FrictionMap>(m, "TwoRegionFriction", R"doc(
+  py::class_<TwoRegionFriction, FrictionMap> two(m, "TwoRegionFriction", R"doc(
 The paper's two-region table (Sect. 3.3): mu_1 for x < x_mu, mu_2 = c_mu mu_1 beyond x_mu + w,
 and in between the width-averaged transition of eqs. (7)-(9):
   m(x) = 1 + (c_mu - 1)/w * z,   z = min(max(x - x_mu, 0), w)
-x is the position of the object's leading edge [-], w its dimensionless width.)doc")
+x is the position of the object's leading edge [-], w its dimensionless width.)doc");
+  two
       .def(py::init<double, double, double>(), py::arg("x_mu"), py::arg("width"), py::arg("c_mu"),
            R"doc(
 x_mu:  start of the high-friction region [-], finite
@@ -305,6 +340,11 @@ Raises InvalidParameter naming the offending argument.)doc")
         return Repr("TwoRegionFriction")("x_mu", f.x_mu())("width", f.width())("c_mu", f.c_mu())
             .str();
       });
+  def_record(
+      two,
+      [](double x_mu, double width, double c_mu) { return TwoRegionFriction(x_mu, width, c_mu); },
+      field("x_mu", &TwoRegionFriction::x_mu), field("width", &TwoRegionFriction::width),
+      field("c_mu", &TwoRegionFriction::c_mu));
 
   bind_friction_field(m);
 }

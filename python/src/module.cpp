@@ -23,4 +23,5 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_positioning(m);
   bind_optimize(m);
   bind_design(m);
+  bind_uncertainty(m);
 }

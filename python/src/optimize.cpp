@@ -4,19 +4,33 @@
 #include <pybind11/functional.h>
 #include <pybind11/stl.h>
 
+#include <string>
+
 #include "bindings.hpp"
+#include "record.hpp"
+#include "repr.hpp"
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/design/piecewise_design.hpp"
 #include "selfalign/design/three_phase_design.hpp"
 
 namespace selfalign::python {
 
+namespace {
+
+// The numbers of a result without an optimum (no parameters: the search found no point to
+// evaluate) do not exist: NaN (the library leaves them 0, and max_jerk inf).
+constexpr auto has_optimum = [](const OptimizationResult& r) { return !r.parameters.empty(); };
+
+}  // namespace
+
 void bind_optimize(py::module_& m) {
   const ActuatorLimits dl;
-  py::class_<ActuatorLimits>(m, "ActuatorLimits", R"doc(
+  using L = ActuatorLimits;
+  py::class_<L> limits(m, "ActuatorLimits", R"doc(
 Actuator limits of the optimisation (dimensionless; Fig. 6: period 0.072, stroke 0.021,
 max_velocity 3.2, max_acceleration 1275). Period and stroke are exact; |y'| and |y''| are
-bounded over the whole period.)doc")
+bounded over the whole period.)doc");
+  limits
       .def(py::init([](double period, double stroke, double v, double a, double j) {
              return ActuatorLimits{period, stroke, v, a, j};
            }),
@@ -29,13 +43,24 @@ bounded over the whole period.)doc")
       .def_readwrite("period", &ActuatorLimits::period, "Δt [-]")
       .def_readwrite("stroke", &ActuatorLimits::stroke, "Δy [-]")
       .def_readwrite("max_velocity", &ActuatorLimits::max_velocity, "y'_max [-]")
-      .def_readwrite("max_acceleration", &ActuatorLimits::max_acceleration, "y''_max [-]");
+      .def_readwrite("max_acceleration", &ActuatorLimits::max_acceleration, "y''_max [-]")
+      .def("__repr__", [](const L& l) {
+        return Repr("ActuatorLimits")("period", l.period)("stroke", l.stroke)(
+                   "max_velocity", l.max_velocity)("max_acceleration", l.max_acceleration)
+            .raw("max_jerk", number_source(l.max_jerk))
+            .str();
+      });
+  def_record(limits, field("period", &L::period), field("stroke", &L::stroke),
+             field("max_velocity", &L::max_velocity),
+             field("max_acceleration", &L::max_acceleration), field("max_jerk", &L::max_jerk));
 
   const OptimizeOptions d;
-  py::class_<OptimizeOptions>(m, "OptimizeOptions", R"doc(
+  using O = OptimizeOptions;
+  py::class_<O> options(m, "OptimizeOptions", R"doc(
 Options of the optimisers: Fourier order, K segments, multi-starts, evaluations per local run,
 three-phase scan grid and polish count, seed, finite-difference step, and an optional
-progress(done, total) callable.)doc")
+progress(done, total) callable.)doc");
+  options
       .def(py::init([](int order, int segments, int starts, int max_evaluations, int grid,
                        int polish, unsigned seed, double fd_step,
                        std::function<void(int, int)> progress, const FrictionLaw& law,
@@ -59,26 +84,66 @@ progress(done, total) callable.)doc")
       .def_readwrite("law", &OptimizeOptions::law, "friction law of every steady state")
       .def_readwrite("order", &OptimizeOptions::order, "Fourier order N")
       .def_readwrite("segments", &OptimizeOptions::segments, "K of the piecewise family")
-      .def_readwrite("starts", &OptimizeOptions::starts, "multi-starts");
+      .def_readwrite("starts", &OptimizeOptions::starts, "multi-starts")
+      .def_readwrite("max_evaluations", &O::max_evaluations, "objective evaluations per local run")
+      .def_readwrite("grid", &O::grid, "three-phase scan: grid points per acceleration axis")
+      .def_readwrite("polish", &O::polish, "three-phase: best scan cells polished locally")
+      .def_readwrite("seed", &O::seed, "seed of the deterministic random starts")
+      .def_readwrite("fd_step", &O::fd_step,
+                     "relative central finite-difference step of the Fourier optimiser")
+      .def("__repr__", [](const O& o) {
+        return Repr("OptimizeOptions")("order", o.order)("segments", o.segments)(
+                   "starts", o.starts)("max_evaluations", o.max_evaluations)("grid", o.grid)(
+                   "polish", o.polish)("seed", static_cast<long long>(o.seed))(
+                   "fd_step", o.fd_step)("threads", o.threads)
+            .raw("law", py::repr(py::cast(o.law)))
+            .str();
+      });
+  // progress is a callback, not a value: not part of the record (a copy has none).
+  def_record(options, field("order", &O::order), field("segments", &O::segments),
+             field("starts", &O::starts), field("max_evaluations", &O::max_evaluations),
+             field("grid", &O::grid), field("polish", &O::polish), field("seed", &O::seed),
+             field("fd_step", &O::fd_step), field("threads", &O::threads),
+             field("law", &O::law));
 
-  py::class_<OptimizationResult>(m, "OptimizationResult", R"doc(
+  using R = OptimizationResult;
+  py::class_<R> result(m, "OptimizationResult", R"doc(
 An optimum: feasible, f (eq. 11), v_bar, family, parameters (three-phase: a2, a3; piecewise:
 d_1..d_K, a_1..a_K; Fourier: A_1..A_N, B_1..B_N), the limits, the optimum's max |y'| and
-|y''|, evaluations, starts and a message (the binding limit when infeasible).)doc")
+|y''|, evaluations, starts and a message (the binding limit when infeasible). The numbers of
+the optimum are NaN when the search found none (parameters empty).)doc");
+  const auto f = nan_unless(&R::f, has_optimum), v_bar = nan_unless(&R::v_bar, has_optimum);
+  result
       .def_readonly("feasible", &OptimizationResult::feasible, "an optimum was found")
-      .def_readonly("f", &OptimizationResult::f, "objective f of eq. (11) [-]")
-      .def_readonly("v_bar", &OptimizationResult::v_bar, "steady average velocity [-]")
+      .def_property_readonly("f", f, "objective f of eq. (11) [-]")
+      .def_property_readonly("v_bar", v_bar, "steady average velocity [-]")
       .def_readonly("family", &OptimizationResult::family, "profile family")
       .def_readonly("parameters", &OptimizationResult::parameters, "the optimum's parameters")
       .def_readonly("limits", &OptimizationResult::limits, "the limits")
-      .def_readonly("max_velocity", &OptimizationResult::max_velocity, "max |y'| [-]")
-      .def_readonly("max_acceleration", &OptimizationResult::max_acceleration, "max |y''| [-]")
-      .def_readonly("max_jerk", &OptimizationResult::max_jerk,
-                    "max |jerk| [-] (inf where the acceleration jumps)")
+      .def_property_readonly("max_velocity", nan_unless(&R::max_velocity, has_optimum),
+                             "max |y'| [-]")
+      .def_property_readonly("max_acceleration", nan_unless(&R::max_acceleration, has_optimum),
+                             "max |y''| [-]")
+      .def_property_readonly("max_jerk", nan_unless(&R::max_jerk, has_optimum),
+                             "max |jerk| [-] (inf where the acceleration jumps)")
       .def_readonly("evaluations", &OptimizationResult::evaluations, "objective evaluations")
       .def_readonly("starts", &OptimizationResult::starts,
                     "local runs (piecewise-constant: over the chain K = 2 .. K)")
-      .def_readonly("message", &OptimizationResult::message, "what happened");
+      .def_readonly("message", &OptimizationResult::message, "what happened")
+      .def("__repr__", [f, v_bar](const R& r) {
+        return Repr("OptimizationResult")
+            .raw("family", py::repr(py::str(r.family)))("feasible", r.feasible)("f", f(r))(
+                "v_bar", v_bar(r))("evaluations", r.evaluations)
+            .raw("message", py::repr(py::str(r.message)))
+            .str();
+      });
+  def_record(result, field("feasible", &R::feasible), field("f", &R::f),
+             field("v_bar", &R::v_bar), field("family", &R::family),
+             field("parameters", &R::parameters), field("limits", &R::limits),
+             field("max_velocity", &R::max_velocity),
+             field("max_acceleration", &R::max_acceleration), field("max_jerk", &R::max_jerk),
+             field("evaluations", &R::evaluations), field("starts", &R::starts),
+             field("message", &R::message));
 
   m.def("optimize_three_phase", &optimize_three_phase, py::arg("limits"),
         py::arg("options") = OptimizeOptions{},

@@ -6,6 +6,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "progress.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 
 namespace selfalign::python {
@@ -14,7 +15,9 @@ namespace {
 
 void bind_options(py::module_& m) {
   const PositioningOptions d;
-  py::class_<PositioningOptions>(m, "PositioningOptions", "Options of positioning_accuracy().")
+  using O = PositioningOptions;
+  py::class_<O> cls(m, "PositioningOptions", "Options of positioning_accuracy().");
+  cls
       .def(py::init([](int entries, const StoppingOptions& stopping, bool stop_at_first_failure,
                        const SteadyStateOptions& steady) {
              return PositioningOptions{entries, stopping, stop_at_first_failure, steady};
@@ -34,6 +37,9 @@ void bind_options(py::module_& m) {
             .raw("steady", py::repr(py::cast(o.steady)))
             .str();
       });
+  def_record(cls, field("entries", &O::entries), field("stopping", &O::stopping),
+             field("stop_at_first_failure", &O::stop_at_first_failure),
+             field("steady", &O::steady));
 }
 
 void bind_accuracy(py::module_& m) {
@@ -81,6 +87,14 @@ x_mu = Δx, each stopped by a stopping run; then (eq. 39)
                    "accumulates", a.accumulates)("all_stopped", a.all_stopped)
             .str();
       });
+  using A = PositioningAccuracy;
+  def_record(cls, field("reaches", &A::reaches), field("steady", &A::steady),
+             field("x_mu", &A::x_mu), field("x_stick_min", &A::x_stick_min),
+             field("entries", &A::entries), field("runs", &A::runs),
+             field("overshoot_min", &A::overshoot_min), field("overshoot_max", &A::overshoot_max),
+             field("dx_d", &A::dx_d), field("x_d", &A::x_d),
+             field("accumulating_entries", &A::accumulating_entries),
+             field("accumulates", &A::accumulates), field("all_stopped", &A::all_stopped));
 
   m.def(
       "positioning_accuracy",

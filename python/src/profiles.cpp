@@ -1,10 +1,14 @@
 // Table profiles (Sect. 4.4): the TableProfile interface with a vectorised sample(), and the
 // piecewise-constant, Fourier and sampled families. The three-phase profile: three_phase.cpp.
+#include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
@@ -57,6 +61,44 @@ py::dict segments(const PiecewisePolynomialProfile& p) {
   return d;
 }
 
+// Column of the segments of one period (a record field of PiecewisePolynomialProfile).
+template <class F>
+auto segment_column(F value) {
+  return [value](const PiecewisePolynomialProfile& p) {
+    std::vector<double> out;
+    for (const AccelerationSegment& s : p.segments()) out.push_back(value(s));
+    return out;
+  };
+}
+
+// The end accelerations b from which from_linear_accelerations rebuilds p exactly: per segment
+// s.end_accel() up to rounding, the float nearest it whose jerk (b - a)/d is s.jerk again and
+// |b| <= peak, ±peak first (which an end acceleration at the peak was: then the rebuilt peak
+// acceleration, the largest |a| or |b|, is the same too).
+std::vector<double> end_accels(const PiecewisePolynomialProfile& p) {
+  const double peak = p.peak_acceleration(), inf = std::numeric_limits<double>::infinity();
+  std::vector<double> out;
+  for (const AccelerationSegment& s : p.segments()) {
+    const double guess = s.end_accel();
+    const auto fits = [&](double b) {
+      return std::abs(b) <= peak && (b - s.accel) / s.duration == s.jerk;
+    };
+    double b = s.accel;
+    if (s.jerk != 0.0) {
+      const double at_peak = std::copysign(peak, guess);
+      const double ulp = std::nextafter(std::abs(guess), inf) - std::abs(guess);
+      b = std::abs(at_peak - guess) <= 64 * ulp && fits(at_peak) ? at_peak : guess;
+      double up = guess, down = guess;
+      for (int step = 0; step < 64 && !fits(b); ++step) {
+        b = fits(up) ? up : fits(down) ? down : guess;
+        up = std::nextafter(up, inf), down = std::nextafter(down, -inf);
+      }
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
 std::string profile_repr(const py::object& self) {
   const auto& p = self.cast<const TableProfile&>();
   return "<" + py::type::of(self).attr("__name__").cast<std::string>() + " kind='" + p.kind() +
@@ -64,8 +106,9 @@ std::string profile_repr(const py::object& self) {
 }
 
 void bind_table_profile(py::module_& m) {
-  py::class_<TableState>(m, "TableState",
-                         "Table position, velocity and acceleration at one time [-].")
+  py::class_<TableState> state(m, "TableState",
+                              "Table position, velocity and acceleration at one time [-].");
+  state
       .def(py::init([](double y, double yd, double ydd) {
              return TableState{y, yd, ydd};
            }),
@@ -77,6 +120,8 @@ void bind_table_profile(py::module_& m) {
       .def("__repr__", [](const TableState& s) {
         return Repr("TableState")("y", s.y)("yd", s.yd)("ydd", s.ydd).str();
       });
+  def_record(state, field("y", &TableState::y), field("yd", &TableState::yd),
+             field("ydd", &TableState::ydd));
 
   py::class_<TableProfile>(m, "TableProfile", R"doc(
 A prescribed periodic table motion y(t) (Sect. 4.4). Abstract: build a ThreePhaseProfile,
@@ -182,15 +227,28 @@ as from_accelerations.)doc")
 The continuous piecewise-linear acceleration through the periodic breakpoints (times[i],
 accels[i]) [-]: times[0] = 0, strictly increasing, period > times[-1]; the acceleration returns
 to accels[0] at t = period.)doc");
+  // The record: from_linear_accelerations' arguments (what every factory builds from).
+  def_record(
+      cls,
+      [](const std::vector<double>& durations, const std::vector<double>& accel_begin,
+         const std::vector<double>& accel_end, const std::string& kind) {
+        return PiecewisePolynomialProfile::from_linear_accelerations(durations, accel_begin,
+                                                                     accel_end, kind);
+      },
+      field("durations", segment_column([](const AccelerationSegment& s) { return s.duration; })),
+      field("accel_begin", segment_column([](const AccelerationSegment& s) { return s.accel; })),
+      field("accel_end", &end_accels),
+      field("kind", &TableProfile::kind));
 }
 
 void bind_fourier(py::module_& m) {
-  py::class_<FourierProfile, TableProfile>(m, "FourierProfile", R"doc(
+  py::class_<FourierProfile, TableProfile> cls(m, "FourierProfile", R"doc(
 A Fourier-series table profile of any order N (Sect. 4.4.2):
   y(t) = c_0 + sum_{k=1..N} (A_k cos(k w t) + B_k sin(k w t)),   w = 2 pi / Δt,
 with c_0 chosen so that min y = 0. Periodic in y and y' by construction. Not piecewise
 constant: the exact smooth-profile solver takes it on piecewise-constant friction levels
-(simulate/smooth_exact.hpp; Method.exact), time-stepping elsewhere.)doc")
+(simulate/smooth_exact.hpp; Method.exact), time-stepping elsewhere.)doc");
+  cls
       .def(py::init([](double period, const py::object& cos_coeffs, const py::object& sin_coeffs) {
              return FourierProfile(period, to_vector(cos_coeffs, "cos_coeffs"),
                                    to_vector(sin_coeffs, "sin_coeffs"));
@@ -209,6 +267,14 @@ cos_coeffs: A_1..A_N [-]; sin_coeffs: B_1..B_N [-] (the shorter is padded with z
           [](const FourierProfile& p) { return to_array(std::vector(p.sin_coeffs())); },
           "B_1..B_N [-] (a copy)")
       .def_property_readonly("offset", &FourierProfile::offset, "c_0 [-]");
+  def_record(
+      cls,
+      [](double period, const std::vector<double>& cos_coeffs,
+         const std::vector<double>& sin_coeffs) {
+        return FourierProfile(period, cos_coeffs, sin_coeffs);
+      },
+      field("period", &FourierProfile::period), field("cos_coeffs", &FourierProfile::cos_coeffs),
+      field("sin_coeffs", &FourierProfile::sin_coeffs));
 }
 
 void bind_sampled(py::module_& m) {
@@ -221,10 +287,12 @@ void bind_sampled(py::module_& m) {
       .value("linear", Interpolation::linear, "y'' linear between samples (piecewise-cubic y)")
       .def(py::init(&parse_interpolation), py::arg("text"));
   refuse_unknown_values(interpolation, "Interpolation", 2);
+  def_enum_pickle(interpolation);
   py::implicitly_convertible<py::str, Interpolation>();
 
-  py::class_<AccelerationSamples>(m, "AccelerationSamples",
-                                  "Samples (t_i, y''_i) of one table period.")
+  py::class_<AccelerationSamples> samples(m, "AccelerationSamples",
+                                         "Samples (t_i, y''_i) of one table period.");
+  samples
       .def(py::init([](const py::object& t, const py::object& ydd) {
              return AccelerationSamples{to_vector(t, "t"), to_vector(ydd, "ydd")};
            }),
@@ -239,7 +307,15 @@ void bind_sampled(py::module_& m) {
           "ydd", [](const AccelerationSamples& s) { return to_array(std::vector(s.ydd)); },
           [](AccelerationSamples& s, const py::object& v) { s.ydd = to_vector(v, "ydd"); },
           "table accelerations at t (a float64 copy) [-] or [m/s^2]")
-      .def("__len__", [](const AccelerationSamples& s) { return s.t.size(); });
+      .def("__len__", [](const AccelerationSamples& s) { return s.t.size(); })
+      .def("__repr__", [](const AccelerationSamples& s) {
+        Repr r("AccelerationSamples");
+        r("samples", static_cast<long long>(s.t.size()));
+        if (!s.t.empty()) r("period", s.t.back());
+        return r.str();
+      });
+  def_record(samples, field("t", &AccelerationSamples::t),
+             field("ydd", &AccelerationSamples::ydd));
 
   m.def(
       "read_acceleration_samples",
@@ -261,11 +337,25 @@ relative); the initial velocity makes y periodic and the initial position makes 
 Raises InvalidParameter on fewer than 2 samples, t[0] != 0, non-increasing or non-finite
 times, non-finite accelerations or a non-zero net velocity change.)doc");
 
-  py::class_<LinearAccelerationProfile, TableProfile>(
+  py::class_<LinearAccelerationProfile, TableProfile> linear(
       m, "LinearAccelerationProfile",
       "Piecewise-linear acceleration (piecewise-cubic y) through samples; built by "
-      "make_sampled_profile(samples, Interpolation.linear).")
-      .def(py::init<const AccelerationSamples&>(), py::arg("samples"));
+      "make_sampled_profile(samples, Interpolation.linear).");
+  linear.def(py::init<const AccelerationSamples&>(), py::arg("samples"))
+      .def_property_readonly("samples", &LinearAccelerationProfile::samples,
+                             "the AccelerationSamples it was built from")
+      .def("__repr__", [](const LinearAccelerationProfile& p) {
+        return Repr("LinearAccelerationProfile")("period", p.period())(
+                   "samples", static_cast<long long>(p.samples().t.size()))
+            .str();
+      });
+  def_record(
+      linear,
+      [](std::vector<double> t, std::vector<double> ydd) {
+        return LinearAccelerationProfile(AccelerationSamples{std::move(t), std::move(ydd)});
+      },
+      field("t", [](const LinearAccelerationProfile& p) { return p.samples().t; }),
+      field("ydd", [](const LinearAccelerationProfile& p) { return p.samples().ydd; }));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <cmath>
 #include <string>
 
 #include "selfalign/error.hpp"
@@ -16,6 +17,14 @@ std::string enum_name(Enum value) {
   const pybind11::object member = pybind11::cast(value);
   return pybind11::type::of(member).attr("__name__").template cast<std::string>() + "." +
          member.attr("name").template cast<std::string>();
+}
+
+/// A number as Python source that evaluates back: float('inf'), float('-inf'), float('nan')
+/// for the non-finite ones (a bare inf or nan would not).
+inline std::string number_source(double value) {
+  if (std::isnan(value)) return "float('nan')";
+  if (std::isinf(value)) return value > 0 ? "float('inf')" : "float('-inf')";
+  return format_number(value);
 }
 
 class Repr {

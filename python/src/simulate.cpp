@@ -2,8 +2,11 @@
 // sampled trajectory as NumPy columns.
 #include "selfalign/simulate/simulate.hpp"
 
+#include <algorithm>
+
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 
 namespace selfalign::python {
@@ -11,9 +14,10 @@ namespace selfalign::python {
 namespace {
 
 void bind_object_state(py::module_& m) {
-  py::class_<ObjectState>(m, "ObjectState", R"doc(
+  py::class_<ObjectState> cls(m, "ObjectState", R"doc(
 State of the object at one time [-]: x is its position relative to the table (its leading
-edge, for the friction map), xd = x' its velocity relative to the table.)doc")
+edge, for the friction map), xd = x' its velocity relative to the table.)doc");
+  cls
       .def(py::init([](double t, double x, double xd) {
              return ObjectState{t, x, xd};
            }),
@@ -24,6 +28,8 @@ edge, for the friction map), xd = x' its velocity relative to the table.)doc")
       .def("__repr__", [](const ObjectState& s) {
         return Repr("ObjectState")("t", s.t)("x", s.x)("xd", s.xd).str();
       });
+  def_record(cls, field("t", &ObjectState::t), field("x", &ObjectState::x),
+             field("xd", &ObjectState::xd));
 }
 
 void bind_trajectory(py::module_& m) {
@@ -46,6 +52,19 @@ and stick (bool). The arrays are views into the result (kept alive by it); copy 
   cls.def("__repr__", [](const Trajectory& t) {
     return "<Trajectory: " + std::to_string(t.size()) + " samples>";
   });
+  def_record(
+      cls, field("t", &Trajectory::t), field("x", &Trajectory::x), field("xd", &Trajectory::xd),
+      field("y", &Trajectory::y), field("yd", &Trajectory::yd), field("ydd", &Trajectory::ydd),
+      field(
+          "stick",
+          [](const Trajectory& t) {
+            py::array_t<bool> stick(static_cast<py::ssize_t>(t.stick.size()));
+            std::copy(t.stick.begin(), t.stick.end(), stick.mutable_data());
+            return stick;
+          },
+          [](Trajectory& t, const py::array_t<bool, py::array::forcecast>& stick) {
+            t.stick.assign(stick.data(), stick.data() + stick.size());
+          }));
   cls.def(
       "as_dict",
       [](const py::object& self) {
@@ -69,14 +88,17 @@ void bind_method(py::module_& m) {
              "exact sticks, slips by Dormand-Prince with event location (speed-dependent laws)")
       .def(py::init(&parse_method), py::arg("text"));
   refuse_unknown_values(method, "Method", 3);
+  def_enum_pickle(method);
   py::implicitly_convertible<py::str, Method>();
 }
 
 void bind_integrator(py::module_& m) {
   const IntegratorOptions d;
-  py::class_<IntegratorOptions>(m, "IntegratorOptions",
-                                "Tolerances of the slip integrator (Odeint's dense-output "
-                                "Dormand-Prince 5(4): per step |err| <= abs + rel (|x| + dt |x'|)).")
+  py::class_<IntegratorOptions> options(
+      m, "IntegratorOptions",
+      "Tolerances of the slip integrator (Odeint's dense-output Dormand-Prince 5(4): per step "
+      "|err| <= abs + rel (|x| + dt |x'|)).");
+  options
       .def(py::init([](double relative_tolerance, double absolute_tolerance) {
              IntegratorOptions o{relative_tolerance, absolute_tolerance};
              validate(o);
@@ -93,8 +115,13 @@ void bind_integrator(py::module_& m) {
                    "absolute_tolerance", o.absolute_tolerance)
             .str();
       });
-  py::class_<IntegratorStatistics>(m, "IntegratorStatistics",
-                                   "What the slip integrator did (zeros for other methods).")
+  def_record(options, field("relative_tolerance", &IntegratorOptions::relative_tolerance),
+             field("absolute_tolerance", &IntegratorOptions::absolute_tolerance));
+
+  using S = IntegratorStatistics;
+  py::class_<S> statistics(m, "IntegratorStatistics",
+                           "What the slip integrator did (zeros for other methods).");
+  statistics
       .def_readonly("steps", &IntegratorStatistics::steps, "accepted Runge-Kutta steps")
       .def_readonly("rejected", &IntegratorStatistics::rejected, "rejected (retried) steps")
       .def_readonly("rhs_evaluations", &IntegratorStatistics::rhs_evaluations,
@@ -108,11 +135,16 @@ void bind_integrator(py::module_& m) {
                    "rhs_evaluations", s.rhs_evaluations)("events", s.events)
             .str();
       });
+  def_record(statistics, field("steps", &S::steps), field("rejected", &S::rejected),
+             field("rhs_evaluations", &S::rhs_evaluations), field("events", &S::events),
+             field("slips", &S::slips), field("sticks", &S::sticks));
 }
 
 void bind_options(py::module_& m) {
   const SimulationOptions d;
-  py::class_<SimulationOptions>(m, "SimulationOptions", "Options of simulate().")
+  using O = SimulationOptions;
+  py::class_<O> cls(m, "SimulationOptions", "Options of simulate().");
+  cls
       .def(py::init([](Method method, double duration, double step, double theta,
                        double output_step, bool record, const IntegratorOptions& integrator) {
              SimulationOptions o;
@@ -148,6 +180,10 @@ void bind_options(py::module_& m) {
                 "theta", o.theta)("output_step", o.output_step)("record", o.record)
             .str();
       });
+  def_record(cls, field("method", &O::method), field("duration", &O::duration),
+             field("step", &O::step), field("theta", &O::theta),
+             field("output_step", &O::output_step), field("record", &O::record),
+             field("integrator", &O::integrator));
 }
 
 }  // namespace
@@ -159,7 +195,9 @@ void bind_simulate(py::module_& m) {
   bind_integrator(m);
   bind_options(m);
 
-  py::class_<SimulationResult>(m, "SimulationResult", "The outcome of simulate().")
+  using R = SimulationResult;
+  py::class_<R> result(m, "SimulationResult", "The outcome of simulate().");
+  result
       .def_readonly("trajectory", &SimulationResult::trajectory,
                     "samples at t0 + j*output_step and at the end time (NumPy columns)")
       .def_readonly("final_state", &SimulationResult::final_state, "state at t0 + duration [-]")
@@ -181,6 +219,11 @@ void bind_simulate(py::module_& m) {
                                                                           r.stick_fraction)
             .str();
       });
+  def_record(result, field("trajectory", &R::trajectory), field("final_state", &R::final_state),
+             field("method", &R::method), field("integrator", &R::integrator),
+             field("work", &R::work),
+             field("mean_velocity_last_period", &R::mean_velocity_last_period),
+             field("stick_fraction", &R::stick_fraction));
 
   m.def(
       "simulate",

@@ -12,6 +12,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "matrix.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/error.hpp"
@@ -125,9 +126,10 @@ What ended an arc (an enum.IntEnum).
                          {"friction_boundary", ArcEnd::friction_boundary},
                          {"horizon", ArcEnd::horizon}});
 
-  py::class_<ExactState>(m, "ExactState",
-                         "Mutable state of the exact solver: the object state plus where it is "
-                         "in the profile. Make it with make_exact_state.")
+  py::class_<ExactState> state(m, "ExactState",
+                               "Mutable state of the exact solver: the object state plus where "
+                               "it is in the profile. Make it with make_exact_state.");
+  state
       .def_readonly("object", &ExactState::object,
                     "t, x, x' [-] (read-only: make a new state with make_exact_state)")
       .def_readonly("segment", &ExactState::segment, "current acceleration segment (read-only)")
@@ -137,6 +139,8 @@ What ended an arc (an enum.IntEnum).
                    "segment", static_cast<long long>(s.segment))("period_index", s.period_index)
             .str();
       });
+  def_record(state, field("object", &ExactState::object), field("segment", &ExactState::segment),
+             field("period_index", &ExactState::period_index));
 
   m.def(
       "make_exact_state",
@@ -194,7 +198,9 @@ Between events x'' = -sigma m(x) - y'' has constant coefficients (eqs. 12-24, 42
 
 void bind_time_stepping(py::module_& m) {
   const TimeSteppingOptions d;
-  py::class_<TimeSteppingOptions>(m, "TimeSteppingOptions", "Options of Moreau's time-stepping.")
+  py::class_<TimeSteppingOptions> options(m, "TimeSteppingOptions",
+                                          "Options of Moreau's time-stepping.");
+  options
       .def(py::init([](double step, double theta) {
              return TimeSteppingOptions{step, theta};
            }),
@@ -208,10 +214,14 @@ void bind_time_stepping(py::module_& m) {
       .def("__repr__", [](const TimeSteppingOptions& o) {
         return Repr("TimeSteppingOptions")("step", o.step)("theta", o.theta).str();
       });
+  def_record(options, field("step", &TimeSteppingOptions::step),
+             field("theta", &TimeSteppingOptions::theta));
 
-  py::class_<TimeSteppingState>(m, "TimeSteppingState",
-                                "Mutable state of the stepper (step times are t0 + k h). Make "
-                                "it with make_time_stepping_state.")
+  using S = TimeSteppingState;
+  py::class_<S> state(m, "TimeSteppingState",
+                      "Mutable state of the stepper (step times are t0 + k h). Make it with "
+                      "make_time_stepping_state.");
+  state
       .def_readwrite("object", &TimeSteppingState::object, "t, x, x' [-]")
       .def_readwrite("t0", &TimeSteppingState::t0, "time of step 0 [-]")
       .def_readwrite("step_index", &TimeSteppingState::step_index, "k")
@@ -222,6 +232,9 @@ void bind_time_stepping(py::module_& m) {
                    "step_index", s.step_index)("stick", s.stick)
             .str();
       });
+  def_record(state, field("object", &S::object), field("t0", &S::t0),
+             field("step_index", &S::step_index), field("table_velocity", &S::table_velocity),
+             field("stick", &S::stick));
 
   m.def("make_time_stepping_state", &make_time_stepping_state, py::arg("profile"),
         py::arg("object") = ObjectState{}, "Starts a stepper at an object state.");

@@ -4,6 +4,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/motion_case.hpp"
 
@@ -44,7 +45,9 @@ Raises InvalidParameter on non-positive or NaN parameters.)doc");
 
 void bind_steady_options(py::module_& m) {
   const SteadyStateOptions d;
-  py::class_<SteadyStateOptions>(m, "SteadyStateOptions", "Options of steady_state().")
+  using O = SteadyStateOptions;
+  py::class_<O> cls(m, "SteadyStateOptions", "Options of steady_state().");
+  cls
       .def(py::init([](int max_periods, double velocity_tol, int steps_per_period, double theta,
                        double stepping_tol, const IntegratorOptions& integrator,
                        double initial_velocity, double initial_slope) {
@@ -90,6 +93,11 @@ void bind_steady_options(py::module_& m) {
                    "theta", o.theta)("stepping_tol", o.stepping_tol)
             .str();
       });
+  def_record(cls, field("max_periods", &O::max_periods), field("velocity_tol", &O::velocity_tol),
+             field("steps_per_period", &O::steps_per_period), field("theta", &O::theta),
+             field("stepping_tol", &O::stepping_tol), field("integrator", &O::integrator),
+             field("initial_velocity", &O::initial_velocity),
+             field("initial_slope", &O::initial_slope));
 }
 
 }  // namespace
@@ -98,7 +106,9 @@ void bind_steady_state(py::module_& m) {
   bind_cases(m);
   bind_steady_options(m);
 
-  py::class_<SteadyState>(m, "SteadyState", "The periodic velocity response on the uniform table.")
+  using S = SteadyState;
+  py::class_<S> cls(m, "SteadyState", "The periodic velocity response on the uniform table.");
+  cls
       .def_readonly("converged", &SteadyState::converged,
                     "False: max_periods reached (the fields hold the last iterate)")
       .def_readonly("method", &SteadyState::method, "the solver used")
@@ -131,6 +141,12 @@ void bind_steady_state(py::module_& m) {
             .raw("motion_case", enum_name(s.motion_case))("periods", s.periods)
             .str();
       });
+  def_record(cls, field("converged", &S::converged), field("method", &S::method),
+             field("x_dot_0s", &S::x_dot_0s), field("x_dot_0s_error", &S::x_dot_0s_error),
+             field("phase", &S::phase), field("v_bar", &S::v_bar), field("f", &S::f),
+             field("displacement", &S::displacement), field("periods", &S::periods),
+             field("motion_case", &S::motion_case), field("pattern", &S::pattern),
+             field("slope", &S::slope), field("integrator", &S::integrator));
 
   m.def("steady_state",
         py::overload_cast<const TableProfile&, const SteadyStateOptions&>(&steady_state), py::arg("profile"),

@@ -6,6 +6,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 
@@ -97,11 +98,14 @@ void bind_stopping_run(py::module_& m) {
       .value("accumulation", StopKind::accumulation,
              "stick positions accumulate at end_position = x_stick,min (eq. 60)")
       .value("not_stopped", StopKind::not_stopped,
-             "max_periods reached without a proof (e.g. the object never arrives)");
+             "max_periods reached without a proof (e.g. the object never arrives), a periodic "
+             "orbit that never rests, or never_stops (proven)");
   refuse_unknown_values(stop_kind, "StopKind", 3);
+  def_enum_pickle(stop_kind);
 
   const StoppingOptions d;
-  py::class_<StoppingOptions>(m, "StoppingOptions", "Options of stopping_run().")
+  py::class_<StoppingOptions> options(m, "StoppingOptions", "Options of stopping_run().");
+  options
       .def(py::init([](int max_periods, const py::object& fractions,
                        const IntegratorOptions& integrator) {
              StoppingOptions o;
@@ -132,6 +136,9 @@ void bind_stopping_run(py::module_& m) {
             .raw("fractions", "[" + fractions + "]")
             .str();
       });
+  def_record(options, field("max_periods", &StoppingOptions::max_periods),
+             field("fractions", &StoppingOptions::fractions),
+             field("integrator", &StoppingOptions::integrator));
 
   py::class_<StoppingRun> run(m, "StoppingRun", "The outcome of stopping_run().");
   run.def_readonly("kind", &StoppingRun::kind, "how the run ended")
@@ -142,7 +149,15 @@ void bind_stopping_run(py::module_& m) {
                     "not_stopped")
       .def_readonly("entry_time", &StoppingRun::entry_time,
                     "first time x >= x_mu [-]; NaN if never")
-      .def_readonly("x_stick_min", &StoppingRun::x_stick_min, "eq. (41) [-]");
+      .def_readonly("x_stick_min", &StoppingRun::x_stick_min, "eq. (41) [-]")
+      .def_readonly("accumulation_proven", &StoppingRun::accumulation_proven,
+                    "for accumulation: True when proven by the map of eqs. (59), (60) (two-region "
+                    "table, three-phase profile, the paper's law), False when observed (the rest "
+                    "positions rose to within 1e-9 of x_stick,min, each gap smaller than the one "
+                    "before)")
+      .def_readonly("never_stops", &StoppingRun::never_stops,
+                    "not_stopped with a proof: no position holds the object (x_stick,min = "
+                    "inf, eq. 41); the run ended once the object had entered the rough region");
   def_array(run, "stick_positions", &StoppingRun::stick_positions,
             "successive positions where the object came to rest at x >= x_mu [-]");
   def_array(run, "time_to_fraction", &StoppingRun::time_to_fraction,
@@ -157,6 +172,15 @@ void bind_stopping_run(py::module_& m) {
             "process_time", r.process_time)("entry_time", r.entry_time)
         .str();
   });
+  using R = StoppingRun;
+  def_record(run, field("kind", &R::kind), field("end_position", &R::end_position),
+             field("process_time", &R::process_time), field("entry_time", &R::entry_time),
+             field("x_stick_min", &R::x_stick_min),
+             field("accumulation_proven", &R::accumulation_proven),
+             field("never_stops", &R::never_stops),
+             field("stick_positions", &R::stick_positions),
+             field("time_to_fraction", &R::time_to_fraction),
+             field("periods_to_fraction", &R::periods_to_fraction));
 
   m.def(
       "stopping_run",

@@ -8,6 +8,8 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "progress.hpp"
+#include "record.hpp"
+#include "repr.hpp"
 
 namespace selfalign::python {
 
@@ -49,37 +51,84 @@ void bind_families(py::module_& m) {
       .def("make", &ProfileFamily::make, py::arg("period"), py::arg("stroke"),
            "The member with this period and stroke [-], or None when it does not exist (case 0).")
       .def_property_readonly("name", &ProfileFamily::name, "short family name");
-  py::class_<ThreePhaseFamily, ProfileFamily>(m, "ThreePhaseFamily",
-                                              "Three-phase profiles with fixed accelerations "
-                                              "(a2, a3).")
-      .def(py::init<double, double>(), py::arg("a2"), py::arg("a3"),
-           "a2, a3: y2'', y3'' [-], > 0.");
-  py::class_<JerkLimitedThreePhaseFamily, ProfileFamily>(
+  py::class_<ThreePhaseFamily, ProfileFamily> three(m, "ThreePhaseFamily",
+                                                    "Three-phase profiles with fixed "
+                                                    "accelerations (a2, a3).");
+  three.def(py::init<double, double>(), py::arg("a2"), py::arg("a3"),
+            "a2, a3: y2'', y3'' [-], > 0.")
+      .def_property_readonly("a2", &ThreePhaseFamily::a2, "y2'' [-]")
+      .def_property_readonly("a3", &ThreePhaseFamily::a3, "y3'' [-]")
+      .def("__repr__", [](const ThreePhaseFamily& f) {
+        return Repr("ThreePhaseFamily")("a2", f.a2())("a3", f.a3()).str();
+      });
+  def_record(three, [](double a2, double a3) { return ThreePhaseFamily(a2, a3); },
+             field("a2", &ThreePhaseFamily::a2), field("a3", &ThreePhaseFamily::a3));
+  py::class_<JerkLimitedThreePhaseFamily, ProfileFamily> jerk(
       m, "JerkLimitedThreePhaseFamily",
       "Jerk-limited three-phase profiles (trapezoidal acceleration) with fixed accelerations "
       "(a2, a3) and jerk limit j; make() gives None where no member exists (case 0, e.g. a "
-      "jerk too low for the period and stroke).")
-      .def(py::init<double, double, double>(), py::arg("a2"), py::arg("a3"), py::arg("jerk"),
+      "jerk too low for the period and stroke).");
+  jerk.def(py::init<double, double, double>(), py::arg("a2"), py::arg("a3"), py::arg("jerk"),
            "a2, a3: y2'', y3'' [-], > 0; jerk: j [-], > 0 (inf: the ThreePhaseFamily). Raises "
-           "InvalidParameter otherwise.");
-  py::class_<ScaledShapeFamily, ProfileFamily>(m, "ScaledShapeFamily", R"doc(
+           "InvalidParameter otherwise.")
+      .def_property_readonly("a2", &JerkLimitedThreePhaseFamily::a2, "y2'' [-]")
+      .def_property_readonly("a3", &JerkLimitedThreePhaseFamily::a3, "y3'' [-]")
+      .def_property_readonly("jerk", &JerkLimitedThreePhaseFamily::jerk, "jerk limit j [-]")
+      .def("__repr__", [](const JerkLimitedThreePhaseFamily& f) {
+        return Repr("JerkLimitedThreePhaseFamily")("a2", f.a2())("a3", f.a3())("jerk", f.jerk())
+            .str();
+      });
+  def_record(jerk,
+             [](double a2, double a3, double j) { return JerkLimitedThreePhaseFamily(a2, a3, j); },
+             field("a2", &JerkLimitedThreePhaseFamily::a2),
+             field("a3", &JerkLimitedThreePhaseFamily::a3),
+             field("jerk", &JerkLimitedThreePhaseFamily::jerk));
+  py::class_<ScaledShapeFamily, ProfileFamily> shape(m, "ScaledShapeFamily", R"doc(
 One shape of piecewise-constant acceleration (a Fig. 3 style sequence of quadratics), stretched
 in time to the period and scaled in amplitude to the stroke: durations scale with Δt,
-accelerations with Δy / Δt^2.)doc")
-      .def(py::init<PiecewisePolynomialProfile>(), py::arg("shape"))
+accelerations with Δy / Δt^2.)doc");
+  shape.def(py::init<PiecewisePolynomialProfile>(), py::arg("shape"))
       .def_static("paper_like", &ScaledShapeFamily::paper_like,
                   "The default shape: fractions (0.35, 0.35, 0.30) of the period with "
-                  "accelerations (0, -6/7, +1).");
-  py::class_<ScaledFourierFamily, ProfileFamily>(m, "ScaledFourierFamily", R"doc(
+                  "accelerations (0, -6/7, +1).")
+      .def_property_readonly("shape", &ScaledShapeFamily::shape, "the unscaled shape")
+      .def("__repr__", [](const ScaledShapeFamily& f) {
+        return Repr("ScaledShapeFamily")("segments",
+                                         static_cast<long long>(f.shape().segments().size()))
+            .str();
+      });
+  def_record(shape, [](const PiecewisePolynomialProfile& p) { return ScaledShapeFamily(p); },
+             field("shape", &ScaledShapeFamily::shape));
+  py::class_<ScaledFourierFamily, ProfileFamily> fourier(m, "ScaledFourierFamily", R"doc(
 One Fourier shape (Sect. 4.4.2) with its coefficients scaled to the stroke: the members share
 the harmonic content and differ in period and amplitude. Their steady states use
-the exact smooth-profile solver.)doc")
+the exact smooth-profile solver.)doc");
+  fourier
       .def(py::init([](const py::object& cos_coeffs, const py::object& sin_coeffs) {
              return ScaledFourierFamily(to_vector(cos_coeffs, "cos_coeffs"),
                                         to_vector(sin_coeffs, "sin_coeffs"));
            }),
            py::arg("cos_coeffs"), py::arg("sin_coeffs"),
-           "Coefficients of y(t) = sum A_k cos(k w t) + B_k sin(k w t), any amplitude.");
+           "Coefficients of y(t) = sum A_k cos(k w t) + B_k sin(k w t), any amplitude.")
+      .def_property_readonly(
+          "cos_coeffs",
+          [](const ScaledFourierFamily& f) { return to_array(std::vector(f.cos_coeffs())); },
+          "the shape's cosine coefficients as given")
+      .def_property_readonly(
+          "sin_coeffs",
+          [](const ScaledFourierFamily& f) { return to_array(std::vector(f.sin_coeffs())); },
+          "the shape's sine coefficients as given")
+      .def("__repr__", [](const ScaledFourierFamily& f) {
+        return Repr("ScaledFourierFamily")("order", static_cast<long long>(std::max(
+                                                        f.cos_coeffs().size(), f.sin_coeffs().size())))
+            .str();
+      });
+  def_record(fourier,
+             [](std::vector<double> c, std::vector<double> s) {
+               return ScaledFourierFamily(std::move(c), std::move(s));
+             },
+             field("cos_coeffs", [](const ScaledFourierFamily& f) { return f.cos_coeffs(); }),
+             field("sin_coeffs", [](const ScaledFourierFamily& f) { return f.sin_coeffs(); }));
 }
 
 }  // namespace

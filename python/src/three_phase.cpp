@@ -2,12 +2,13 @@
 // jerk-limited variant (Sect. 8, item 2; docs/jerk-limited-three-phase.md).
 #include "selfalign/profiles/three_phase.hpp"
 
-#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 
@@ -15,14 +16,12 @@ namespace selfalign::python {
 
 namespace {
 
-// A jerk as Python source: float('inf') evaluates back (a bare inf would not).
-std::string jerk_source(double jerk) {
-  return std::isinf(jerk) && jerk > 0 ? "float('inf')" : format_number(jerk);
-}
+// A solution's durations, velocities and times exist only when it is physical (NaN otherwise).
+constexpr auto physical = [](const auto& solution) { return solution.physical; };
 
 std::string parameters_repr(const char* type, const JerkLimitedThreePhaseParameters& p) {
   return Repr(type)("period", p.period)("stroke", p.stroke)("a2", p.a2)("a3", p.a3)
-      .raw("jerk", jerk_source(p.jerk))
+      .raw("jerk", number_source(p.jerk))
       .str();
 }
 
@@ -43,11 +42,13 @@ Why no jerk-limited three-phase profile exists (case 0), or none (an enum.IntEnu
                                    {"stroke_too_large", JerkLimitedCase0::stroke_too_large},
                                    {"stroke_too_small", JerkLimitedCase0::stroke_too_small}});
 
-  py::class_<JerkLimitedThreePhaseParameters>(m, "JerkLimitedThreePhaseParameters", R"doc(
+  using JP = JerkLimitedThreePhaseParameters;
+  py::class_<JP> parameters(m, "JerkLimitedThreePhaseParameters", R"doc(
 The free parameters of the jerk-limited three-phase profile [-] (Sect. 8, item 2): the
 three-phase profile whose acceleration switches are linear ramps of slope +-jerk:
   y'' = 0 (T1) -> ramp to -a2 -> -a2 (T2h) -> ramp to +a3 -> +a3 (T3h) -> ramp to 0
-with min y = 0, stroke Δy, and y, y' periodic. Not validated until used.)doc")
+with min y = 0, stroke Δy, and y, y' periodic. Not validated until used.)doc");
+  parameters
       .def(py::init([](double period, double stroke, double a2, double a3, double jerk) {
              return JerkLimitedThreePhaseParameters{period, stroke, a2, a3, jerk};
            }),
@@ -70,49 +71,61 @@ with min y = 0, stroke Δy, and y, y' periodic. Not validated until used.)doc")
       .def("__repr__", [](const JerkLimitedThreePhaseParameters& p) {
         return parameters_repr("JerkLimitedThreePhaseParameters", p);
       });
+  def_record(parameters, field("period", &JP::period), field("stroke", &JP::stroke),
+             field("a2", &JP::a2), field("a3", &JP::a3), field("jerk", &JP::jerk));
 
-  py::class_<JerkLimitedThreePhaseSolution>(m, "JerkLimitedThreePhaseSolution", R"doc(
+  using JS = JerkLimitedThreePhaseSolution;
+  py::class_<JS> solution(m, "JerkLimitedThreePhaseSolution", R"doc(
 Solution of the jerk-limited three-phase constraints (docs/jerk-limited-three-phase.md), or
 case 0. With D the velocity swing and s = 1/a2 + 1/a3:
   T2h = D/a2 - a2/j,  T3h = D/a3 - a3/j,  T1 = Δt - s D - (a2 + a3)/j.
-A profile exists iff jerk >= min_jerk; physical = False (with a reason) otherwise.)doc")
-      .def_readonly("physical", &JerkLimitedThreePhaseSolution::physical,
-                    "False: case 0 (see reason); the durations and velocities are then 0")
-      .def_readonly("reason", &JerkLimitedThreePhaseSolution::reason,
-                    "why case 0 (JerkLimitedCase0.none when physical)")
-      .def_readonly("hold0", &JerkLimitedThreePhaseSolution::hold0,
-                    "T1: duration of y'' = 0 at the start of the period [-]")
-      .def_readonly("ramp_down", &JerkLimitedThreePhaseSolution::ramp_down,
-                    "a2/j: the ramp of y'' from 0 to -a2 [-] (0 for jerk = inf)")
-      .def_readonly("hold2", &JerkLimitedThreePhaseSolution::hold2, "T2h: y'' = -a2 [-]")
-      .def_readonly("ramp_up", &JerkLimitedThreePhaseSolution::ramp_up,
-                    "(a2 + a3)/j: the ramp of y'' from -a2 to +a3 [-]")
-      .def_readonly("hold3", &JerkLimitedThreePhaseSolution::hold3, "T3h: y'' = +a3 [-]")
-      .def_readonly("ramp_end", &JerkLimitedThreePhaseSolution::ramp_end,
-                    "a3/j: the ramp of y'' from +a3 back to 0 [-]")
-      .def_readonly("velocity_swing", &JerkLimitedThreePhaseSolution::velocity_swing,
-                    "D = max y' - min y' [-]")
-      .def_readonly("yd_ini", &JerkLimitedThreePhaseSolution::yd_ini,
-                    "y' on the first hold, the largest table velocity [-]")
-      .def_readonly("min_jerk", &JerkLimitedThreePhaseSolution::min_jerk,
+A profile exists iff jerk >= min_jerk; physical = False (with a reason) otherwise.)doc");
+  solution
+      .def_readonly("physical", &JS::physical,
+                    "False: case 0 (see reason); the durations and velocities are then NaN")
+      .def_readonly("reason", &JS::reason, "why case 0 (JerkLimitedCase0.none when physical)")
+      .def_property_readonly("hold0", nan_unless(&JS::hold0, physical),
+                             "T1: duration of y'' = 0 at the start of the period [-]")
+      .def_property_readonly("ramp_down", nan_unless(&JS::ramp_down, physical),
+                             "a2/j: the ramp of y'' from 0 to -a2 [-] (0 for jerk = inf)")
+      .def_property_readonly("hold2", nan_unless(&JS::hold2, physical), "T2h: y'' = -a2 [-]")
+      .def_property_readonly("ramp_up", nan_unless(&JS::ramp_up, physical),
+                             "(a2 + a3)/j: the ramp of y'' from -a2 to +a3 [-]")
+      .def_property_readonly("hold3", nan_unless(&JS::hold3, physical), "T3h: y'' = +a3 [-]")
+      .def_property_readonly("ramp_end", nan_unless(&JS::ramp_end, physical),
+                             "a3/j: the ramp of y'' from +a3 back to 0 [-]")
+      .def_property_readonly("velocity_swing", nan_unless(&JS::velocity_swing, physical),
+                             "D = max y' - min y' [-]")
+      .def_property_readonly("yd_ini", nan_unless(&JS::yd_ini, physical),
+                             "y' on the first hold, the largest table velocity [-]")
+      .def_readonly("min_jerk", &JS::min_jerk,
                     "smallest jerk for which (period, stroke, a2, a3) has a profile [-]; inf "
                     "when no finite jerk has one")
-      .def_readonly("closed_form", &JerkLimitedThreePhaseSolution::closed_form,
+      .def_readonly("closed_form", &JS::closed_form,
                     "True: closed form; False: bisection on D (a zero crossing of y' on a ramp)")
       .def(
           "durations",
-          [](const JerkLimitedThreePhaseSolution& r) {
+          [](const JS& r) {
             const auto d = r.durations();
-            return to_array(std::vector<double>(d.begin(), d.end()));
+            std::vector<double> out(d.begin(), d.end());
+            if (!r.physical) out.assign(out.size(), std::numeric_limits<double>::quiet_NaN());
+            return to_array(std::move(out));
           },
           "The six phase durations in order [-] as a float64 array: hold0, ramp_down, hold2, "
-          "ramp_up, hold3, ramp_end (they sum to the period when physical).")
-      .def("__repr__", [](const JerkLimitedThreePhaseSolution& r) {
+          "ramp_up, hold3, ramp_end (they sum to the period when physical; NaN in case 0).")
+      .def("__repr__", [](const JS& r) {
         return Repr("JerkLimitedThreePhaseSolution")("physical", r.physical)
-            .raw("reason", enum_name(r.reason))("velocity_swing", r.velocity_swing)(
-                "yd_ini", r.yd_ini)("min_jerk", r.min_jerk)
+            .raw("reason", enum_name(r.reason))(
+                "velocity_swing", nan_unless(&JS::velocity_swing, physical)(r))(
+                "yd_ini", nan_unless(&JS::yd_ini, physical)(r))("min_jerk", r.min_jerk)
             .str();
       });
+  def_record(solution, field("physical", &JS::physical), field("reason", &JS::reason),
+             field("hold0", &JS::hold0), field("ramp_down", &JS::ramp_down),
+             field("hold2", &JS::hold2), field("ramp_up", &JS::ramp_up),
+             field("hold3", &JS::hold3), field("ramp_end", &JS::ramp_end),
+             field("velocity_swing", &JS::velocity_swing), field("yd_ini", &JS::yd_ini),
+             field("min_jerk", &JS::min_jerk), field("closed_form", &JS::closed_form));
 
   m.def("solve_jerk_limited_three_phase", &solve_jerk_limited_three_phase, py::arg("parameters"),
         R"doc(
@@ -122,10 +135,11 @@ InvalidParameter on misuse (see JerkLimitedThreePhaseParameters.validate); retur
 physical = False with a reason (case 0) when no profile exists. min_jerk is set whenever the
 parameters are valid. jerk = inf reproduces solve_three_phase.)doc");
 
-  py::class_<JerkLimitedThreePhaseProfile, TableProfile>(
+  py::class_<JerkLimitedThreePhaseProfile, TableProfile> profile(
       m, "JerkLimitedThreePhaseProfile",
       "A physical jerk-limited three-phase profile (trapezoidal acceleration, Sect. 8 item 2); "
-      "its acceleration is piecewise linear, so the exact solver applies.")
+      "its acceleration is piecewise linear, so the exact solver applies.");
+  profile
       .def(py::init<const JerkLimitedThreePhaseParameters&>(), py::arg("parameters"))
       .def(py::init([](double period, double stroke, double a2, double a3, double jerk) {
              return JerkLimitedThreePhaseProfile({period, stroke, a2, a3, jerk});
@@ -142,15 +156,20 @@ jerk helps (as ThreePhaseProfile), else 'jerk' with the smallest feasible jerk.)
       .def("__repr__", [](const JerkLimitedThreePhaseProfile& p) {
         return parameters_repr("JerkLimitedThreePhaseProfile", p.parameters());
       });
+  def_record(
+      profile, [](const JP& p) { return JerkLimitedThreePhaseProfile(p); },
+      field("parameters", &JerkLimitedThreePhaseProfile::parameters));
 }
 
 }  // namespace
 
 void bind_three_phase(py::module_& m) {
-  py::class_<ThreePhaseParameters>(m, "ThreePhaseParameters", R"doc(
+  using TP = ThreePhaseParameters;
+  py::class_<TP> parameters(m, "ThreePhaseParameters", R"doc(
 The free parameters of the three-phase profile [-] (Sect. 4.4.3, Fig. 7):
   [t0, t1]: y'' = 0,   [t1, t2]: y'' = -a2,   [t2, t3]: y'' = +a3   (t0 = 0, t3 = period)
-with min y = 0, stroke Δy, and y, y' periodic. Not validated until used.)doc")
+with min y = 0, stroke Δy, and y, y' periodic. Not validated until used.)doc");
+  parameters
       .def(py::init([](double period, double stroke, double a2, double a3) {
              return ThreePhaseParameters{period, stroke, a2, a3};
            }),
@@ -169,40 +188,55 @@ with min y = 0, stroke Δy, and y, y' periodic. Not validated until used.)doc")
                    "a3", p.a3)
             .str();
       });
+  def_record(parameters, field("period", &TP::period), field("stroke", &TP::stroke),
+             field("a2", &TP::a2), field("a3", &TP::a3));
 
-  py::class_<ThreePhaseSolution>(m, "ThreePhaseSolution", R"doc(
+  using TS = ThreePhaseSolution;
+  py::class_<TS> solution(m, "ThreePhaseSolution", R"doc(
 Solution of the appendix's eqs. (61)-(67) in the closed form of docs/three-phase-profile.md:
 with s = 1/a2 + 1/a3 and G = sqrt(2 s Δy)/Δt a physical profile exists iff G <= 1/2, and then
 u = 1 - sqrt(1 - 2G), t1 = (1 - u)Δt, t2 = t1 + u Δt/(s a2), y'_ini = u^2 Δt/(2 s),
-y_ini = y'_ini^2/(2 a3). physical = False is the paper's non-physical case 0.)doc")
-      .def_readonly("physical", &ThreePhaseSolution::physical,
-                    "False: case 0, no real solution; the times are then 0")
-      .def_readonly("t1", &ThreePhaseSolution::t1, "switch time t1 [-] (t0 = 0)")
-      .def_readonly("t2", &ThreePhaseSolution::t2, "switch time t2 [-]")
-      .def_readonly("t3", &ThreePhaseSolution::t3, "t3 = Δt [-]")
-      .def_readonly("y_ini", &ThreePhaseSolution::y_ini, "y(t0) [-]")
-      .def_readonly("yd_ini", &ThreePhaseSolution::yd_ini, "y'(t0) = y' on [t0, t1] [-], >= 0")
-      .def_readonly("t_yd0_1", &ThreePhaseSolution::t_yd0_1,
-                    "time of y' = 0 in [t1, t2] (table at its maximum y) [-]")
-      .def_readonly("t_yd0_2", &ThreePhaseSolution::t_yd0_2,
-                    "time of y' = 0 in [t2, t3] (table at y = 0) [-]")
-      .def_readonly("inverse_accel_sum", &ThreePhaseSolution::inverse_accel_sum,
-                    "s = 1/a2 + 1/a3 [-]")
-      .def_readonly("inverse_accel_limit", &ThreePhaseSolution::inverse_accel_limit,
+y_ini = y'_ini^2/(2 a3). physical = False is the paper's non-physical case 0.)doc");
+  const auto t1 = nan_unless(&TS::t1, physical), t2 = nan_unless(&TS::t2, physical),
+             t3 = nan_unless(&TS::t3, physical), y_ini = nan_unless(&TS::y_ini, physical),
+             yd_ini = nan_unless(&TS::yd_ini, physical);
+  solution
+      .def_readonly("physical", &TS::physical,
+                    "False: case 0, no real solution; the times and the table state are then NaN")
+      .def_property_readonly("t1", t1, "switch time t1 [-] (t0 = 0)")
+      .def_property_readonly("t2", t2, "switch time t2 [-]")
+      .def_property_readonly("t3", t3, "t3 = Δt [-]")
+      .def_property_readonly("y_ini", y_ini, "y(t0) [-]")
+      .def_property_readonly("yd_ini", yd_ini, "y'(t0) = y' on [t0, t1] [-], >= 0")
+      .def_property_readonly("velocity_swing", nan_unless(&TS::velocity_swing, physical),
+                             "D = max y' - min y' = a2 (t2 - t1) = a3 (t3 - t2) [-]")
+      .def_property_readonly("t_yd0_1", nan_unless(&TS::t_yd0_1, physical),
+                             "time of y' = 0 in [t1, t2] (table at its maximum y) [-]")
+      .def_property_readonly("t_yd0_2", nan_unless(&TS::t_yd0_2, physical),
+                             "time of y' = 0 in [t2, t3] (table at y = 0) [-]")
+      .def_readonly("inverse_accel_sum", &TS::inverse_accel_sum, "s = 1/a2 + 1/a3 [-]")
+      .def_readonly("inverse_accel_limit", &TS::inverse_accel_limit,
                     "largest physical s: Δt^2 / (8 Δy) [-]")
-      .def("__repr__", [](const ThreePhaseSolution& r) {
-        return Repr("ThreePhaseSolution")("physical", r.physical)("t1", r.t1)("t2", r.t2)(
-                   "t3", r.t3)("y_ini", r.y_ini)("yd_ini", r.yd_ini)
+      .def("__repr__", [=](const TS& r) {
+        return Repr("ThreePhaseSolution")("physical", r.physical)("t1", t1(r))("t2", t2(r))(
+                   "t3", t3(r))("y_ini", y_ini(r))("yd_ini", yd_ini(r))
             .str();
       });
+  def_record(solution, field("physical", &TS::physical), field("t1", &TS::t1),
+             field("t2", &TS::t2), field("t3", &TS::t3), field("y_ini", &TS::y_ini),
+             field("yd_ini", &TS::yd_ini), field("velocity_swing", &TS::velocity_swing),
+             field("t_yd0_1", &TS::t_yd0_1), field("t_yd0_2", &TS::t_yd0_2),
+             field("inverse_accel_sum", &TS::inverse_accel_sum),
+             field("inverse_accel_limit", &TS::inverse_accel_limit));
 
   m.def("solve_three_phase", &solve_three_phase, py::arg("parameters"), R"doc(
 Closed-form solution of the appendix's eqs. (61)-(67). Raises InvalidParameter on misuse
 (non-positive or NaN parameters); returns physical = False (case 0) when the stroke cannot be
 reached, i.e. when 1/a2 + 1/a3 > period^2 / (8 stroke).)doc");
 
-  py::class_<ThreePhaseProfile, TableProfile>(m, "ThreePhaseProfile",
-                                              "A physical three-phase profile (Sect. 4.4.3).")
+  py::class_<ThreePhaseProfile, TableProfile> profile(
+      m, "ThreePhaseProfile", "A physical three-phase profile (Sect. 4.4.3).");
+  profile
       .def(py::init<const ThreePhaseParameters&>(), py::arg("parameters"))
       .def(py::init([](double period, double stroke, double a2, double a3) {
              return ThreePhaseProfile({period, stroke, a2, a3});
@@ -219,6 +253,9 @@ the allowed range 1/a2 + 1/a3 <= period^2/(8 stroke).)doc")
                                                                                              q.a3)
             .str();
       });
+  def_record(
+      profile, [](const TP& p) { return ThreePhaseProfile(p); },
+      field("parameters", &ThreePhaseProfile::parameters));
 
   bind_jerk_limited(m);
 }

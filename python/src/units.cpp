@@ -3,6 +3,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "record.hpp"
 #include "repr.hpp"
 
 namespace selfalign::python {
@@ -52,6 +53,10 @@ Raises InvalidParameter naming the offending argument.)doc");
   cls.def("__repr__", [](const Scales& s) {
     return Repr("Scales")("length_m", s.length())("mu", s.mu())("gravity", s.gravity()).str();
   });
+  def_record(
+      cls, [](double length, double mu, double gravity) { return Scales(length, mu, gravity); },
+      field("length", &Scales::length), field("mu", &Scales::mu),
+      field("gravity", &Scales::gravity));
 }
 
 }  // namespace selfalign::python

@@ -21,7 +21,9 @@ def public_names(module):
 def test_init_reexports_the_whole_extension_api():
     assert public_names(_selfalign) == set(sa.__all__)
     for name in sa.__all__:
-        assert getattr(sa, name) is getattr(_selfalign, name)
+        obj = getattr(sa, name)
+        # The studies that take executor= are Python wrappers of the extension's functions.
+        assert getattr(obj, "__wrapped__", obj) is getattr(_selfalign, name), name
 
 
 def test_stub_declares_every_public_name():

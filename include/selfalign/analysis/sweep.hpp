@@ -87,6 +87,8 @@ class ThreePhaseFamily final : public ProfileFamily {
   ThreePhaseFamily(double a2, double a3);
   std::unique_ptr<TableProfile> make(double period, double stroke) const override;
   std::string name() const override { return "three-phase"; }
+  double a2() const noexcept { return a2_; }
+  double a3() const noexcept { return a3_; }
 
  private:
   double a2_, a3_;
@@ -101,6 +103,9 @@ class JerkLimitedThreePhaseFamily final : public ProfileFamily {
   JerkLimitedThreePhaseFamily(double a2, double a3, double jerk);
   std::unique_ptr<TableProfile> make(double period, double stroke) const override;
   std::string name() const override { return "jerk-limited-three-phase"; }
+  double a2() const noexcept { return a2_; }
+  double a3() const noexcept { return a3_; }
+  double jerk() const noexcept { return jerk_; }
 
  private:
   double a2_, a3_, jerk_;
@@ -117,6 +122,7 @@ class ScaledShapeFamily final : public ProfileFamily {
   static ScaledShapeFamily paper_like();
   std::unique_ptr<TableProfile> make(double period, double stroke) const override;
   std::string name() const override { return "scaled-shape"; }
+  const PiecewisePolynomialProfile& shape() const noexcept { return shape_; }
 
  private:
   PiecewisePolynomialProfile shape_;
@@ -131,6 +137,8 @@ class ScaledFourierFamily final : public ProfileFamily {
   ScaledFourierFamily(std::vector<double> cos_coeffs, std::vector<double> sin_coeffs);
   std::unique_ptr<TableProfile> make(double period, double stroke) const override;
   std::string name() const override { return "scaled-fourier"; }
+  const std::vector<double>& cos_coeffs() const noexcept { return cos_; }
+  const std::vector<double>& sin_coeffs() const noexcept { return sin_; }
 
  private:
   std::vector<double> cos_, sin_;

@@ -63,29 +63,30 @@ void validate(const DesignRequest& request);
 FrictionLaw friction_law(const DesignRequest& request);
 
 struct DesignResult {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   bool feasible = false;
   std::string message;             ///< why not, naming the binding limit, when infeasible
-  // The recommended profile, SI:
-  double period = 0;               ///< Δt~ [s]
-  double stroke = 0;               ///< Δy~ [m]
-  double a2 = 0, a3 = 0;           ///< y2''~, y3''~ [m/s^2]
-  double t1 = 0, t2 = 0, t3 = 0;   ///< switch times [s]
-  double y_ini = 0, y_dot_ini = 0; ///< [m], [m/s]
-  double velocity_peak = 0;        ///< max |y'~| [m/s]
+  // The recommended profile, SI (NaN when infeasible: no value, never 0):
+  double period = kNaN;            ///< Δt~ [s]
+  double stroke = kNaN;            ///< Δy~ [m]
+  double a2 = kNaN, a3 = kNaN;     ///< y2''~, y3''~ [m/s^2]
+  double t1 = kNaN, t2 = kNaN, t3 = kNaN;  ///< switch times [s]
+  double y_ini = kNaN, y_dot_ini = kNaN;  ///< [m], [m/s]
+  double velocity_peak = kNaN;     ///< max |y'~| [m/s]
   StickSlipCase motion_case = StickSlipCase::non_physical;
-  // Predictions, SI:
-  double v_bar = 0;                ///< steady average velocity [m/s]
-  double x_mu = 0;                 ///< where the high-friction region must start [m]
-  double end_position = 0;         ///< predicted end position x_d~ [m] (= distance)
-  double error_band = 0;           ///< half-width of the end-position band [m]
-  double process_time = 0;         ///< T_p~: time to come within the band for good [s]
+  // Predictions, SI (NaN when infeasible):
+  double v_bar = kNaN;             ///< steady average velocity [m/s]
+  double x_mu = kNaN;              ///< where the high-friction region must start [m]
+  double end_position = kNaN;      ///< predicted end position x_d~ [m] (= distance)
+  double error_band = kNaN;        ///< half-width of the end-position band [m]
+  double process_time = kNaN;      ///< T_p~: time to come within the band for good [s]
   StopKind stop = StopKind::not_stopped;
   int candidates = 0, feasible_candidates = 0;
   ThreePhaseParameters dimensionless{};  ///< the same profile in model units (L = width)
   /// Its jerk limit in model units (+inf: jump accelerations) and in SI [m/s^3].
   double jerk_dimensionless = std::numeric_limits<double>::infinity();
   double jerk = std::numeric_limits<double>::infinity();
-  double x_mu_dimensionless = 0;
+  double x_mu_dimensionless = kNaN;
 };
 
 /// The candidate grid of design_process, in model units (L = width, accelerations in mu g):

@@ -49,6 +49,8 @@ class LinearAccelerationProfile final : public TableProfile {
   double peak_acceleration() const override { return peak_; }
   double stroke() const override { return stroke_; }
   std::string kind() const override { return "samples-linear"; }
+  /// The samples it was built from (rebuilds an equal profile).
+  AccelerationSamples samples() const { return {t_, a_}; }
 
  private:
   std::vector<double> t_, a_, y_, yd_;  // knots, with y and y' at each knot
