@@ -137,10 +137,8 @@ std::string design_table(const json& j) {
 }
 
 void run_design(const DesignFlags& f) {
-  if (f.out) require_output_path("out", *f.out);
-  if (f.profile_csv) require_output_path("profile-csv", *f.profile_csv);
-  if (f.out && f.profile_csv && *f.out == *f.profile_csv)
-    throw InvalidParameter("profile-csv", *f.profile_csv, "must differ from --out");
+  const ExtraFile csv_file{"profile-csv", f.profile_csv};
+  require_report_paths(f.out, csv_file);
   if (!(f.fragility_level > 0 && f.fragility_level < 1))
     throw InvalidParameter("fragility-level", f.fragility_level, "must be in (0, 1)");
   if (f.moving_mass && !(*f.moving_mass > 0 && std::isfinite(*f.moving_mass)))
@@ -199,18 +197,13 @@ void run_design(const DesignFlags& f) {
   if (any_uncertain) report["uncertainty"] = uncertainty_json(q, uncertainty);
   report["fragility"] = fragility_json(fragility(q, process_of(d), f.fragility_level));
   report["warnings"] = report["fragility"]["warnings"];
+  std::string csv;
   if (f.profile_csv) {
     json samples;
-    const std::string csv = profile_csv(q, d, f.sample_rate, f.moving_mass, samples);
+    csv = profile_csv(q, d, f.sample_rate, f.moving_mass, samples);
     report["profile_csv"] = samples;
-    AtomicFileSet files;
-    files.add(*f.profile_csv, csv, "profile-csv");
-    if (f.out) files.add(*f.out, report.dump(2) + "\n", "out");
-    files.commit();
-    if (!f.out) deliver_report(report, design_table(report), f.as_json, std::nullopt);
-    return;
   }
-  deliver_report(report, design_table(report), f.as_json, f.out);
+  deliver_report_with_file(report, design_table(report), f.as_json, f.out, csv_file, csv);
 }
 
 }  // namespace

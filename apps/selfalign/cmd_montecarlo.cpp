@@ -83,10 +83,8 @@ Process read_design(const std::string& path, const Process& flags) {
 }
 
 void run_monte_carlo(const MonteCarloFlags& f) {
-  if (f.out) require_output_path("out", *f.out);
-  if (f.runs_csv) require_output_path("runs-csv", *f.runs_csv);
-  if (f.out && f.runs_csv && *f.out == *f.runs_csv)
-    throw InvalidParameter("runs-csv", *f.runs_csv, "must differ from --out");
+  const ExtraFile csv_file{"runs-csv", f.runs_csv};
+  require_report_paths(f.out, csv_file);
   if (!(f.time_quantile > 0 && f.time_quantile < 1))
     throw InvalidParameter("time-quantile", f.time_quantile, "must be in (0, 1)");
   if (f.bins < 1 || f.bins > 10'000) throw InvalidParameter("bins", f.bins, "must be in [1, 1e4]");
@@ -132,15 +130,8 @@ void run_monte_carlo(const MonteCarloFlags& f) {
     t.row("worst case search", w["method"].get<std::string>() + " (" +
                                    std::to_string(w["evaluations"].get<int>()) + " runs in all)");
   }
-  if (f.runs_csv) {
-    AtomicFileSet files;
-    files.add(*f.runs_csv, monte_carlo_csv(r), "runs-csv");
-    if (f.out) files.add(*f.out, report.dump(2) + "\n", "out");
-    files.commit();
-    if (!f.out) deliver_report(report, t.str(), f.as_json, std::nullopt);
-    return;
-  }
-  deliver_report(report, t.str(), f.as_json, f.out);
+  deliver_report_with_file(report, t.str(), f.as_json, f.out, csv_file,
+                           f.runs_csv ? monte_carlo_csv(r) : std::string());
 }
 
 }  // namespace

@@ -55,6 +55,24 @@ void deliver_report(const nlohmann::json& report, const std::string& table, bool
   std::cout << (as_json ? text : table) << std::flush;
 }
 
+void require_report_paths(const std::optional<std::string>& out, const ExtraFile& extra) {
+  if (out) require_output_path("out", *out);
+  if (extra.path) require_output_path(extra.flag, *extra.path);
+  if (out && extra.path && *out == *extra.path)
+    throw InvalidParameter(extra.flag, *extra.path, "must differ from --out");
+}
+
+void deliver_report_with_file(const nlohmann::json& report, const std::string& table,
+                              bool as_json, const std::optional<std::string>& out,
+                              const ExtraFile& extra, const std::string& content) {
+  if (!extra.path) return deliver_report(report, table, as_json, out);
+  AtomicFileSet files;
+  files.add(*extra.path, content, extra.flag);
+  if (out) files.add(*out, report.dump(2) + "\n", "out");
+  files.commit();
+  if (!out) deliver_report(report, table, as_json, std::nullopt);
+}
+
 ReportPaths resolve_report_paths(const SimulateConfig& config, bool as_json) {
   const OutputPaths resolved = resolve_output_paths(config);
   ReportPaths paths;

@@ -49,6 +49,23 @@ std::string table_text(const nlohmann::json& value);
 void deliver_report(const nlohmann::json& report, const std::string& table, bool as_json,
                     const std::optional<std::string>& out);
 
+/// An extra output file beside the JSON report (design's --profile-csv, montecarlo's
+/// --runs-csv): its flag, path and content.
+struct ExtraFile {
+  const char* flag;
+  std::optional<std::string> path;
+};
+
+/// Checks, before any work, that --out and the extra file are writable paths that differ.
+/// Throws InvalidParameter naming the flag.
+void require_report_paths(const std::optional<std::string>& out, const ExtraFile& extra);
+
+/// Writes the extra file (when extra.path) and the report to `out` together (AtomicFileSet);
+/// otherwise as deliver_report.
+void deliver_report_with_file(const nlohmann::json& report, const std::string& table,
+                              bool as_json, const std::optional<std::string>& out,
+                              const ExtraFile& extra, const std::string& content);
+
 /// Where a command whose --out is a CSV (stop, accuracy, accumulation) writes: the CSV to
 /// `out` (or none); the JSON report to `summary`, by default <out without extension>
 /// .summary.json beside the CSV, or to stdout: as JSON with --json or --summary -, as the

@@ -45,6 +45,25 @@ py::dict input_values(const InputValues& v) {
   return d;
 }
 
+// Uniform and Interval: [lower, upper], lower < upper, both finite.
+template <class T>
+void bind_bounds(py::module_& m, const char* name, const char* key, const char* doc) {
+  py::class_<T> c(m, name, doc);
+  c.def(py::init([key](double lower, double upper) {
+         T t{lower, upper};
+         validate(key, t);
+         return t;
+       }),
+       py::arg("lower"), py::arg("upper"), "Raises InvalidParameter unless lower < upper.")
+      .def_readonly("lower", &T::lower, "lower bound")
+      .def_readonly("upper", &T::upper, "upper bound")
+      .def("__repr__", [name](const T& t) {
+        return Repr(name)("lower", t.lower)("upper", t.upper).str();
+      });
+  def_record(c, [](double lo, double hi) { return T{lo, hi}; }, field("lower", &T::lower),
+             field("upper", &T::upper));
+}
+
 void bind_distributions(py::module_& m) {
   py::class_<Known> known(m, "Known", "Known exactly: the design request's nominal value.");
   known.def(py::init<>()).def("__repr__", [](const Known&) { return std::string("Known()"); });
@@ -73,38 +92,9 @@ inverse CDF restricted to [Phi(a), Phi(b)], so one uniform number gives one valu
              field("mean", &Normal::mean), field("sd", &Normal::sd),
              field("lower", &Normal::lower), field("upper", &Normal::upper));
 
-  py::class_<Uniform> uniform(m, "Uniform", "Uniform on [lower, upper].");
-  uniform
-      .def(py::init([](double lower, double upper) {
-             Uniform u{lower, upper};
-             validate("uniform", u);
-             return u;
-           }),
-           py::arg("lower"), py::arg("upper"))
-      .def_readonly("lower", &Uniform::lower, "lower bound")
-      .def_readonly("upper", &Uniform::upper, "upper bound")
-      .def("__repr__", [](const Uniform& u) {
-        return Repr("Uniform")("lower", u.lower)("upper", u.upper).str();
-      });
-  def_record(uniform, [](double lo, double hi) { return Uniform{lo, hi}; },
-             field("lower", &Uniform::lower), field("upper", &Uniform::upper));
-
-  py::class_<Interval> interval(m, "Interval", R"doc(
+  bind_bounds<Uniform>(m, "Uniform", "uniform", "Uniform on [lower, upper].");
+  bind_bounds<Interval>(m, "Interval", "interval", R"doc(
 Only bounds are known: worst_case searches [lower, upper]; monte_carlo draws it uniformly.)doc");
-  interval
-      .def(py::init([](double lower, double upper) {
-             Interval i{lower, upper};
-             validate("interval", i);
-             return i;
-           }),
-           py::arg("lower"), py::arg("upper"))
-      .def_readonly("lower", &Interval::lower, "lower bound")
-      .def_readonly("upper", &Interval::upper, "upper bound")
-      .def("__repr__", [](const Interval& i) {
-        return Repr("Interval")("lower", i.lower)("upper", i.upper).str();
-      });
-  def_record(interval, [](double lo, double hi) { return Interval{lo, hi}; },
-             field("lower", &Interval::lower), field("upper", &Interval::upper));
 
   py::class_<Samples> samples(m, "Samples", "Measured values, each drawn with probability 1/n.");
   samples
