@@ -118,8 +118,9 @@ void run_monte_carlo(const MonteCarloFlags& f) {
                                table_text(m["p_within_95ci"][1]));
   for (const auto& [q_text, v] : m["process_time_quantiles_s"].items())
     t.row("process time q" + q_text + " [s]", table_text(v));
-  t.row("process time q" + format_number(f.time_quantile) + " [s]",
-        table_text(m["process_time_at_quantile_s"]));
+  if (!m["process_time_quantiles_s"].contains(format_number(f.time_quantile)))
+    t.row("process time q" + format_number(f.time_quantile) + " [s]",
+          table_text(m["process_time_at_quantile_s"]));
   for (const auto& [q_text, v] : m["end_position_quantiles_m"].items())
     t.row("end position q" + q_text + " [m]", table_text(v));
   if (f.worst) {
