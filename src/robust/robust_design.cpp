@@ -296,8 +296,13 @@ RobustDesignResult design_robust(const DesignRequest& q, const ProcessUncertaint
                                                 : explain(r.binding.c_str()));
   } else {
     r.binding = dominant(r.failures);
-    r.message = "no profile within the limits reaches P(within +-" + format_number(q.tolerance) +
-                " m) >= " + format_number(o.probability_target) +
+    const std::string target = "P(within +-" + format_number(q.tolerance) + " m) >= " +
+                               format_number(o.probability_target);
+    r.message = (any_qualifies
+                     ? "none of the " + std::to_string(r.verified) +
+                           " finalists that passed the screen verifies " + target +
+                           " (more --finalists or --screening-runs may find one)"
+                     : "no profile within the limits reaches " + target) +
                 "; the best found reaches " + p_text + " over " +
                 std::to_string(r.verification.runs) + " runs: " + explain(r.binding.c_str());
   }
