@@ -21,7 +21,7 @@
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
-#include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "selfalign/design/actuator_samples.hpp"
 #include "selfalign/robust/robust_design.hpp"
 #include "selfalign/units.hpp"
 
@@ -43,45 +43,25 @@ struct DesignFlags {
   std::optional<double> moving_mass;  // [kg]
 };
 
-// y''' at phase t [-]: the ramp's jerk on a jerk-limited profile; 0 on a jump profile's
-// plateaus (its jerk is impulsive at the switches).
-double jerk_at(const TableProfile& profile, double t) {
-  const PiecewisePolynomialProfile* pp = profile.piecewise_polynomial();
-  if (!pp) return std::numeric_limits<double>::quiet_NaN();
-  double jerk = 0;
-  for (const AccelerationSegment& s : pp->segments())
-    if (s.begin <= t) jerk = s.jerk;
-  return jerk;
-}
-
-// One period of the profile, SI, for a motion controller: n = round(period x rate) samples at
-// t_i = i period / n (i < n: no repeated endpoint, so playing it in a loop is seamless); the
-// rate becomes n / period, reported in `samples`.
+// One period for a motion controller (design/actuator_samples.hpp) as CSV, and its rate in
+// `samples`.
 std::string profile_csv(const DesignRequest& q, const DesignResult& d, double rate,
                         const std::optional<double>& moving_mass, json& samples) {
-  const Scales sc(q.width, q.mu, q.gravity);
-  const std::unique_ptr<TableProfile> recommended = recommended_profile(d);
-  const TableProfile& profile = *recommended;
-  const long long n = std::max(2LL, std::llround(d.period * rate));
-  const double actual_rate = static_cast<double>(n) / d.period;
-  samples = {{"samples_per_period", n},
-             {"sample_rate_hz", actual_rate},
-             {"requested_sample_rate_hz", rate},
-             {"rate_adjusted", actual_rate != rate},
-             {"columns", moving_mass ? "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3,force_n"
-                                     : "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3"}};
-  if (moving_mass) samples["moving_mass_kg"] = *moving_mass;
+  const ActuatorSamples s = actuator_samples(
+      q, d, rate, moving_mass ? *moving_mass : std::numeric_limits<double>::quiet_NaN());
+  const bool force = !s.force.empty();
+  samples = {{"samples_per_period", s.samples_per_period},
+             {"sample_rate_hz", s.sample_rate},
+             {"requested_sample_rate_hz", s.requested_rate},
+             {"rate_adjusted", s.sample_rate != s.requested_rate},
+             {"columns", force ? "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3,force_n"
+                               : "t_s,y_m,y_dot_m_per_s,y_ddot_m_per_s2,y_dddot_m_per_s3"}};
+  if (force) samples["moving_mass_kg"] = s.moving_mass;
   std::string csv = samples["columns"].get<std::string>() + "\n";
-  const double jerk_si = sc.acceleration_to_si(1) / sc.time();
-  for (long long i = 0; i < n; ++i) {
-    const double t = d.period * static_cast<double>(i) / static_cast<double>(n);
-    const double tm = sc.time_from_si(t);
-    const TableState s = profile.state(tm);
-    const double ydd = sc.acceleration_to_si(s.ydd);
-    csv += csv_number(t) + ',' + csv_number(sc.length_to_si(s.y)) + ',' +
-           csv_number(sc.velocity_to_si(s.yd)) + ',' + csv_number(ydd) + ',' +
-           csv_number(jerk_at(profile, tm) * jerk_si);
-    if (moving_mass) csv += ',' + csv_number(*moving_mass * ydd);
+  for (std::size_t i = 0; i < s.t.size(); ++i) {
+    csv += csv_number(s.t[i]) + ',' + csv_number(s.y[i]) + ',' + csv_number(s.y_dot[i]) + ',' +
+           csv_number(s.y_ddot[i]) + ',' + csv_number(s.y_dddot[i]);
+    if (force) csv += ',' + csv_number(s.force[i]);
     csv += '\n';
   }
   return csv;

@@ -85,6 +85,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     ActuatorLimits,
     DesignRequest,
     DesignResult,
+    actuator_samples,
     describe,
     design_process,
     compare_families,

@@ -1,6 +1,11 @@
 // selfalign design: from SI actuator limits to a recommended three-phase profile.
 #include "selfalign/design/process_design.hpp"
 
+#include <limits>
+
+#include "arrays.hpp"
+#include "selfalign/design/actuator_samples.hpp"
+
 #include "bindings.hpp"
 #include "progress.hpp"
 #include "record.hpp"
@@ -137,6 +142,35 @@ its numbers are then NaN (absent, never 0).)doc");
                "process_time", r.process_time)
         .str();
   });
+
+  m.def(
+      "actuator_samples",
+      [](const DesignRequest& q, const DesignResult& d, double sample_rate,
+         const py::object& moving_mass) {
+        ActuatorSamples s = actuator_samples(
+            q, d, sample_rate,
+            moving_mass.is_none() ? std::numeric_limits<double>::quiet_NaN()
+                                  : moving_mass.cast<double>());
+        py::dict out;
+        out["t_s"] = to_array(std::move(s.t));
+        out["y_m"] = to_array(std::move(s.y));
+        out["y_dot_m_per_s"] = to_array(std::move(s.y_dot));
+        out["y_ddot_m_per_s2"] = to_array(std::move(s.y_ddot));
+        out["y_dddot_m_per_s3"] = to_array(std::move(s.y_dddot));
+        out["force_n"] = s.force.empty() ? py::object(py::none()) : py::object(to_array(std::move(s.force)));
+        out["sample_rate_hz"] = s.sample_rate;
+        out["requested_sample_rate_hz"] = s.requested_rate;
+        out["samples_per_period"] = s.samples_per_period;
+        return out;
+      },
+      py::arg("request"), py::arg("design"), py::arg("sample_rate"), py::kw_only(),
+      py::arg("moving_mass") = py::none(), R"doc(
+One period of a feasible design's profile for a motion controller, SI: a dict with 't_s',
+'y_m', 'y_dot_m_per_s', 'y_ddot_m_per_s2', 'y_dddot_m_per_s3' (float64 arrays; jerk 0 on a
+jump profile's plateaus, +-jerk on the ramps), 'force_n' (moving_mass x y'' [N], None without a
+moving mass), 'sample_rate_hz' (n / period: the rate adjusted so that one period is n =
+round(period x sample_rate) samples, t_i = i period / n, no repeated endpoint: it loops
+seamlessly), 'requested_sample_rate_hz', 'samples_per_period'.)doc");
 
   m.def(
       "design_process",

@@ -102,3 +102,17 @@ def test_worst_case_reports_how_it_searched():
     end = lambda mu: 0.0375 + 0.003 * (4.2 / (mu * 9.81) - 1) / 1.5
     assert w.worst_error == pytest.approx(max(abs(end(m) - 0.04) for m in (0.19, 0.21)),
                                           abs=1e-9)
+
+
+def test_actuator_samples_loop_and_carry_the_force():
+    request = sa.DesignRequest(acceleration_grid=6, period_grid=2, stroke_grid=1, entries=4)
+    design = sa.design_process(request)
+    s = sa.actuator_samples(request, design, 997.0, moving_mass=1.5)
+    n = round(design.period * 997.0)
+    assert s["samples_per_period"] == n and s["t_s"].shape == (n,)
+    assert s["sample_rate_hz"] == pytest.approx(n / design.period, rel=1e-12)
+    assert s["t_s"][-1] < design.period  # no repeated endpoint
+    assert np.array_equal(s["force_n"], 1.5 * s["y_ddot_m_per_s2"])
+    assert sa.actuator_samples(request, design, 500.0)["force_n"] is None
+    with pytest.raises(sa.InvalidParameter, match="moving_mass"):
+        sa.actuator_samples(request, design, 500.0, moving_mass=-1.0)
