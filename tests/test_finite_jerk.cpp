@@ -183,3 +183,39 @@ TEST(FiniteJerk, StoppingObservesTheAccumulationAtTheStickPositionMinimum) {
   const SimulationResult ts = simulate(profile, friction, FrictionLaw{}, {0, 0, 0}, so);
   EXPECT_NEAR(ts.final_state.x, run.x_stick_min, 1e-3);  // O(h) per period, summed
 }
+
+namespace selfalign {
+namespace {
+
+// Counts arcs and stops a run that makes no progress (a Zeno loop at one instant).
+struct ArcBudget final : ArcSink {
+  long long arcs = 0, limit = 0;
+  explicit ArcBudget(long long l) : limit(l) {}
+  void on_arc(const Arc&) override {
+    if (++arcs > limit) throw std::runtime_error("arc budget exceeded: no progress");
+  }
+};
+
+TEST(FiniteJerk, AStallingSlipFromRestOnATransitionRampStaysStuck) {
+  // Found by the CLI fuzz (montecarlo --jerk 1e11, run 17): a ramp so steep (j = 2e9, ramps of
+  // 1.5e-9) that at rest just below x_stick,min at t = 637 (period 742), |A| = y2'' exceeds
+  // s m(x) by 5e-7 as the ramp starts: the slip lasts 4e-16, below the resolution of t, so
+  // t + tau == t; the stick test said slip again, forever at one instant. The object must stay
+  // stuck, and the run end at eq. (41)'s x_stick,min = x_mu + w (y2'' - 1)/(c_mu - 1).
+  const JerkLimitedThreePhaseProfile profile({0.8578975958119944, 0.05, 1.6983965990298877,
+                                              1.3587172792239102, 1979719499.5311377});
+  const TwoRegionFriction friction(5.0, 1.0, 2.5);
+  const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
+  ExactState state = make_exact_state(setup, {0, 0, 0});
+  ArcBudget budget(2'000'000);
+  // Period by period, as the stopping run looks at the object (the stall came at a look).
+  for (int k = 1; k <= 800; ++k)
+    ASSERT_NO_THROW(advance_exact(setup, state, k * setup.profile.period(), &budget)) << k;
+  EXPECT_LT(budget.arcs, 100'000);
+  const StoppingRun run = stopping_run(profile, friction, FrictionLaw{}, {0, 0, 0});
+  ASSERT_NE(run.kind, StopKind::not_stopped);
+  EXPECT_NEAR(run.end_position, 5.0 + (1.6983965990298877 - 1) / 1.5, 1e-9);
+}
+
+}  // namespace
+}  // namespace selfalign

@@ -139,6 +139,12 @@ std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t
   long long n = state.period_index;
   std::size_t count = 0;
   int breaking = 0;  // after a stick_break: the slip direction the broken stick takes
+  // The last arc was a slip from rest that left t, x and x' unchanged: it lasted less than the
+  // resolution of t (a steep ramp turning |y''| back below the static bound within ~1e-16 at
+  // t ~ 600, so t + tau == t). The object stays stuck (the stick branch then holds it until
+  // |y''| reaches the bound again); without this the stick test and that slip would alternate
+  // forever at one instant (tests/test_finite_jerk.cpp, AStallingSlip...).
+  bool stalled = false;
 
   while (t < t_end) {  // one acceleration segment per pass
     const double period_start = static_cast<double>(n) * P;
@@ -162,7 +168,7 @@ std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t
         m0 = pieces[pi].bound(x);
         const double m_static = law.static_coefficient() * m0;
         if (breaking != 0) sigma = breaking;
-        else if (!sticks(A, m_static)) sigma = A > 0 ? -1 : 1;  // slip against the push
+        else if (!stalled && !sticks(A, m_static)) sigma = A > 0 ? -1 : 1;  // slip against the push
         if (sigma == 0 && J != 0) {  // held until |A + J tau| reaches the static bound
           const double tau_break = J > 0 ? (m_static - A) / J : (-m_static - A) / J;
           if (t + tau_break < t_stop) {
@@ -228,6 +234,7 @@ std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t
         emit(*sink, arc);
       }
       ++count;
+      stalled = sigma != 0 && v == 0 && v1 == 0 && t1 == t && x1 == x;
       t = t1;
       x = x1;
       v = v1;
