@@ -44,8 +44,16 @@ def check_json(sub, where, text):
         physical_nulls = [k for k in ("v_bar", "x_dot_0s", "phase", "displacement", "converged",
                                       "periods", "method") if k in nulls]
         if doc.get("profile") == "three-phase":
-            physical_nulls += [k for k in ("case_a_priori", "t1", "t2", "t3", "y_ini", "y_dot_ini",
-                                           "a2", "a3") if k in nulls]
+            physical_nulls += [k for k in ("t1", "t2", "t3", "y_ini", "y_dot_ini", "a2", "a3")
+                               if k in nulls]
+            # case_a_priori: the Fig. 8 rules, null under a law other than the paper's
+            # (docs/cli.md "steady": --mu-static, --mu-backward) or with a jerk limit.
+            law = doc.get("law") or {}
+            paper_law = (law.get("static") == 1 and law.get("kinetic_forward") == 1
+                         and law.get("kinetic_backward") == 1 and law.get("viscous") is None
+                         and law.get("stribeck_velocity") is None)
+            if paper_law and doc.get("jerk") is None and "case_a_priori" in nulls:
+                physical_nulls.append("case_a_priori")
         if "f" in nulls and doc.get("v_bar") not in (0, 0.0):
             physical_nulls.append("f")
         if physical_nulls:
