@@ -135,10 +135,10 @@ TEST(CliDesign, BadUncertaintyIsOneLineNamingTheParameter) {
 TEST(CliMonteCarlo, EvaluatesADesignReportDeterministically) {
   CliSandbox box;
   std::vector<std::string> args = kSmall;
-  args.insert(args.end(), {"--tolerance", "0.001", "--out", "d.json"});
+  args.insert(args.end(), {"--tolerance", "0.001", "--width", "0.008", "--out", "d.json"});
   ASSERT_EQ(box.run(args).exit_code, 0);
   const auto mc = [&](const std::string& threads) {
-    return box.run({"montecarlo", "--design", "d.json", "--tolerance", "0.001", "--uncertain",
+    return box.run({"montecarlo", "--design", "d.json", "--uncertain",
                     "mu=normal:0.3,3%", "--uncertain", "c_mu=uniform:2.4,2.6", "--runs", "300",
                     "--threads", threads, "--json", "--worst-case", "--interior-points", "8"});
   };
@@ -150,6 +150,13 @@ TEST(CliMonteCarlo, EvaluatesADesignReportDeterministically) {
   EXPECT_NE(j["worst_case"]["method"].get<std::string>().find("corners"), std::string::npos);
   EXPECT_EQ(j["uncertainty"]["mu"]["distribution"].get<std::string>(),
             "normal(mean=0.3, sd=0.009)");
+  // The design's request is read back: its width and tolerance, not the flags' defaults.
+  EXPECT_EQ(j["uncertainty"]["width"]["nominal"].get<double>(), 0.008);
+  EXPECT_EQ(j["monte_carlo"]["tolerance_m"].get<double>(), 0.001);
+  const auto wider = box.run({"montecarlo", "--design", "d.json", "--width", "0.009",
+                              "--uncertain", "mu=normal:0.3,3%", "--runs", "10", "--json"});
+  ASSERT_EQ(wider.exit_code, 0) << wider.err;
+  EXPECT_EQ(json::parse(wider.out)["uncertainty"]["width"]["nominal"].get<double>(), 0.009);
   CliSandbox bad;
   expect_clean_failure(bad, bad.run({"montecarlo", "--period-s", "0.05", "--stroke-m", "0.0005",
                                      "--a2", "5", "--a3", "4", "--x-mu", "0.05", "--uncertain",

@@ -87,6 +87,11 @@ json design_json(const DesignRequest& q, const DesignResult& d) {
   j["process_time_s"] = number_or_null(d.process_time);
   j["stop"] = to_string(d.stop);
   j["requirement"] = q.tolerance == 0 ? "accumulation" : "tolerance";
+  // The object and friction the design is for (montecarlo --design reads them back).
+  j["request"] = {{"mass_kg", q.mass}, {"width_m", q.width}, {"mu", q.mu}, {"c_mu", q.c_mu},
+                  {"g_m_per_s2", q.gravity}, {"mu_static", number_or_null(q.mu_static)},
+                  {"mu_backward", number_or_null(q.mu_backward)}, {"distance_m", q.distance},
+                  {"tolerance_m", q.tolerance}};
   j["candidates"] = d.candidates;
   j["feasible_candidates"] = d.feasible_candidates;
   return j;

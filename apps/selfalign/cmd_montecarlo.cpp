@@ -7,6 +7,7 @@
 #include <iostream>
 #include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -41,10 +42,31 @@ struct MonteCarloFlags {
   int bins = 20;
   bool as_json = false, quiet = false;
   std::optional<std::string> out, runs_csv;
+  std::set<std::string> given;  // request flags given on the command line
 };
 
-// The process of a `design` report: its profile and x_mu; flags given explicitly win.
-Process read_design(const std::string& path, const Process& flags) {
+// The request keys of a design report and the flags that override them.
+struct RequestKey {
+  const char* key;
+  const char* flag;
+  double DesignRequest::*field;
+};
+constexpr RequestKey kRequestKeys[] = {
+    {"mass_kg", "--mass", &DesignRequest::mass},
+    {"width_m", "--width", &DesignRequest::width},
+    {"mu", "--mu", &DesignRequest::mu},
+    {"c_mu", "--c-mu", &DesignRequest::c_mu},
+    {"g_m_per_s2", "--g", &DesignRequest::gravity},
+    {"mu_static", "--mu-static", &DesignRequest::mu_static},
+    {"mu_backward", "--mu-backward", &DesignRequest::mu_backward},
+    {"distance_m", "--distance", &DesignRequest::distance},
+    {"tolerance_m", "--tolerance", &DesignRequest::tolerance},
+};
+
+// The process of a `design` report (its profile and x_mu) and the object and friction it was
+// designed for (its `request`); flags given explicitly win.
+Process read_design(const std::string& path, const Process& flags, DesignRequest& request,
+                    const std::set<std::string>& given) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidParameter("design", path, "must be a readable design report (JSON)");
   std::stringstream text;
@@ -79,6 +101,12 @@ Process read_design(const std::string& path, const Process& flags) {
   r.a3 = keep(flags.a3, r.a3);
   r.x_mu = keep(flags.x_mu, r.x_mu);
   if (!std::isinf(flags.jerk)) r.jerk = flags.jerk;
+  if (j.contains("request") && j["request"].is_object())
+    for (const RequestKey& k : kRequestKeys) {
+      const json& v = j["request"].value(k.key, json());
+      if (given.count(k.flag) || !(v.is_number() || v.is_null())) continue;
+      request.*k.field = v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
+    }
   return r;
 }
 
@@ -88,10 +116,11 @@ void run_monte_carlo(const MonteCarloFlags& f) {
   if (!(f.time_quantile > 0 && f.time_quantile < 1))
     throw InvalidParameter("time-quantile", f.time_quantile, "must be in (0, 1)");
   if (f.bins < 1 || f.bins > 10'000) throw InvalidParameter("bins", f.bins, "must be in [1, 1e4]");
-  const Process p = f.design_file ? read_design(*f.design_file, f.process) : f.process;
+  DesignRequest q = f.request;
+  const Process p = f.design_file ? read_design(*f.design_file, f.process, q, f.given)
+                                  : f.process;
   validate(p);
   const ProcessUncertainty u = f.uncertainty.read();
-  const DesignRequest& q = f.request;
   MonteCarloOptions o = f.options;
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
@@ -151,7 +180,10 @@ void add_montecarlo_command(CLI::App& app) {
   sub->get_option("--tolerance")->description(
       "allowed |end - distance| [m], > 0. Default: 0.0001");
   add_uncertainty_flags(sub, f->uncertainty);
-  sub->add_option("--design", f->design_file, "a `selfalign design --json` report to evaluate")
+  sub->add_option("--design", f->design_file,
+                  "a `selfalign design --json` report to evaluate: its profile, x_mu and the "
+                  "request it was designed for (width, mu, c_mu, g, mu-static, mu-backward, "
+                  "distance, tolerance, mass); flags given here override them")
       ->type_name("FILE")->group("Process");
   Process& p = f->process;
   sub->add_option("--period-s", p.period, "table period [s]")->group("Process");
@@ -193,7 +225,11 @@ void add_montecarlo_command(CLI::App& app) {
   sub->add_option("--runs-csv", f->runs_csv,
                   "write one row per run (its inputs, stop kind, end position, T_p) to FILE")
       ->type_name("FILE")->group("Output");
-  sub->callback([f] { run_monte_carlo(*f); });
+  sub->callback([f, sub] {
+    for (const RequestKey& k : kRequestKeys)
+      if (sub->count(k.flag) > 0) f->given.insert(k.flag);
+    run_monte_carlo(*f);
+  });
 }
 
 }  // namespace selfalign::cli

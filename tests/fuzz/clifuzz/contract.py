@@ -93,7 +93,7 @@ NULLABLE = {
     "design": {"profile.jerk_m_per_s3", "fragility.end_m_with_c_mu_low_high",
                "fragility.end_m_with_mu_low_high", "fragility.end_shift_c_mu_m",
                "fragility.end_shift_mu_m", "fragility.end_nominal_m",
-               "robust.time_quantile_value_s"}
+               "robust.time_quantile_value_s", "request.mu_static", "request.mu_backward"}
               | {f"{block}.process_time_quantiles_s.{q}" for block in ("monte_carlo", "robust.verification") for q in ("0.5", "0.9", "0.99")}
               | {f"{block}.end_position_quantiles_m.{q}" for block in ("monte_carlo", "robust.verification") for q in ("0.005", "0.05", "0.5", "0.95", "0.995")}
               | {"monte_carlo.process_time_at_quantile_s", "robust.verification.process_time_at_quantile_s"},
