@@ -1,0 +1,82 @@
+#include "selfalign/planar/planar_point.hpp"
+
+#include <cmath>
+
+#include "selfalign/error.hpp"
+
+namespace selfalign {
+
+void validate(const PlanarTableMotion& m) {
+  const auto unit = [](const char* name, double ex, double ey) {
+    if (!(std::abs(std::hypot(ex, ey) - 1) <= 1e-12))
+      throw InvalidParameter(name, std::hypot(ex, ey), "must be a unit vector (|e| = 1)");
+  };
+  if (m.first) unit("e1", m.e1_x, m.e1_y);
+  if (m.second) unit("e2", m.e2_x, m.e2_y);
+}
+
+void table_velocity(const PlanarTableMotion& m, double t, double& vx, double& vy) {
+  vx = vy = 0;
+  if (m.first) {
+    const double v = m.first->velocity(t);
+    vx += v * m.e1_x, vy += v * m.e1_y;
+  }
+  if (m.second) {
+    const double v = m.second->velocity(t);
+    vx += v * m.e2_x, vy += v * m.e2_y;
+  }
+}
+
+PlanarPointState make_planar_point_state(const PlanarTableMotion& motion, double t, double x,
+                                         double y, double ux, double uy) {
+  validate(motion);
+  for (double v : {t, x, y, ux, uy}) require_moderate("start", v);
+  PlanarPointState s;
+  s.t0 = s.t = t;
+  s.x = x, s.y = y, s.ux = ux, s.uy = uy;
+  table_velocity(motion, t, s.table_vx, s.table_vy);
+  s.stick = ux == 0 && uy == 0;
+  return s;
+}
+
+void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& field,
+                          const FrictionLaw& law, const TimeSteppingOptions& o,
+                          PlanarPointState& st, long long steps) {
+  validate(o);
+  validate(motion);
+  validate(field);
+  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
+    throw InvalidParameter("law", law.describe(),
+                           "planar friction must be isotropic (kinetic_forward = "
+                           "kinetic_backward) and velocity-independent");
+  const double h = o.step, theta = o.theta;
+  const double s = law.static_coefficient(), kin = law.kinetic_forward();
+  double x = st.x, y = st.y, ux = st.ux, uy = st.uy, tvx = st.table_vx, tvy = st.table_vy;
+  long long k = st.step_index;
+  for (long long i = 0; i < steps; ++i) {
+    ++k;
+    const double t = st.t0 + static_cast<double>(k) * h;
+    double tvx1 = 0, tvy1 = 0;
+    table_velocity(motion, t, tvx1, tvy1);
+    const double m = planar_level(field, x + 0.5 * h * ux, y + 0.5 * h * uy);
+    const double vx = ux - (tvx1 - tvx), vy = uy - (tvy1 - tvy);  // v*: no friction
+    const double speed = std::hypot(vx, vy);
+    const bool sliding_on = vx * ux + vy * uy > 0;
+    const double hold = h * ((sliding_on ? kin : s) * m);
+    double ux1 = 0, uy1 = 0;
+    if (speed > hold) {  // slide: the kinetic impulse against v*
+      const double impulse = h * (kin * m);
+      ux1 = vx - impulse * (vx / speed);
+      uy1 = vy - impulse * (vy / speed);
+    }
+    x += h * ((1 - theta) * ux + theta * ux1);
+    y += h * ((1 - theta) * uy + theta * uy1);
+    ux = ux1, uy = uy1, tvx = tvx1, tvy = tvy1;
+  }
+  st.step_index = k;
+  st.t = st.t0 + static_cast<double>(k) * h;
+  st.x = x, st.y = y, st.ux = ux, st.uy = uy, st.table_vx = tvx, st.table_vy = tvy;
+  st.stick = ux == 0 && uy == 0;
+}
+
+}  // namespace selfalign
