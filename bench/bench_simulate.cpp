@@ -36,6 +36,7 @@
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
+#include "selfalign/planar/planar_exact_point.hpp"
 #include "selfalign/planar/planar_point.hpp"
 
 namespace {
@@ -518,7 +519,26 @@ void bare_planar_point_per_step(benchmark::State& st) {
   per_item_counters(st, kSteps, "ns_per_step");
 }
 
+// The exact planar solver per period (planar/planar_exact_point.hpp), the same motion.
+void planar_exact_point_per_period(benchmark::State& st) {
+  const ThreePhaseProfile px(kCase3), py(kCase1);
+  PlanarTableMotion motion;
+  motion.first = &px;
+  motion.second = &py;
+  long long arcs = 0;
+  for (auto _ : st) {
+    PlanarExactState s;
+    arcs += advance_planar_exact_point(motion, UniformPlanarField{1.0}, kPlanarLaw, s,
+                                       static_cast<double>(kPeriods) * px.period());
+    benchmark::DoNotOptimize(s);
+  }
+  per_item_counters(st, kPeriods, "ns_per_period");
+  st.counters["arcs_per_period"] =
+      static_cast<double>(arcs) / static_cast<double>(st.iterations() * kPeriods);
+}
+
 BENCHMARK(planar_point_per_step)->Unit(benchmark::kMicrosecond);
+BENCHMARK(planar_exact_point_per_period)->Unit(benchmark::kMicrosecond);
 BENCHMARK(bare_planar_point_per_step)->Unit(benchmark::kMicrosecond);
 
 // ---- Fourier profiles: the exact smooth-profile solver beside Moreau (issue 11) ------------
