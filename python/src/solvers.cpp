@@ -11,6 +11,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "selfalign/overloaded.hpp"
 #include "matrix.hpp"
 #include "record.hpp"
 #include "repr.hpp"
@@ -39,12 +40,6 @@ ExactSetup exact_setup(const TableProfile& profile, const FrictionMap& friction)
 
 // Columns of an arc's shape (NaN where the shape has no such parameter): parabolic/cubic x''
 // at the start, harmonic/hyperbolic omega and centre.
-template <class... Fs>
-struct Overloaded : Fs... {
-  using Fs::operator()...;
-};
-template <class... Fs>
-Overloaded(Fs...) -> Overloaded<Fs...>;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 double arc_alpha(const Arc& a) {
   return std::visit(Overloaded{[](const PolynomialArc& p) { return p.accel; },

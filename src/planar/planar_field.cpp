@@ -4,14 +4,10 @@
 #include <cmath>
 
 #include "selfalign/error.hpp"
+#include "selfalign/overloaded.hpp"
 
 namespace selfalign {
 namespace {
-
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
 
 }  // namespace
 

@@ -8,14 +8,10 @@
 #include <boost/math/special_functions/erf.hpp>
 
 #include "selfalign/error.hpp"
+#include "selfalign/overloaded.hpp"
 
 namespace selfalign {
 namespace {
-
-template <class... F>
-struct Overloaded : F... {
-  using F::operator()...;
-};
 
 // Standard normal CDF and its inverse (Boost.Math: erfc and erfc_inv, accurate in the tails).
 double phi(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }

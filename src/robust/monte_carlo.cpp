@@ -12,20 +12,19 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The inverse empirical CDF: the smallest value v with #(values <= v) >= q n.
-double inverse_ecdf(std::vector<double> v, double q, std::size_t n) {
+void require_probability(const std::string& name, double q) {
+  if (!(q > 0 && q <= 1)) throw InvalidParameter(name, q, "must be in (0, 1]");
+}
+
+}  // namespace
+
+double empirical_quantile(std::vector<double> v, double q, std::size_t n) {
   if (n == 0 || v.empty()) return std::numeric_limits<double>::quiet_NaN();
   std::sort(v.begin(), v.end());
   const auto need = static_cast<std::size_t>(std::ceil(q * static_cast<double>(n) - 1e-9));
   const std::size_t k = std::max<std::size_t>(need, 1) - 1;
   return k < v.size() ? v[k] : kInf;
 }
-
-void require_probability(const std::string& name, double q) {
-  if (!(q > 0 && q <= 1)) throw InvalidParameter(name, q, "must be in (0, 1]");
-}
-
-}  // namespace
 
 std::pair<double, double> wilson_interval(int k, int n) {
   if (n <= 0) return {std::numeric_limits<double>::quiet_NaN(),
@@ -118,7 +117,7 @@ double process_time_quantile(const MonteCarloResult& r, double q) {
   std::vector<double> t;
   for (double v : r.process_time)
     if (!std::isnan(v)) t.push_back(v);
-  return inverse_ecdf(std::move(t), q, r.process_time.size());
+  return empirical_quantile(std::move(t), q, r.process_time.size());
 }
 
 double end_position_quantile(const MonteCarloResult& r, double q) {
@@ -126,7 +125,8 @@ double end_position_quantile(const MonteCarloResult& r, double q) {
   std::vector<double> x;
   for (double v : r.end_position)
     if (!std::isnan(v)) x.push_back(v);
-  return inverse_ecdf(x, q, x.size());
+  const std::size_t n = x.size();
+  return empirical_quantile(std::move(x), q, n);
 }
 
 Histogram histogram(const std::vector<double>& values, int bins) {

@@ -48,12 +48,6 @@ std::pair<int, double> best_window(std::vector<double> z, double tol) {
   return {best, centre};
 }
 
-double quantile_with_inf(std::vector<double> t, double q) {
-  std::sort(t.begin(), t.end());
-  const auto need = static_cast<std::size_t>(std::ceil(q * static_cast<double>(t.size()) - 1e-9));
-  return t[std::max<std::size_t>(need, 1) - 1];
-}
-
 const char* dominant(const FailureCounts& f) {
   if (f.outside + f.no_stop + f.no_motion == 0) return "none";
   if (f.outside >= f.no_stop && f.outside >= f.no_motion) return "end-position spread";
@@ -77,13 +71,8 @@ std::string explain(const char* binding) {
 
 FailureCounts failure_counts(const MonteCarloResult& r) {
   FailureCounts f;
-  for (std::size_t i = 0; i < r.kind.size(); ++i) {
-    if (r.kind[i] == StopKind::not_stopped) {
-      (std::isnan(r.entry_time[i]) ? f.no_motion : f.no_stop) += 1;
-    } else if (std::abs(r.end_position[i] - r.target) > r.tolerance) {
-      ++f.outside;
-    }
-  }
+  for (std::size_t i = 0; i < r.kind.size(); ++i)
+    f.add(r.kind[i], r.entry_time[i], r.end_position[i], r.target, r.tolerance);
   return f;
 }
 
@@ -193,16 +182,14 @@ RobustDesignResult design_robust(const DesignRequest& q, const ProcessUncertaint
     std::vector<double> t(draws.size(), kInf);
     for (std::size_t j = 0; j < draws.size(); ++j) {
       const ProcessOutcome& out = outs[j];
-      if (out.kind == StopKind::not_stopped) {
-        (std::isnan(out.entry_time) ? c.failures.no_motion : c.failures.no_stop) += 1;
-        continue;
-      }
       const double end = out.end_position - x_mu0 + c.process.x_mu;
-      c.failures.outside += std::abs(end - q.distance) > q.tolerance;
+      c.failures.add(out.kind, out.entry_time, end, q.distance, q.tolerance);
+      if (out.kind == StopKind::not_stopped) continue;
       const double speed = (x_mu0 + draws[j][4]) / out.entry_time;
       t[j] = out.process_time + (c.process.x_mu - x_mu0) / speed;
     }
-    c.time = quantile_with_inf(t, o.time_quantile);
+    const std::size_t n = t.size();
+    c.time = empirical_quantile(std::move(t), o.time_quantile, n);
   };
   double best_time = kInf;
   std::size_t screened = 0, done = 0;

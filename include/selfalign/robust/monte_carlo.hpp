@@ -70,6 +70,11 @@ double process_time_quantile(const MonteCarloResult& result, double q);
 /// The q-quantile of the end position over the runs that stopped; NaN if none stopped.
 double end_position_quantile(const MonteCarloResult& result, double q);
 
+/// The q-quantile (q in (0, 1]) of n values of which `values` are the finite or infinite ones
+/// given and the other n - values.size() count as +inf: the smallest v with at least q n values
+/// <= v (inverse of the empirical CDF, no interpolation); NaN for n = 0.
+double empirical_quantile(std::vector<double> values, double q, std::size_t n);
+
 /// The 95% Wilson score interval of k successes in n trials.
 std::pair<double, double> wilson_interval(int k, int n);
 

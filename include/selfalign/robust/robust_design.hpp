@@ -21,6 +21,7 @@
 ///     `finalists`: the fastest whose 95% Wilson lower bound of P(within) reaches the target
 ///     is the design; if none does, the result says so and gives the best probability found.
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -48,6 +49,12 @@ struct FailureCounts {
   int no_motion = 0;  ///< never reached the rough region (y2'' too close to mu_static g)
   int no_stop = 0;    ///< reached it but never stopped (peak too close to mu_static c_mu g)
   int outside = 0;    ///< stopped outside the tolerance (spread of the end position)
+  /// Counts one run: not stopped (no_motion when it never entered, else no_stop), or stopped
+  /// at `end` farther than `tolerance` from `target` (outside).
+  void add(StopKind kind, double entry_time, double end, double target, double tolerance) {
+    if (kind == StopKind::not_stopped) (std::isnan(entry_time) ? no_motion : no_stop) += 1;
+    else if (std::abs(end - target) > tolerance) ++outside;
+  }
 };
 
 struct RobustDesignResult {
