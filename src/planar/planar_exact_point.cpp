@@ -62,6 +62,9 @@ long long advance_planar_exact_point(const PlanarTableMotion& motion,
                                      const UniformPlanarField& field, const FrictionLaw& law,
                                      PlanarExactState& st, double t_end) {
   validate(motion);
+  if (motion.rotation)
+    throw InvalidParameter("rotation", motion.rotation->kind(),
+                           "the exact point solver needs a translating table");
   validate(PlanarField(field));
   if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
     throw InvalidParameter("law", law.describe(),

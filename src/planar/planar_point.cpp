@@ -1,6 +1,8 @@
 #include "selfalign/planar/planar_point.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "selfalign/error.hpp"
 
@@ -13,6 +15,38 @@ void validate(const PlanarTableMotion& m) {
   };
   if (m.first) unit("e1", m.e1_x, m.e1_y);
   if (m.second) unit("e2", m.e2_x, m.e2_y);
+}
+
+PlanarTablePose table_pose(const PlanarTableMotion& m, double t) {
+  PlanarTablePose p;
+  if (m.first) {
+    const TableState s = m.first->state(t);
+    p.x += s.y * m.e1_x, p.y += s.y * m.e1_y, p.vx += s.yd * m.e1_x, p.vy += s.yd * m.e1_y;
+  }
+  if (m.second) {
+    const TableState s = m.second->state(t);
+    p.x += s.y * m.e2_x, p.y += s.y * m.e2_y, p.vx += s.yd * m.e2_x, p.vy += s.yd * m.e2_y;
+  }
+  if (m.rotation) {
+    const TableState s = m.rotation->state(t);
+    p.angle = s.y, p.rate = s.yd;
+  }
+  return p;
+}
+
+double planar_period(const PlanarTableMotion& m) {
+  double period = 0;
+  for (const TableProfile* p : {m.first, m.second, m.rotation})
+    if (p) period = std::max(period, p->period());
+  if (period == 0) throw InvalidParameter("motion", "no profile", "needs at least one profile");
+  for (const TableProfile* p : {m.first, m.second, m.rotation})
+    if (p) {
+      const double ratio = period / p->period();
+      if (!(std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio))
+        throw InvalidParameter("period", p->period(),
+                               "must divide the longest period " + std::to_string(period));
+    }
+  return period;
 }
 
 void table_velocity(const PlanarTableMotion& m, double t, double& vx, double& vy) {
@@ -45,6 +79,9 @@ void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& fi
   validate(o);
   validate(motion);
   validate(field);
+  if (motion.rotation)
+    throw InvalidParameter("rotation", motion.rotation->kind(),
+                           "a point contact needs a translating table (use the rigid part)");
   if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
     throw InvalidParameter("law", law.describe(),
                            "planar friction must be isotropic (kinetic_forward = "

@@ -2,10 +2,13 @@
 /// \file planar_field.hpp
 /// Friction levels over the table plane for planar motion (issue 13, first slice): the level
 /// m(x, y) the kinetic and static coefficients multiply (as FrictionMap's m(x) in 1-D, units of
-/// mu_1). A closed set, each exact: uniform, and a half-plane step with a linear transition band
-/// (the two-region table of eqs. 7-9 along any direction).
+/// mu_1). A closed set, each exact: uniform; rough regions with a linear transition band of
+/// width w inside their boundary (m = 1 + (c_mu - 1) clamp(depth / w, 0, 1), depth = the signed
+/// distance into the region): a half-plane (the two-region table of eqs. 7-9 along any
+/// direction), a strip, a rectangular and a circular pocket; and a sampled grid (bilinear).
 
 #include <variant>
+#include <vector>
 
 namespace selfalign {
 
@@ -24,9 +27,49 @@ struct HalfPlaneStepField {
   double c_mu = 2.5;                  ///< mu_2/mu_1 [-], >= 1
 };
 
-using PlanarField = std::variant<UniformPlanarField, HalfPlaneStepField>;
+/// A rough strip: the points with |n . (p - origin)| <= half_width, n = (cos angle, sin angle)
+/// (the strip runs across n); depth = half_width - |n . (p - origin)|.
+struct StripField {
+  double origin_x = 0, origin_y = 0;  ///< a point on the strip's centre line [-]
+  double angle = 0;                   ///< direction across the strip [rad]
+  double half_width = 1;              ///< [-], > 0
+  double width = 0.1;                 ///< transition band [-], > 0
+  double c_mu = 2.5;                  ///< [-], >= 1
+};
 
-/// Throws InvalidParameter naming the first field out of range.
+/// A rough rectangular pocket centred at (centre_x, centre_y), half sides a (along the
+/// direction `angle`) and b; depth = min(a - |xi|, b - |eta|) in the pocket's axes.
+struct RectangularPocketField {
+  double centre_x = 0, centre_y = 0;
+  double angle = 0;
+  double half_length = 1, half_width = 1;  ///< a, b [-], > 0
+  double width = 0.1;                      ///< transition band [-], > 0
+  double c_mu = 2.5;
+};
+
+/// A rough circular pocket: depth = radius - |p - centre|.
+struct CircularPocketField {
+  double centre_x = 0, centre_y = 0;
+  double radius = 1;   ///< [-], > 0
+  double width = 0.1;  ///< transition band [-], > 0
+  double c_mu = 2.5;
+};
+
+/// Levels sampled on a regular grid: node (i, j) at origin + i dx e_a + j dy e_b (e_a = (cos
+/// angle, sin angle), e_b its normal), value levels[j nx + i]; bilinear inside, the nearest edge
+/// value outside (clamped). Values finite and > 0; nx, ny >= 2.
+struct GridField {
+  double origin_x = 0, origin_y = 0, angle = 0;
+  double dx = 1, dy = 1;  ///< spacings [-], > 0
+  int nx = 2, ny = 2;
+  std::vector<double> levels = {1, 1, 1, 1};
+};
+
+using PlanarField = std::variant<UniformPlanarField, HalfPlaneStepField, StripField,
+                                 RectangularPocketField, CircularPocketField, GridField>;
+
+/// Throws InvalidParameter naming the first field out of range (a grid level that is NaN, not
+/// positive or a count that does not match nx ny names "levels").
 void validate(const PlanarField& field);
 
 /// The level at (x, y) [-].
