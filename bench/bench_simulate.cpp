@@ -38,6 +38,7 @@
 #include "selfalign/simulate/time_stepping.hpp"
 #include "selfalign/planar/planar_exact_point.hpp"
 #include "selfalign/planar/planar_point.hpp"
+#include "selfalign/planar/planar_rigid.hpp"
 
 namespace {
 using namespace selfalign;
@@ -537,7 +538,35 @@ void planar_exact_point_per_period(benchmark::State& st) {
       static_cast<double>(arcs) / static_cast<double>(st.iterations() * kPeriods);
 }
 
+// ---- Rigid part on a contact patch (planar/planar_rigid.hpp) ----------------------------------
+// The same table motion; the patch stepper with 1 point at the centre of mass (the closed-form
+// path: the cost of the general stepper's bookkeeping) and with a 16-point 4 x 4 rectangle
+// (the convex impulse problem: dual sweeps and Newton steps), on a half-plane field so that
+// the run has stick, pivot and slip steps. Ratios against planar_point_per_step.
+void planar_patch_per_step(benchmark::State& st) {
+  const ThreePhaseProfile px(kCase3), py(kCase1);
+  PlanarTableMotion motion;
+  motion.first = &px;
+  motion.second = &py;
+  const int side = static_cast<int>(st.range(0));
+  const RigidPart part{0.002, side == 1 ? point_patch() : rectangle_patch(0.1, 0.06, side, side)};
+  const PlanarField field = HalfPlaneStepField{0.02, 0, 0.3, 0.05, 2.5};
+  long long sweeps = 0, newton = 0, stick = 0;
+  for (auto _ : st) {
+    PlanarRigidState s = make_planar_rigid_state(motion, 0, {0, 0, 0.2}, {});
+    advance_planar_rigid(motion, field, kPlanarLaw, part, kStepOptions, s, kSteps);
+    sweeps += s.sweeps, newton += s.newton_steps, stick += s.mode == PatchMode::stick;
+    benchmark::DoNotOptimize(s.pose);
+    benchmark::ClobberMemory();
+  }
+  per_item_counters(st, kSteps, "ns_per_step");
+  const double steps = static_cast<double>(st.iterations() * kSteps);
+  st.counters["sweeps_per_step"] = static_cast<double>(sweeps) / steps;
+  st.counters["newton_per_step"] = static_cast<double>(newton) / steps;
+}
+
 BENCHMARK(planar_point_per_step)->Unit(benchmark::kMicrosecond);
+BENCHMARK(planar_patch_per_step)->Arg(1)->Arg(4)->Unit(benchmark::kMicrosecond);
 BENCHMARK(planar_exact_point_per_period)->Unit(benchmark::kMicrosecond);
 BENCHMARK(bare_planar_point_per_step)->Unit(benchmark::kMicrosecond);
 

@@ -29,5 +29,7 @@ void add_optimize_command(CLI::App& app);
 void add_design_command(CLI::App& app);
 /// `selfalign montecarlo`: a designed process under uncertain inputs (cmd_montecarlo.cpp).
 void add_montecarlo_command(CLI::App& app);
+/// `selfalign planar simulate|steady|field|stop`: planar rigid-part motion (cmd_planar.cpp).
+void add_planar_command(CLI::App& app);
 
 }  // namespace selfalign::cli

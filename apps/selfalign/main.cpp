@@ -89,6 +89,7 @@ constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_optimize_command,
     &selfalign::cli::add_design_command,
     &selfalign::cli::add_montecarlo_command,
+    &selfalign::cli::add_planar_command,
 };
 
 }  // namespace

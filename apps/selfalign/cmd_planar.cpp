@@ -1,0 +1,245 @@
+// `selfalign planar simulate | steady | field | stop`: planar motion of a rigid part on a
+// contact patch (planar/planar_rigid.hpp, planar/planar_analysis.hpp) from a TOML/JSON config
+// (io/planar_config.hpp), in SI units. Each writes a JSON report (--out, or the table / --json
+// on stdout) and, with --csv, its rows (trajectory, drift field, stopping runs).
+
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "report.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/planar_config.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+
+struct PlanarFlags {
+  std::string config;
+  std::optional<std::string> out, csv;
+  bool as_json = false;
+};
+
+const char* mode_name(PatchMode m) {
+  switch (m) {
+    case PatchMode::stick: return "stick";
+    case PatchMode::pivot: return "pivot";
+    case PatchMode::slip: return "slip";
+  }
+  return "?";
+}
+
+// SI views of dimensionless values.
+struct Si {
+  const PlanarSetup& s;
+  double length(double v) const { return s.si ? s.scales.length_to_si(v) : v; }
+  double time(double v) const { return s.si ? s.scales.time_to_si(v) : v; }
+  double velocity(double v) const { return s.si ? s.scales.velocity_to_si(v) : v; }
+  double rate(double v) const { return s.si ? v / s.scales.time() : v; }
+  std::string u(const char* si, const char* dimless) const { return s.si ? si : dimless; }
+};
+
+json census_json(const PlanarCensus& c) {
+  const double n = static_cast<double>(c.total());
+  return {{"stick", c.stick}, {"pivot", c.pivot}, {"slip", c.slip},
+          {"stick_fraction", n > 0 ? c.stick / n : NAN}};
+}
+
+json pose_json(const PlanarPose& p, const Si& si) {
+  return {{"x", number_or_null(si.length(p.x))}, {"y", number_or_null(si.length(p.y))},
+          {"angle_rad", number_or_null(p.angle)}};
+}
+
+PlanarSetup load(const PlanarFlags& f) {
+  require_input_file("config", f.config, "--config", 1 << 24);
+  require_report_paths(f.out, ExtraFile{"--csv", f.csv});
+  return load_planar_config(f.config);
+}
+
+json header(const PlanarSetup& s) {
+  return {{"config", s.path},
+          {"units", s.si ? "si" : "dimensionless"},
+          {"scales", {{"length_m", s.scales.length()}, {"mu", s.scales.mu()}, {"g", s.scales.gravity()}, {"time_s", s.scales.time()}}},
+          {"contact_points", s.problem.part.patch.size()},
+          {"inertia_per_unit_mass", s.problem.part.inertia},
+          {"step", s.problem.options.step},
+          {"steps_per_period", steps_per_period(s.problem)}};
+}
+
+struct TrajectoryCsv : PlanarStepSink {
+  const Si& si;
+  int every;
+  std::ostringstream out;
+  PlanarCensus census;
+  TrajectoryCsv(const Si& s, int e) : si(s), every(e) {}
+  void row(const PlanarRigidState& s) {
+    const PlanarPose w = world_pose(s);
+    out << csv_number(si.time(s.t)) << ',' << csv_number(si.length(s.pose.x)) << ','
+        << csv_number(si.length(s.pose.y)) << ',' << csv_number(s.pose.angle) << ','
+        << csv_number(si.velocity(s.twist.ux)) << ',' << csv_number(si.velocity(s.twist.uy)) << ','
+        << csv_number(si.rate(s.twist.omega)) << ',' << mode_name(s.mode) << ','
+        << csv_number(si.length(w.x)) << ',' << csv_number(si.length(w.y)) << ','
+        << csv_number(w.angle) << '\n';
+  }
+  void on_step(const PlanarRigidState& s) override {
+    switch (s.mode) {
+      case PatchMode::stick: ++census.stick; break;
+      case PatchMode::pivot: ++census.pivot; break;
+      case PatchMode::slip: ++census.slip; break;
+    }
+    if (s.step_index % every == 0) row(s);
+  }
+};
+
+void run_simulate(const PlanarFlags& f) {
+  const PlanarSetup s = load(f);
+  const Si si{s};
+  PlanarRigidState st = make_planar_rigid_state(s.problem.motion, 0, s.pose, s.twist);
+  TrajectoryCsv csv(si, s.every);
+  csv.out << "t" << si.u("_s", "") << ",x" << si.u("_m", "") << ",y" << si.u("_m", "")
+          << ",angle_rad,ux" << si.u("_m_per_s", "") << ",uy" << si.u("_m_per_s", "")
+          << ",omega" << si.u("_rad_per_s", "") << ",mode,world_x" << si.u("_m", "")
+          << ",world_y" << si.u("_m", "") << ",world_angle_rad\n";
+  csv.row(st);
+  advance_planar_rigid(s.problem.motion, s.problem.field, s.problem.law, s.problem.part,
+                       s.problem.options, st, s.periods * steps_per_period(s.problem), &csv);
+  json r = header(s);
+  r["command"] = "planar simulate";
+  r["periods"] = s.periods;
+  r["end_pose"] = pose_json(st.pose, si);
+  r["end_twist"] = {{"ux", si.velocity(st.twist.ux)}, {"uy", si.velocity(st.twist.uy)}, {"omega", si.rate(st.twist.omega)}};
+  r["census"] = census_json(csv.census);
+  r["solver"] = {{"sweeps", st.sweeps}, {"newton_steps", st.newton_steps}};
+  TextTable t;
+  t.row("end pose x, y [" + si.u("m", "-") + "], angle [rad]",
+        table_text(r["end_pose"]["x"]) + ", " + table_text(r["end_pose"]["y"]) + ", " + table_text(r["end_pose"]["angle_rad"]));
+  t.row("steps stick / pivot / slip", std::to_string(csv.census.stick) + " / " + std::to_string(csv.census.pivot) + " / " + std::to_string(csv.census.slip));
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv.out.str());
+}
+
+void run_steady(const PlanarFlags& f) {
+  const PlanarSetup s = load(f);
+  const Si si{s};
+  const PlanarSteadyResult res = planar_steady(s.problem, s.pose, s.twist, s.transient, s.window);
+  json r = header(s);
+  r["command"] = "planar steady";
+  r["transient_periods"] = s.transient;
+  r["window_periods"] = s.window;
+  r["drift_x"] = si.velocity(res.drift_x);
+  r["drift_y"] = si.velocity(res.drift_y);
+  r["rotation_rate"] = si.rate(res.rotation_rate);
+  r["drift_change_between_windows"] = si.velocity(res.change);
+  r["census"] = census_json(res.census);
+  r["end_pose"] = pose_json(res.end_pose, si);
+  TextTable t;
+  t.row("drift velocity x, y [" + si.u("m/s", "-") + "]", table_text(r["drift_x"]) + ", " + table_text(r["drift_y"]));
+  t.row("rotation rate [" + si.u("rad/s", "-") + "]", table_text(r["rotation_rate"]));
+  t.row("change between windows [" + si.u("m/s", "-") + "]", table_text(r["drift_change_between_windows"]));
+  t.row("stick fraction", table_text(r["census"]["stick_fraction"]));
+  std::string csv;
+  if (f.csv) csv = "drift_x,drift_y,rotation_rate\n" + csv_number(r["drift_x"]) + "," + csv_number(r["drift_y"]) + "," + csv_number(r["rotation_rate"]) + "\n";
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv);
+}
+
+void run_field(const PlanarFlags& f) {
+  const PlanarSetup s = load(f);
+  const Si si{s};
+  const auto samples = planar_drift_field(s.problem, s.grid_x, s.grid_y, s.grid_angles, s.field_periods);
+  std::ostringstream csv;
+  csv << "x" << si.u("_m", "") << ",y" << si.u("_m", "") << ",angle_rad,drift_x" << si.u("_m_per_s", "")
+      << ",drift_y" << si.u("_m_per_s", "") << ",rotation_rate" << si.u("_rad_per_s", "") << ",stick,pivot,slip\n";
+  double largest = 0;
+  for (const auto& d : samples) {
+    csv << csv_number(si.length(d.x)) << ',' << csv_number(si.length(d.y)) << ',' << csv_number(d.angle) << ','
+        << csv_number(si.velocity(d.drift_x)) << ',' << csv_number(si.velocity(d.drift_y)) << ','
+        << csv_number(si.rate(d.rotation_rate)) << ',' << d.census.stick << ',' << d.census.pivot << ','
+        << d.census.slip << '\n';
+    largest = std::max(largest, std::hypot(d.drift_x, d.drift_y));
+  }
+  json r = header(s);
+  r["command"] = "planar field";
+  r["samples"] = samples.size();
+  r["periods_per_sample"] = s.field_periods;
+  r["largest_drift"] = si.velocity(largest);
+  TextTable t;
+  t.row("samples", std::to_string(samples.size()));
+  t.row("largest drift [" + si.u("m/s", "-") + "]", table_text(r["largest_drift"]));
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv.str());
+}
+
+void run_stop(const PlanarFlags& f) {
+  const PlanarSetup s = load(f);
+  const Si si{s};
+  const PlanarStopSummary sum = planar_stop(s.problem, s.entries, s.max_periods);
+  std::ostringstream csv;
+  csv << "entry_x" << si.u("_m", "") << ",entry_y" << si.u("_m", "") << ",entry_angle_rad,stopped,end_x"
+      << si.u("_m", "") << ",end_y" << si.u("_m", "") << ",end_angle_rad,process_time" << si.u("_s", "") << '\n';
+  for (const auto& run : sum.runs)
+    csv << csv_number(si.length(run.entry.x)) << ',' << csv_number(si.length(run.entry.y)) << ','
+        << csv_number(run.entry.angle) << ',' << (run.stopped ? "true" : "false") << ','
+        << csv_number(si.length(run.end.x)) << ',' << csv_number(si.length(run.end.y)) << ','
+        << csv_number(run.end.angle) << ',' << csv_number(si.time(run.process_time)) << '\n';
+  json r = header(s);
+  r["command"] = "planar stop";
+  r["runs"] = sum.runs.size();
+  r["stopped"] = sum.stopped;
+  r["max_periods"] = s.max_periods;
+  r["mean_end"] = pose_json({sum.mean_x, sum.mean_y, sum.mean_angle}, si);
+  r["end_region"] = {{"min_x", number_or_null(si.length(sum.min_x))}, {"max_x", number_or_null(si.length(sum.max_x))},
+                     {"min_y", number_or_null(si.length(sum.min_y))}, {"max_y", number_or_null(si.length(sum.max_y))},
+                     {"radius", number_or_null(si.length(sum.radius))}};
+  r["orientation_error_rad"] = number_or_null(sum.angle_range);
+  r["max_process_time"] = number_or_null(si.time(sum.max_process_time));
+  TextTable t;
+  t.row("stopped", std::to_string(sum.stopped) + " of " + std::to_string(sum.runs.size()));
+  t.row("mean end x, y [" + si.u("m", "-") + "]", table_text(r["mean_end"]["x"]) + ", " + table_text(r["mean_end"]["y"]));
+  t.row("end region radius [" + si.u("m", "-") + "]", table_text(r["end_region"]["radius"]));
+  t.row("orientation error [rad]", table_text(r["orientation_error_rad"]));
+  t.row("largest T_p [" + si.u("s", "-") + "]", table_text(r["max_process_time"]));
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv.str());
+}
+
+void add_planar_sub(CLI::App* parent, const char* name, const char* help, void (*run)(const PlanarFlags&),
+                    const char* csv_help) {
+  CLI::App* sub = parent->add_subcommand(name, help);
+  auto f = std::make_shared<PlanarFlags>();
+  sub->add_option("--config", f->config, "the planar configuration (.toml or .json; docs/planar.md)")
+      ->required()->type_name("FILE");
+  sub->add_option("--csv", f->csv, csv_help)->type_name("FILE");
+  sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
+  sub->add_flag("--json", f->as_json, "print the report as JSON");
+  sub->callback([f, run] { run(*f); });
+}
+
+}  // namespace
+
+void add_planar_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "planar",
+      "Planar motion of a rigid part on a contact patch (translation and rotation) on a table "
+      "moving in the plane, by Moreau time-stepping with exact set-valued friction (docs/planar.md)");
+  sub->require_subcommand(1);
+  add_planar_sub(sub, "simulate", "one run from [run] pose/twist for [run] periods",
+                 &run_simulate, "write the trajectory (every [run] every steps) to FILE");
+  add_planar_sub(sub, "steady",
+                 "steady drift velocity and rotation rate after [run] transient periods, "
+                 "averaged over [run] window periods, with the stick/pivot/slip census",
+                 &run_steady, "write the drift as one CSV row to FILE");
+  add_planar_sub(sub, "field",
+                 "the drift field over [field_map] x, y, angles: from rest, the mean drift over "
+                 "[field_map] periods",
+                 &run_field, "write one row per grid point to FILE");
+  add_planar_sub(sub, "stop",
+                 "stopping in the rough region from each [stop] entry pose: end pose, process "
+                 "time, the 2-D end region and the orientation error",
+                 &run_stop, "write one row per entry to FILE");
+}
+
+}  // namespace selfalign::cli

@@ -1,0 +1,43 @@
+#pragma once
+/// \file planar_config.hpp
+/// The configuration of a planar run (`selfalign planar ...`, issue 13) from a TOML or JSON
+/// file, in SI units (units = "si", the default) or dimensionless (units = "dimensionless"),
+/// converted to the dimensionless model with the scales L, mu, g (units.hpp). docs/planar.md
+/// lists every table and key; examples/planar.toml is a complete example. Unknown keys and
+/// values out of range are refused with InvalidParameter naming the key.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "selfalign/planar/planar_analysis.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/units.hpp"
+
+namespace selfalign {
+
+/// A loaded planar configuration: the problem (dimensionless), the profiles it points to, and
+/// the settings of each command. Move-only (the problem points into `profiles`).
+struct PlanarSetup {
+  Scales scales{1.0, 1.0, 9.81};
+  bool si = true;
+  double mass = 1;  ///< [kg] (reported; the model is per unit mass)
+  std::vector<std::unique_ptr<TableProfile>> profiles;
+  PlanarProblem problem;
+  // [run]
+  PlanarPose pose;
+  PlanarTwist twist;
+  int periods = 10, transient = 50, window = 10, every = 1;
+  // [field_map]
+  std::vector<double> grid_x{0.0}, grid_y{0.0}, grid_angles{0.0};
+  int field_periods = 1;
+  // [stop]
+  std::vector<PlanarPose> entries;
+  int max_periods = 2000;
+  std::string path;  ///< the file read
+};
+
+/// Reads and validates a .toml or .json planar configuration.
+PlanarSetup load_planar_config(const std::string& path);
+
+}  // namespace selfalign

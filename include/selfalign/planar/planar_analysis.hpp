@@ -1,0 +1,93 @@
+#pragma once
+/// \file planar_analysis.hpp
+/// Analyses of planar motion (issue 13) on the rigid-part stepper (planar_rigid.hpp): the
+/// steady drift velocity and rotation rate of a periodic excitation, the drift field over table
+/// positions and orientations, the stick/pivot/slip census per period, and stopping in a rough
+/// region with the end pose, the process time and the positioning error as a 2-D region plus an
+/// orientation error, over a set of entry poses. Every time is a whole number of table periods;
+/// absent values (a part that never stops) are NaN.
+
+#include <cmath>
+#include <vector>
+
+#include "selfalign/planar/planar_rigid.hpp"
+
+namespace selfalign {
+
+/// Everything one planar run needs. The motion's profiles must outlive the problem.
+struct PlanarProblem {
+  PlanarTableMotion motion;
+  PlanarField field = UniformPlanarField{};
+  FrictionLaw law;
+  RigidPart part;
+  TimeSteppingOptions options;
+};
+
+/// Throws InvalidParameter naming the first invalid part (motion, field, law, part, step); the
+/// step must divide the motion's period into 2 .. 1e8 whole steps (to 1e-9).
+void validate(const PlanarProblem& problem);
+
+/// Steps per table period.
+long long steps_per_period(const PlanarProblem& problem);
+
+/// Steps of each kind.
+struct PlanarCensus {
+  long long stick = 0, pivot = 0, slip = 0;
+  long long total() const noexcept { return stick + pivot + slip; }
+};
+
+struct PlanarSteadyResult {
+  double drift_x = 0, drift_y = 0;  ///< mean velocity over the last window, table frame [-]
+  double rotation_rate = 0;         ///< mean spin relative to the table [-]
+  double change = 0;  ///< |drift(last window) - drift(window before)| [-]: the transient's trace
+  PlanarCensus census;              ///< over the last window
+  PlanarPose end_pose;
+};
+
+/// Runs `transient_periods` periods from (pose, twist) at t = 0, then two windows of
+/// `window_periods`; reports the last window's drift, spin and census.
+PlanarSteadyResult planar_steady(const PlanarProblem& problem, const PlanarPose& pose,
+                                 const PlanarTwist& twist, int transient_periods,
+                                 int window_periods);
+
+/// One drift-field sample: from rest at (x, y, angle), the mean drift over `periods` periods.
+struct PlanarDriftSample {
+  double x = 0, y = 0, angle = 0;
+  double drift_x = 0, drift_y = 0, rotation_rate = 0;  ///< [-]
+  PlanarCensus census;
+};
+
+/// The drift field on the grid xs x ys x angles (angle fastest, then x, then y), in parallel
+/// (oneTBB; results independent of the thread count).
+std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& problem,
+                                                  const std::vector<double>& xs,
+                                                  const std::vector<double>& ys,
+                                                  const std::vector<double>& angles, int periods);
+
+/// One stopping run.
+struct PlanarStopRun {
+  PlanarPose entry;
+  bool stopped = false;
+  PlanarPose end;               ///< NaN when it did not stop
+  double process_time = NAN;    ///< T_p: start of the first whole period of stick [-]
+  long long periods = 0;        ///< periods simulated
+};
+
+/// The positioning error over the stopped runs: the 2-D region of end positions (bounding box,
+/// largest distance from their mean) and the orientation error (range of end angles).
+struct PlanarStopSummary {
+  std::vector<PlanarStopRun> runs;
+  long long stopped = 0;
+  double mean_x = NAN, mean_y = NAN, mean_angle = NAN;
+  double min_x = NAN, max_x = NAN, min_y = NAN, max_y = NAN;
+  double radius = NAN;           ///< max |end - mean| [-]
+  double angle_range = NAN;      ///< max - min end angle [rad]
+  double max_process_time = NAN; ///< over the stopped runs [-]; NaN when none stopped
+};
+
+/// From rest at each entry pose, runs until the part sticks for a whole period (stopped) or
+/// max_periods pass.
+PlanarStopSummary planar_stop(const PlanarProblem& problem, const std::vector<PlanarPose>& entries,
+                              int max_periods);
+
+}  // namespace selfalign

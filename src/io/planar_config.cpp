@@ -1,0 +1,320 @@
+#include "selfalign/io/planar_config.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+namespace selfalign {
+namespace {
+
+using nlohmann::json;
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// One table of the file with its allowed keys: every read is checked, every key must be known.
+class Section {
+ public:
+  Section(const json& node, std::string name, std::set<std::string> allowed)
+      : node_(node), name_(std::move(name)) {
+    if (!node_.is_object()) throw InvalidParameter(name_, node_.dump(), "must be a table");
+    for (const auto& [k, v] : node_.items())
+      if (!allowed.count(k))
+        throw InvalidParameter(key(k), "unknown key", "is not a key of [" + name_ + "]");
+  }
+  std::string key(const std::string& k) const { return name_.empty() ? k : name_ + "." + k; }
+  bool has(const std::string& k) const { return node_.contains(k); }
+  double number(const std::string& k, double fallback) const {
+    if (!has(k)) return fallback;
+    return as_number(node_.at(k), k);
+  }
+  double required(const std::string& k) const {
+    if (!has(k)) throw InvalidParameter(key(k), "missing", "is required");
+    return as_number(node_.at(k), k);
+  }
+  int integer(const std::string& k, int fallback, int lo, int hi) const {
+    const double v = number(k, fallback);
+    if (!(v >= lo && v <= hi) || v != std::floor(v))
+      throw InvalidParameter(key(k), v,
+                             "must be a whole number in [" + std::to_string(lo) + ", " +
+                                 std::to_string(hi) + "]");
+    return static_cast<int>(v);
+  }
+  std::string text(const std::string& k, const std::string& fallback) const {
+    if (!has(k)) return fallback;
+    if (!node_.at(k).is_string()) throw InvalidParameter(key(k), node_.at(k).dump(), "must be a string");
+    return node_.at(k).get<std::string>();
+  }
+  std::vector<double> list(const std::string& k, std::vector<double> fallback = {}) const {
+    if (!has(k)) return fallback;
+    const json& a = node_.at(k);
+    if (!a.is_array()) throw InvalidParameter(key(k), a.dump(), "must be an array of numbers");
+    std::vector<double> out;
+    for (const auto& v : a) out.push_back(as_number(v, k));
+    return out;
+  }
+  const json& raw(const std::string& k) const { return node_.at(k); }
+
+ private:
+  double as_number(const json& v, const std::string& k) const {
+    if (v.is_number()) return v.get<double>();
+    if (v.is_string()) {  // TOML nan / inf arrive as strings through our conversion
+      const std::string s = v.get<std::string>();
+      if (s == "nan") return NAN;
+      if (s == "inf") return INFINITY;
+      if (s == "-inf") return -INFINITY;
+    }
+    throw InvalidParameter(key(k), v.dump(), "must be a number");
+  }
+  const json& node_;
+  std::string name_;
+};
+
+json from_toml_node(const toml::node& n) {
+  if (const auto* t = n.as_table()) {
+    json o = json::object();
+    for (const auto& [k, v] : *t) o[std::string(k.str())] = from_toml_node(v);
+    return o;
+  }
+  if (const auto* a = n.as_array()) {
+    json o = json::array();
+    for (const auto& v : *a) o.push_back(from_toml_node(v));
+    return o;
+  }
+  if (const auto* v = n.as_floating_point()) {
+    const double d = v->get();
+    if (std::isnan(d)) return "nan";
+    if (std::isinf(d)) return d > 0 ? "inf" : "-inf";
+    return d;
+  }
+  if (const auto* v = n.as_integer()) return static_cast<double>(v->get());
+  if (const auto* v = n.as_string()) return v->get();
+  if (const auto* v = n.as_boolean()) return v->get();
+  return nullptr;
+}
+
+json read_document(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InvalidParameter("config", path, "must be a readable file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  if (ends_with(path, ".json")) {
+    try {
+      return json::parse(text);
+    } catch (const json::parse_error& e) {
+      throw InvalidParameter("config", path, "must be valid JSON (" + std::string(e.what()) + ")");
+    }
+  }
+  if (ends_with(path, ".toml")) {
+    try {
+      return from_toml_node(toml::parse(text, path));
+    } catch (const toml::parse_error& e) {
+      throw InvalidParameter("config", path,
+                             "must be valid TOML (" + std::string(e.description()) + ")");
+    }
+  }
+  throw InvalidParameter("config", path, "must end in .toml or .json");
+}
+
+struct Units {
+  bool si;
+  const Scales& s;
+  double length(double v) const { return si ? s.length_from_si(v) : v; }
+  double time(double v) const { return si ? s.time_from_si(v) : v; }
+  double velocity(double v) const { return si ? s.velocity_from_si(v) : v; }
+  double acceleration(double v) const { return si ? s.acceleration_from_si(v) : v; }
+  double rate(double v) const { return si ? v * s.time() : v; }  // [1/s] -> [-]
+  double jerk(double v) const { return si ? v * s.time() / s.acceleration() : v; }
+};
+
+std::unique_ptr<TableProfile> make_profile(const Section& p, const Units& u, bool angular) {
+  const std::string kind = p.text("profile", "three-phase");
+  if (kind == "three-phase") {
+    if (angular)
+      throw InvalidParameter(p.key("profile"), kind, "a rotation needs profile = \"fourier\"");
+    const double period = u.time(p.required("period")), stroke = u.length(p.required("stroke"));
+    const double a2 = u.acceleration(p.required("a2")), a3 = u.acceleration(p.required("a3"));
+    if (p.has("jerk"))
+      return std::make_unique<JerkLimitedThreePhaseProfile>(
+          JerkLimitedThreePhaseParameters{period, stroke, a2, a3, u.jerk(p.required("jerk"))});
+    return std::make_unique<ThreePhaseProfile>(ThreePhaseParameters{period, stroke, a2, a3});
+  }
+  if (kind == "fourier") {
+    std::vector<double> c = p.list("cos"), s = p.list("sin");
+    for (auto* v : {&c, &s})
+      for (double& x : *v) x = angular ? x : u.length(x);  // rad stay rad
+    return std::make_unique<FourierProfile>(u.time(p.required("period")), c, s);
+  }
+  throw InvalidParameter(p.key("profile"), kind, "must be \"three-phase\" or \"fourier\"");
+}
+
+void xy(const Section& s, const std::string& k, const Units& u, double& x, double& y) {
+  const std::vector<double> v = s.list(k, {0.0, 0.0});
+  if (v.size() != 2) throw InvalidParameter(s.key(k), std::to_string(v.size()) + " values", "must be [x, y]");
+  x = u.length(v[0]), y = u.length(v[1]);
+}
+
+PlanarField make_field(const Section& f, const Units& u) {
+  const std::string type = f.text("type", "uniform");
+  const double c_mu = f.number("c_mu", 2.5);
+  const double width = u.length(f.number("width", u.si ? 0.1 * u.s.length() : 0.1));
+  if (type == "uniform") return UniformPlanarField{f.number("level", 1.0)};
+  if (type == "half-plane") {
+    HalfPlaneStepField h{0, 0, f.number("angle", 0), width, c_mu};
+    xy(f, "origin", u, h.origin_x, h.origin_y);
+    return h;
+  }
+  if (type == "strip") {
+    StripField h{0, 0, f.number("angle", 0), u.length(f.required("half_width")), width, c_mu};
+    xy(f, "origin", u, h.origin_x, h.origin_y);
+    return h;
+  }
+  if (type == "rectangle") {
+    RectangularPocketField h{0, 0, f.number("angle", 0), u.length(f.required("half_length")),
+                             u.length(f.required("half_width")), width, c_mu};
+    xy(f, "centre", u, h.centre_x, h.centre_y);
+    return h;
+  }
+  if (type == "circle") {
+    CircularPocketField h{0, 0, u.length(f.required("radius")), width, c_mu};
+    xy(f, "centre", u, h.centre_x, h.centre_y);
+    return h;
+  }
+  if (type == "grid") {
+    GridField g;
+    xy(f, "origin", u, g.origin_x, g.origin_y);
+    g.angle = f.number("angle", 0);
+    g.dx = u.length(f.required("dx")), g.dy = u.length(f.required("dy"));
+    g.nx = f.integer("nx", 2, 2, 100000), g.ny = f.integer("ny", 2, 2, 100000);
+    g.levels = f.list("levels");
+    return g;
+  }
+  throw InvalidParameter(f.key("type"), type,
+                         "must be uniform, half-plane, strip, rectangle, circle or grid");
+}
+
+ContactPatch make_patch(const Section& p, const Units& u) {
+  const std::string shape = p.text("shape", "point");
+  const auto lengths = [&](const std::string& k) {
+    std::vector<double> v = p.list(k);
+    for (double& x : v) x = u.length(x);
+    return v;
+  };
+  if (shape == "point") return point_patch();
+  if (shape == "disc")
+    return disc_patch(u.length(p.required("radius")), p.integer("rings", 4, 1, 10000),
+                      p.integer("sectors", 8, 1, 10000));
+  if (shape == "rectangle")
+    return rectangle_patch(u.length(p.required("length")), u.length(p.required("width")),
+                           p.integer("nx", 4, 1, 10000), p.integer("ny", 4, 1, 10000));
+  if (shape == "polygon")
+    return polygon_patch(lengths("xs"), lengths("ys"), p.integer("subdivisions", 2, 1, 100));
+  if (shape == "points") return weighted_points_patch(lengths("xs"), lengths("ys"), p.list("loads"));
+  throw InvalidParameter(p.key("shape"), shape, "must be point, disc, rectangle, polygon or points");
+}
+
+PlanarPose pose_from(const std::vector<double>& v, const std::string& key, const Units& u) {
+  if (v.size() != 3) throw InvalidParameter(key, std::to_string(v.size()) + " values", "must be [x, y, angle]");
+  return {u.length(v[0]), u.length(v[1]), v[2]};
+}
+
+}  // namespace
+
+PlanarSetup load_planar_config(const std::string& path) {
+  const json doc = read_document(path);
+  if (!doc.is_object()) throw InvalidParameter("config", path, "must be a table of sections");
+  const Section top(doc, "", {"units", "scales", "table", "part", "friction", "field", "run",
+                              "field_map", "stop"});
+  PlanarSetup st;
+  st.path = path;
+  const std::string units = top.text("units", "si");
+  if (units != "si" && units != "dimensionless")
+    throw InvalidParameter("units", units, "must be \"si\" or \"dimensionless\"");
+  st.si = units == "si";
+  const json empty = json::object();
+  const auto section = [&](const char* name, std::set<std::string> keys) {
+    return Section(doc.contains(name) ? doc.at(name) : empty, name, std::move(keys));
+  };
+  const Section sc = section("scales", {"length", "mu", "g"});
+  st.scales = Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81));
+  const Units u{st.si, st.scales};
+  const Section table = section("table", {"x", "y", "rotation"});
+  const std::set<std::string> profile_keys{"profile", "period", "stroke", "a2", "a3", "jerk", "cos", "sin"};
+  PlanarTableMotion& m = st.problem.motion;
+  for (const char* axis : {"x", "y", "rotation"}) {
+    if (!table.has(axis)) continue;
+    const Section p(table.raw(axis), std::string("table.") + axis, profile_keys);
+    st.profiles.push_back(make_profile(p, u, std::string(axis) == "rotation"));
+    const TableProfile* ptr = st.profiles.back().get();
+    (std::string(axis) == "x" ? m.first : std::string(axis) == "y" ? m.second : m.rotation) = ptr;
+  }
+  if (st.profiles.empty())
+    throw InvalidParameter("table", "no motion", "needs [table.x], [table.y] or [table.rotation]");
+  const Section part = section("part", {"mass", "inertia", "shape", "radius", "rings", "sectors",
+                                        "length", "width", "nx", "ny", "xs", "ys", "subdivisions",
+                                        "loads"});
+  st.mass = part.number("mass", 1.0);
+  require_positive_moderate("part.mass", st.mass);
+  const double inertia = part.required("inertia");
+  st.problem.part.inertia = st.si ? inertia / (st.mass * st.scales.length() * st.scales.length()) : inertia;
+  if (!(inertia > 0) || !std::isfinite(inertia))
+    throw InvalidParameter("part.inertia", inertia, "must be finite and > 0");
+  st.problem.part.patch = make_patch(part, u);
+  const Section fr = section("friction", {"static", "kinetic"});
+  const double kinetic = fr.number("kinetic", 1.0);
+  st.problem.law = FrictionLaw(fr.number("static", kinetic), kinetic);
+  st.problem.field = make_field(section("field", {"type", "level", "origin", "centre", "angle",
+                                                  "width", "half_width", "half_length", "radius",
+                                                  "c_mu", "dx", "dy", "nx", "ny", "levels"}),
+                                u);
+  const Section run = section("run", {"step", "theta", "periods", "pose", "twist", "every",
+                                      "transient", "window"});
+  st.problem.options.step = u.time(run.required("step"));
+  st.problem.options.theta = run.number("theta", 0.5);
+  st.periods = run.integer("periods", 10, 1, 1000000);
+  st.transient = run.integer("transient", 50, 0, 100000);
+  st.window = run.integer("window", 10, 1, 100000);
+  st.every = run.integer("every", 1, 1, 1000000000);
+  st.pose = pose_from(run.list("pose", {0, 0, 0}), "run.pose", u);
+  const std::vector<double> tw = run.list("twist", {0, 0, 0});
+  if (tw.size() != 3) throw InvalidParameter("run.twist", std::to_string(tw.size()) + " values", "must be [ux, uy, omega]");
+  st.twist = {u.velocity(tw[0]), u.velocity(tw[1]), st.si ? tw[2] * st.scales.time() : tw[2]};
+  const Section fm = section("field_map", {"x", "y", "angles", "periods"});
+  st.grid_x = fm.list("x", {0.0}), st.grid_y = fm.list("y", {0.0});
+  for (double& v : st.grid_x) v = u.length(v);
+  for (double& v : st.grid_y) v = u.length(v);
+  st.grid_angles = fm.list("angles", {0.0});
+  st.field_periods = fm.integer("periods", 1, 1, 100000);
+  const Section stop = section("stop", {"entries", "max_periods"});
+  st.max_periods = stop.integer("max_periods", 2000, 1, 1000000);
+  if (stop.has("entries")) {
+    const json& e = stop.raw("entries");
+    if (!e.is_array()) throw InvalidParameter("stop.entries", e.dump(), "must be an array of [x, y, angle]");
+    for (const auto& row : e) {
+      if (!row.is_array()) throw InvalidParameter("stop.entries", row.dump(), "must be [x, y, angle]");
+      std::vector<double> v;
+      for (const auto& x : row) {
+        if (!x.is_number()) throw InvalidParameter("stop.entries", x.dump(), "must be numbers");
+        v.push_back(x.get<double>());
+      }
+      st.entries.push_back(pose_from(v, "stop.entries", u));
+    }
+  } else {
+    st.entries.push_back(st.pose);
+  }
+  validate(st.problem);
+  return st;
+}
+
+}  // namespace selfalign

@@ -1,0 +1,157 @@
+#include "selfalign/planar/planar_analysis.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "selfalign/error.hpp"
+
+namespace selfalign {
+namespace {
+
+struct CensusSink : PlanarStepSink {
+  PlanarCensus census;
+  void on_step(const PlanarRigidState& s) override {
+    switch (s.mode) {
+      case PatchMode::stick: ++census.stick; break;
+      case PatchMode::pivot: ++census.pivot; break;
+      case PatchMode::slip: ++census.slip; break;
+    }
+  }
+};
+
+void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
+                 PlanarStepSink* sink = nullptr) {
+  advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
+                       periods * steps_per_period(p), sink);
+}
+
+}  // namespace
+
+void validate(const PlanarProblem& p) {
+  validate(p.motion);
+  validate(p.field);
+  require_planar_law(p.law);
+  validate(p.part);
+  validate(p.options);
+  steps_per_period(p);
+}
+
+long long steps_per_period(const PlanarProblem& p) {
+  const double period = planar_period(p.motion);
+  const double n = period / p.options.step;
+  if (!(n >= 2 && n <= 1e8) || !(std::abs(n - std::round(n)) <= 1e-9 * n))
+    throw InvalidParameter("step", p.options.step,
+                           "must divide the period " + std::to_string(period) +
+                               " into 2 to 1e8 whole steps");
+  return static_cast<long long>(std::llround(n));
+}
+
+PlanarSteadyResult planar_steady(const PlanarProblem& p, const PlanarPose& pose,
+                                 const PlanarTwist& twist, int transient_periods,
+                                 int window_periods) {
+  validate(p);
+  if (transient_periods < 0 || transient_periods > 100000)
+    throw InvalidParameter("transient", std::to_string(transient_periods), "must be in [0, 100000]");
+  if (window_periods < 1 || window_periods > 100000)
+    throw InvalidParameter("window", std::to_string(window_periods), "must be in [1, 100000]");
+  const double span = window_periods * planar_period(p.motion);
+  PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
+  run_periods(p, s, transient_periods);
+  const PlanarPose a = s.pose;
+  run_periods(p, s, window_periods);
+  const PlanarPose b = s.pose;
+  CensusSink census;
+  run_periods(p, s, window_periods, &census);
+  PlanarSteadyResult r;
+  r.drift_x = (s.pose.x - b.x) / span;
+  r.drift_y = (s.pose.y - b.y) / span;
+  r.rotation_rate = (s.pose.angle - b.angle) / span;
+  r.change = std::hypot(r.drift_x - (b.x - a.x) / span, r.drift_y - (b.y - a.y) / span);
+  r.census = census.census;
+  r.end_pose = s.pose;
+  return r;
+}
+
+std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
+                                                  const std::vector<double>& xs,
+                                                  const std::vector<double>& ys,
+                                                  const std::vector<double>& angles, int periods) {
+  validate(p);
+  if (periods < 1 || periods > 100000)
+    throw InvalidParameter("periods", std::to_string(periods), "must be in [1, 100000]");
+  if (xs.empty() || ys.empty() || angles.empty())
+    throw InvalidParameter("grid", "empty", "needs at least one x, y and angle");
+  for (double v : xs) require_moderate("grid x", v);
+  for (double v : ys) require_moderate("grid y", v);
+  for (double v : angles) require_moderate("grid angle", v);
+  std::vector<PlanarDriftSample> out(xs.size() * ys.size() * angles.size());
+  const double span = periods * planar_period(p.motion);
+  tbb::parallel_for(std::size_t{0}, out.size(), [&](std::size_t i) {
+    const std::size_t ia = i % angles.size(), ix = (i / angles.size()) % xs.size(),
+                      iy = i / (angles.size() * xs.size());
+    PlanarDriftSample& d = out[i];
+    d.x = xs[ix], d.y = ys[iy], d.angle = angles[ia];
+    PlanarRigidState s = make_planar_rigid_state(p.motion, 0, {d.x, d.y, d.angle}, {});
+    CensusSink census;
+    run_periods(p, s, periods, &census);
+    d.drift_x = (s.pose.x - d.x) / span;
+    d.drift_y = (s.pose.y - d.y) / span;
+    d.rotation_rate = (s.pose.angle - d.angle) / span;
+    d.census = census.census;
+  });
+  return out;
+}
+
+PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPose>& entries,
+                              int max_periods) {
+  validate(p);
+  if (max_periods < 1 || max_periods > 1000000)
+    throw InvalidParameter("max_periods", std::to_string(max_periods), "must be in [1, 1000000]");
+  if (entries.empty()) throw InvalidParameter("entries", "none", "needs at least one entry pose");
+  PlanarStopSummary sum;
+  sum.runs.resize(entries.size());
+  const double period = planar_period(p.motion);
+  tbb::parallel_for(std::size_t{0}, entries.size(), [&](std::size_t i) {
+    PlanarStopRun& run = sum.runs[i];
+    run.entry = entries[i];
+    run.end = {NAN, NAN, NAN};
+    PlanarRigidState s = make_planar_rigid_state(p.motion, 0, entries[i], {});
+    for (long long k = 1; k <= max_periods; ++k) {
+      CensusSink census;
+      run_periods(p, s, 1, &census);
+      run.periods = k;
+      if (census.census.stick == census.census.total()) {
+        run.stopped = true;
+        run.end = s.pose;
+        run.process_time = (k - 1) * period;
+        break;
+      }
+    }
+  });
+  double sx = 0, sy = 0, sa = 0;
+  for (const auto& r : sum.runs)
+    if (r.stopped) {
+      ++sum.stopped;
+      sx += r.end.x, sy += r.end.y, sa += r.end.angle;
+    }
+  if (sum.stopped == 0) return sum;
+  sum.mean_x = sx / sum.stopped, sum.mean_y = sy / sum.stopped, sum.mean_angle = sa / sum.stopped;
+  sum.min_x = sum.min_y = HUGE_VAL, sum.max_x = sum.max_y = -HUGE_VAL;
+  double amin = HUGE_VAL, amax = -HUGE_VAL;
+  sum.radius = 0, sum.max_process_time = 0;
+  for (const auto& r : sum.runs)
+    if (r.stopped) {
+      sum.min_x = std::min(sum.min_x, r.end.x), sum.max_x = std::max(sum.max_x, r.end.x);
+      sum.min_y = std::min(sum.min_y, r.end.y), sum.max_y = std::max(sum.max_y, r.end.y);
+      amin = std::min(amin, r.end.angle), amax = std::max(amax, r.end.angle);
+      sum.radius = std::max(sum.radius, std::hypot(r.end.x - sum.mean_x, r.end.y - sum.mean_y));
+      sum.max_process_time = std::max(sum.max_process_time, r.process_time);
+    }
+  sum.angle_range = amax - amin;
+  return sum;
+}
+
+}  // namespace selfalign
