@@ -27,5 +27,6 @@ void bind_positioning(py::module_& m);   // positioning accuracy and surfaces
 void bind_optimize(py::module_& m);      // profile optimisation (Sect. 4.4.2)
 void bind_design(py::module_& m);        // design_process: SI limits -> recommended profile
 void bind_uncertainty(py::module_& m);   // distributions, Monte Carlo, worst case, design_robust
+void bind_planar(py::module_& m);        // contact patches, planar fields, rigid-part runs (issue 13)
 
 }  // namespace selfalign::python

@@ -24,4 +24,5 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_optimize(m);
   bind_design(m);
   bind_uncertainty(m);
+  bind_planar(m);
 }

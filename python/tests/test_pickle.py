@@ -150,6 +150,35 @@ EXAMPLES = {
     "FailureCounts": lambda: example("RobustDesignResult").failures,
     "RobustDesignResult": lambda: sa.design_robust(REQUEST, UNCERTAINTY, screening_runs=20,
                                                    verification_runs=200, finalists=2),
+    # planar motion of a rigid part (issue 13)
+    "ContactPoint": lambda: sa.ContactPoint(0.1, -0.2, 0.25),
+    "RigidPart": lambda: sa.RigidPart(0.01, sa.rectangle_patch(0.2, 0.1, 2, 2)),
+    "UniformPlanarField": lambda: sa.UniformPlanarField(1.5),
+    "HalfPlaneStepField": lambda: sa.HalfPlaneStepField(origin_x=0.3, origin_y=-0.1, angle=0.2,
+                                                        width=0.05, c_mu=3.0),
+    "StripField": lambda: sa.StripField(origin_x=0.1, origin_y=0.2, angle=0.3, half_width=0.4,
+                                        width=0.05, c_mu=2.0),
+    "RectangularPocketField": lambda: sa.RectangularPocketField(
+        centre_x=0.1, centre_y=0.2, angle=0.3, half_length=0.5, half_width=0.25, width=0.05,
+        c_mu=2.0),
+    "CircularPocketField": lambda: sa.CircularPocketField(centre_x=0.1, centre_y=-0.2,
+                                                          radius=0.3, width=0.05, c_mu=2.0),
+    "GridField": lambda: sa.GridField(origin_x=-1.0, angle=0.1, dx=0.5, dy=0.25, nx=3, ny=2,
+                                      levels=[1.0, 1.5, 2.0, 1.0, 2.5, 3.0]),
+    "PlanarPose": lambda: sa.PlanarPose(0.1, -0.2, 0.3),
+    "PlanarTwist": lambda: sa.PlanarTwist(0.1, -0.2, 2.0),
+    "PlanarCensus": lambda: sa.PlanarCensus(3, 1, 2),
+    "PlanarSteadyResult": lambda: sa.planar_steady(
+        PROFILE, field=sa.UniformPlanarField(), part=example("RigidPart"), step=0.01,
+        twist=(0.0, 0.1, 0.5), transient=1, window=1),
+    "PlanarDriftSample": lambda: sa.planar_drift_field(
+        PROFILE, field=example("HalfPlaneStepField"), part=sa.RigidPart(), step=0.01,
+        xs=[0.1], ys=[0.0], angles=[0.5], periods=1)["samples"][0],
+    "PlanarStopRun": lambda: example("PlanarStopSummary").runs[1],  # not stopped: NaN end
+    "PlanarStopSummary": lambda: sa.planar_stop(  # the second entry never arrives
+        PROFILE, field=sa.HalfPlaneStepField(origin_x=0.3, width=0.05, c_mu=4.0),
+        part=sa.RigidPart(), step=0.01, entries=[[0.4, 0.1, 0.2], [-5.0, 0.0, 0.0]],
+        max_periods=2),
 }
 
 # Bound classes that are not value types.

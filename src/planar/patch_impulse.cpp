@@ -93,19 +93,28 @@ void block_projection(double dx, double dy, double inertia, double bound, double
   lx = qx * l1 - qy * l2, ly = qy * l1 + qx * l2;
 }
 
-// |grad f| at a twist where no contact is at rest (the kinetic bounds).
-double gradient_norm(std::span<const PatchContact> cs, double inertia, const Twist& free,
-                     const Twist& x) {
-  double g0 = x[0] - free[0], g1 = x[1] - free[1], g2 = inertia * (x[2] - free[2]);
-  for (const auto& c : cs) {
+// grad f at twist x with the kinetic bounds, leaving out contact `skip` and contacts at rest
+// (where f is not differentiable): M (x - free) + sum_i c_i G_i^T u_i / |u_i|.
+Twist smooth_gradient(std::span<const PatchContact> cs, double inertia, const Twist& free,
+                      const Twist& x, int skip = -1) {
+  Twist g{x[0] - free[0], x[1] - free[1], inertia * (x[2] - free[2])};
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    if (static_cast<int>(i) == skip) continue;
+    const PatchContact& c = cs[i];
     double ux, uy;
     slip(c, x, ux, uy);
     const double u = std::hypot(ux, uy);
     if (u == 0) continue;
     const double fx = c.slip_bound * ux / u, fy = c.slip_bound * uy / u;
-    g0 += fx, g1 += fy, g2 += -c.dy * fx + c.dx * fy;
+    g[0] += fx, g[1] += fy, g[2] += -c.dy * fx + c.dx * fy;
   }
-  return std::hypot(g0, g1, g2);
+  return g;
+}
+
+double gradient_norm(std::span<const PatchContact> cs, double inertia, const Twist& free,
+                     const Twist& x) {
+  const Twist g = smooth_gradient(cs, inertia, free, x);
+  return std::hypot(g[0], g[1], g[2]);
 }
 
 // One descent step from a non-optimal kink of contact j: p = -M^-1 (least-norm element of
@@ -113,16 +122,8 @@ double gradient_norm(std::span<const PatchContact> cs, double inertia, const Twi
 bool kink_descent(std::span<const PatchContact> cs, double inertia, const Twist& free, int j,
                   Twist& x, double& fx) {
   const PatchContact& cj = cs[static_cast<std::size_t>(j)];
-  double g0 = x[0] - free[0], g1 = x[1] - free[1], g2 = inertia * (x[2] - free[2]);
-  for (std::size_t i = 0; i < cs.size(); ++i) {
-    if (static_cast<int>(i) == j) continue;
-    double ux, uy;
-    slip(cs[i], x, ux, uy);
-    const double u = std::hypot(ux, uy);
-    if (u == 0) continue;
-    const double fx_ = cs[i].slip_bound * ux / u, fy = cs[i].slip_bound * uy / u;
-    g0 += fx_, g1 += fy, g2 += -cs[i].dy * fx_ + cs[i].dx * fy;
-  }
+  const Twist gs = smooth_gradient(cs, inertia, free, x, j);
+  double g0 = gs[0], g1 = gs[1], g2 = gs[2];
   // lambda minimising |g + G_j^T lambda|^2_{M^-1}: A_j lambda = -G_j M^-1 g, A_j = I + q q^T/j
   double bx, by;
   slip(cj, {g0, g1, g2 / inertia}, bx, by);
@@ -169,15 +170,10 @@ bool pivot_solution(std::span<const PatchContact> cs, double inertia, const Twis
   const double s = std::copysign(std::max(0.0, std::abs(b) - cc), b) / a;
   if (s == 0) return false;
   const Twist d{s * rj[0], s * rj[1], s * rj[2]};
-  double g0 = d[0] - w[0], g1 = d[1] - w[1], g2 = inertia * d[2] - w[2];
-  for (const auto& c : cs) {
-    double ux, uy;
-    slip(c, d, ux, uy);
-    const double n = std::hypot(ux, uy);
-    if (n == 0) continue;
-    const double fx = c.slip_bound * ux / n, fy = c.slip_bound * uy / n;
-    g0 += fx, g1 += fy, g2 += -c.dy * fx + c.dx * fy;
-  }
+  // the contacts at rest under d (j and those coinciding with it) are left out of the gradient
+  const Twist free{w[0], w[1], w[2] / inertia};
+  const Twist g = smooth_gradient(cs, inertia, free, d);
+  const double g0 = g[0], g1 = g[1];
   if (!(std::hypot(g0, g1) <= held * (1 + 1e-12))) return false;
   out = d;
   return true;
@@ -292,19 +288,17 @@ PatchImpulseResult PatchImpulseSolver::solve(std::span<const PatchContact> cs, d
       ++res.newton_steps;
       continue;
     }
-    Eigen::Vector3d g(x[0] - free[0], x[1] - free[1], inertia * (x[2] - free[2]));
+    const Twist gt = smooth_gradient(cs, inertia, free, x);
+    const Eigen::Vector3d g(gt[0], gt[1], gt[2]);
     Eigen::Matrix3d hess = Eigen::Vector3d(1, 1, inertia).asDiagonal();
-    for (const auto& c : cs) {
+    for (const auto& c : cs) {  // + sum_i c_i G_i^T (I - n n^T) G_i / |u_i|
       double ux, uy;
       slip(c, x, ux, uy);
       const double u = std::hypot(ux, uy);
       if (u == 0) continue;
-      const double nx = ux / u, ny = uy / u, b = c.slip_bound;
-      g[0] += b * nx, g[1] += b * ny, g[2] += b * (-c.dy * nx + c.dx * ny);
-      // b (I - n n^T) / u in contact coordinates, mapped by G_i = [I, (-dy, dx)]
-      const double tx = -ny, ty = nx;  // tangent to n
-      const Eigen::Vector3d gt(tx, ty, -c.dy * tx + c.dx * ty);
-      hess += (b / u) * gt * gt.transpose();
+      const double tx = -uy / u, ty = ux / u;  // tangent to the slip direction
+      const Eigen::Vector3d gt3(tx, ty, -c.dy * tx + c.dx * ty);
+      hess += (c.slip_bound / u) * gt3 * gt3.transpose();
     }
     if (g.norm() <= 1e-13 * gscale || it == 100) break;
     ++res.newton_steps;

@@ -1,0 +1,872 @@
+// Planar motion of a rigid part on a contact patch (issue 13): contact patches, friction-level
+// fields over the table plane, the Moreau stepper of planar_rigid.hpp recorded as NumPy columns,
+// and the analyses of planar_analysis.hpp (steady drift, drift field, stopping).
+//
+// The library's PlanarTableMotion borrows raw TableProfile pointers, so it is never bound: each
+// function takes the profiles as arguments (the call keeps the Python objects, hence the
+// profiles, alive while it runs without the GIL) and builds the motion itself.
+#include <pybind11/stl.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "record.hpp"
+#include "repr.hpp"
+#include "selfalign/analysis/sweep.hpp"  // worker_threads
+#include "selfalign/error.hpp"
+#include "selfalign/planar/planar_analysis.hpp"
+#include "selfalign/simulate/simulate.hpp"  // kMaxRecordedSamples, kMaxTimeSteps
+
+namespace selfalign::python {
+
+namespace {
+
+// A list of numbers as Python source: [1, 0.5, ...].
+std::string list_source(const std::vector<double>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i)
+    out += (i ? ", " : "") + number_source(values[i]);
+  return out + "]";
+}
+
+// A field struct checked as the library checks it (InvalidParameter naming the parameter).
+template <class F>
+F checked_field(F f) {
+  validate(PlanarField{f});
+  return f;
+}
+
+// ---- contact patches ---------------------------------------------------------------------
+
+void bind_patches(py::module_& m) {
+  py::class_<ContactPoint> point(m, "ContactPoint", R"doc(
+One contact point of a part's patch: its position (x, y) in the part's body frame relative to
+the centre of mass [-] and its load fraction `load` [-] (its share of the normal load m g).
+The points of a patch carry loads summing to 1 with their load centre at the origin.)doc");
+  point
+      .def(py::init([](double x, double y, double load) { return ContactPoint{x, y, load}; }),
+           py::arg("x") = 0.0, py::arg("y") = 0.0, py::arg("load") = 1.0)
+      .def_readwrite("x", &ContactPoint::x, "body-frame x relative to the centre of mass [-]")
+      .def_readwrite("y", &ContactPoint::y, "body-frame y relative to the centre of mass [-]")
+      .def_readwrite("load", &ContactPoint::load, "load fraction w [-] (share of m g), >= 0")
+      .def("__repr__", [](const ContactPoint& p) {
+        return Repr("ContactPoint")("x", p.x)("y", p.y)("load", p.load).str();
+      });
+  def_record(point, field("x", &ContactPoint::x), field("y", &ContactPoint::y),
+             field("load", &ContactPoint::load));
+
+  m.def("point_patch", &point_patch,
+        "A single contact point at the centre of mass with load 1 (a point contact): a list of "
+        "one ContactPoint.");
+  m.def("disc_patch", &disc_patch, py::arg("radius"), py::arg("rings"), py::arg("sectors"),
+        R"doc(
+Uniform pressure over a disc of radius `radius` [-] (finite, > 0) as `rings` equal-area annuli
+of `sectors` equal sectors each (both in [1, 10000]), one ContactPoint per cell at its centroid
+with load 1/(rings sectors). Their polar moment is r^2/2 to O(1/rings^2). Raises
+InvalidParameter naming the parameter out of range.)doc");
+  m.def("rectangle_patch", &rectangle_patch, py::arg("length"), py::arg("width"), py::arg("nx"),
+        py::arg("ny"), R"doc(
+Uniform pressure over a length x width rectangle [-] centred on the origin (length along the
+body x axis), nx by ny equal cells, one ContactPoint per cell centre with load 1/(nx ny).)doc");
+  m.def(
+      "polygon_patch",
+      [](const py::object& xs, const py::object& ys, int subdivisions) {
+        return polygon_patch(to_vector(xs, "xs"), to_vector(ys, "ys"), subdivisions);
+      },
+      py::arg("xs"), py::arg("ys"), py::arg("subdivisions") = 1, R"doc(
+Uniform pressure over a simple polygon with vertices (xs[i], ys[i]) in order (either
+orientation): ear-clipping triangulation, each triangle split into subdivisions^2 congruent
+sub-triangles (subdivisions in [1, 100]) represented by their centroids, weighted by area, and
+shifted so that the area centroid is the origin. Raises InvalidParameter naming "polygon" for
+fewer than 3 vertices, a self-intersection (naming the two edges) or zero area.)doc");
+  m.def(
+      "weighted_points_patch",
+      [](const py::object& xs, const py::object& ys, const py::object& loads) {
+        return weighted_points_patch(to_vector(xs, "xs"), to_vector(ys, "ys"),
+                                     to_vector(loads, "loads"));
+      },
+      py::arg("xs"), py::arg("ys"), py::arg("loads"), R"doc(
+User contact points (xs[i], ys[i]) [-] with load fractions loads[i]: finite positions,
+fractions >= 0 summing to 1 (to 1e-9) whose load centre sum w_i p_i is the origin (the centre
+of mass; to 1e-9 of the patch size). Points with zero load are dropped. Raises
+InvalidParameter naming "load_fractions" or "points" otherwise.)doc");
+  m.def(
+      "polar_moment",
+      [](const ContactPatch& patch) {
+        validate(patch);
+        return polar_moment(patch);
+      },
+      py::arg("patch"),
+      "sum w_i |p_i|^2 [-]: the patch's polar moment per unit load (r^2/2 for a uniform disc "
+      "of radius r). Raises InvalidParameter for an invalid patch.");
+  m.def(
+      "patch_radius",
+      [](const ContactPatch& patch) {
+        validate(patch);
+        return patch_radius(patch);
+      },
+      py::arg("patch"),
+      "The largest distance |p_i| of a contact point from the centre of mass [-]. Raises "
+      "InvalidParameter for an invalid patch.");
+
+  py::class_<RigidPart> part(m, "RigidPart", R"doc(
+A rigid part for planar motion: its moment of inertia about the centre of mass per unit mass
+j = I/(m L^2) [-] (finite, > 0; r^2/2 for a uniform disc of radius r) and its contact patch
+(a list of ContactPoint, loads summing to 1 with their centre at the origin). Checked on
+construction (InvalidParameter naming "inertia" or the patch's parameter); immutable.)doc");
+  part.def(py::init([](double inertia, std::optional<ContactPatch> patch) {
+             RigidPart p{inertia, patch ? std::move(*patch) : point_patch()};
+             validate(p);
+             return p;
+           }),
+           py::arg("inertia") = RigidPart{}.inertia, py::arg("patch") = py::none(),
+           "patch None: a point contact at the centre of mass (point_patch()).")
+      .def_readonly("inertia", &RigidPart::inertia, "j = I/(m L^2) [-], > 0")
+      .def_property_readonly(
+          "patch", [](const RigidPart& p) { return p.patch; },
+          "the contact points (a list of ContactPoint, a copy)")
+      .def("__repr__", [](const RigidPart& p) {
+        std::string points = "[";
+        for (std::size_t i = 0; i < p.patch.size(); ++i)
+          points += (i ? ", " : "") + Repr("ContactPoint")("x", p.patch[i].x)("y", p.patch[i].y)(
+                                          "load", p.patch[i].load)
+                                          .str();
+        return Repr("RigidPart")("inertia", p.inertia).raw("patch", points + "]").str();
+      });
+  def_record(
+      part,
+      [](double inertia, ContactPatch patch) {
+        RigidPart p{inertia, std::move(patch)};
+        validate(p);
+        return p;
+      },
+      field("inertia", &RigidPart::inertia), field("patch", &RigidPart::patch));
+}
+
+// ---- fields ------------------------------------------------------------------------------
+
+void bind_fields(py::module_& m) {
+  py::class_<UniformPlanarField> uniform(m, "UniformPlanarField",
+                                         "The friction level m(x, y) = level everywhere [-].");
+  uniform
+      .def(py::init([](double level) { return checked_field(UniformPlanarField{level}); }),
+           py::arg("level") = UniformPlanarField{}.level, "level finite, > 0.")
+      .def_readonly("level", &UniformPlanarField::level, "m [-]")
+      .def("__repr__", [](const UniformPlanarField& f) {
+        return Repr("UniformPlanarField")("level", f.level).str();
+      });
+  def_record(
+      uniform, [](double level) { return checked_field(UniformPlanarField{level}); },
+      field("level", &UniformPlanarField::level));
+
+  const HalfPlaneStepField h;
+  py::class_<HalfPlaneStepField> half(m, "HalfPlaneStepField", R"doc(
+The two-region table along the unit normal n = (cos angle, sin angle): with
+d = n . (p - origin), m = 1 for d <= 0, c_mu for d >= width, linear in between (eq. 7 along any
+direction).)doc");
+  half.def(py::init([](double origin_x, double origin_y, double angle, double width,
+                       double c_mu) {
+             return checked_field(HalfPlaneStepField{origin_x, origin_y, angle, width, c_mu});
+           }),
+           py::kw_only(), py::arg("origin_x") = h.origin_x, py::arg("origin_y") = h.origin_y,
+           py::arg("angle") = h.angle, py::arg("width") = h.width, py::arg("c_mu") = h.c_mu,
+           "Raises InvalidParameter naming the parameter out of range (width > 0, c_mu >= 1).")
+      .def_readonly("origin_x", &HalfPlaneStepField::origin_x,
+                    "x of a point on the boundary where the rise starts [-]")
+      .def_readonly("origin_y", &HalfPlaneStepField::origin_y,
+                    "y of a point on the boundary where the rise starts [-]")
+      .def_readonly("angle", &HalfPlaneStepField::angle, "direction of the rise [rad]")
+      .def_readonly("width", &HalfPlaneStepField::width, "transition band [-], > 0")
+      .def_readonly("c_mu", &HalfPlaneStepField::c_mu, "mu_2/mu_1 [-], >= 1")
+      .def("__repr__", [](const HalfPlaneStepField& f) {
+        return Repr("HalfPlaneStepField")("origin_x", f.origin_x)("origin_y", f.origin_y)(
+                   "angle", f.angle)("width", f.width)("c_mu", f.c_mu)
+            .str();
+      });
+  def_record(
+      half,
+      [](double ox, double oy, double angle, double width, double c_mu) {
+        return checked_field(HalfPlaneStepField{ox, oy, angle, width, c_mu});
+      },
+      field("origin_x", &HalfPlaneStepField::origin_x),
+      field("origin_y", &HalfPlaneStepField::origin_y), field("angle", &HalfPlaneStepField::angle),
+      field("width", &HalfPlaneStepField::width), field("c_mu", &HalfPlaneStepField::c_mu));
+
+  const StripField s;
+  py::class_<StripField> strip(m, "StripField", R"doc(
+A rough strip: the points with |n . (p - origin)| <= half_width, n = (cos angle, sin angle)
+(the strip runs across n); m rises linearly from 1 at its edge to c_mu at depth `width`
+inside it (depth = half_width - |n . (p - origin)|).)doc");
+  strip
+      .def(py::init([](double origin_x, double origin_y, double angle, double half_width,
+                       double width, double c_mu) {
+             return checked_field(StripField{origin_x, origin_y, angle, half_width, width, c_mu});
+           }),
+           py::kw_only(), py::arg("origin_x") = s.origin_x, py::arg("origin_y") = s.origin_y,
+           py::arg("angle") = s.angle, py::arg("half_width") = s.half_width,
+           py::arg("width") = s.width, py::arg("c_mu") = s.c_mu,
+           "Raises InvalidParameter naming the parameter out of range.")
+      .def_readonly("origin_x", &StripField::origin_x, "x of a point on the centre line [-]")
+      .def_readonly("origin_y", &StripField::origin_y, "y of a point on the centre line [-]")
+      .def_readonly("angle", &StripField::angle, "direction across the strip [rad]")
+      .def_readonly("half_width", &StripField::half_width, "half the strip's width [-], > 0")
+      .def_readonly("width", &StripField::width, "transition band [-], > 0")
+      .def_readonly("c_mu", &StripField::c_mu, "mu_2/mu_1 [-], >= 1")
+      .def("__repr__", [](const StripField& f) {
+        return Repr("StripField")("origin_x", f.origin_x)("origin_y", f.origin_y)(
+                   "angle", f.angle)("half_width", f.half_width)("width", f.width)("c_mu",
+                                                                                    f.c_mu)
+            .str();
+      });
+  def_record(
+      strip,
+      [](double ox, double oy, double angle, double half_width, double width, double c_mu) {
+        return checked_field(StripField{ox, oy, angle, half_width, width, c_mu});
+      },
+      field("origin_x", &StripField::origin_x), field("origin_y", &StripField::origin_y),
+      field("angle", &StripField::angle), field("half_width", &StripField::half_width),
+      field("width", &StripField::width), field("c_mu", &StripField::c_mu));
+
+  const RectangularPocketField r;
+  py::class_<RectangularPocketField> rect(m, "RectangularPocketField", R"doc(
+A rough rectangular pocket centred at (centre_x, centre_y) with half sides half_length (along
+the direction `angle`) and half_width; m rises from 1 at its edge to c_mu at depth `width`
+inside (depth = min(a - |xi|, b - |eta|) in the pocket's axes).)doc");
+  rect.def(py::init([](double centre_x, double centre_y, double angle, double half_length,
+                       double half_width, double width, double c_mu) {
+             return checked_field(RectangularPocketField{centre_x, centre_y, angle, half_length,
+                                                         half_width, width, c_mu});
+           }),
+           py::kw_only(), py::arg("centre_x") = r.centre_x, py::arg("centre_y") = r.centre_y,
+           py::arg("angle") = r.angle, py::arg("half_length") = r.half_length,
+           py::arg("half_width") = r.half_width, py::arg("width") = r.width,
+           py::arg("c_mu") = r.c_mu, "Raises InvalidParameter naming the parameter out of range.")
+      .def_readonly("centre_x", &RectangularPocketField::centre_x, "x of the centre [-]")
+      .def_readonly("centre_y", &RectangularPocketField::centre_y, "y of the centre [-]")
+      .def_readonly("angle", &RectangularPocketField::angle,
+                    "direction of the pocket's long axis [rad]")
+      .def_readonly("half_length", &RectangularPocketField::half_length,
+                    "half side a along `angle` [-], > 0")
+      .def_readonly("half_width", &RectangularPocketField::half_width,
+                    "half side b across `angle` [-], > 0")
+      .def_readonly("width", &RectangularPocketField::width, "transition band [-], > 0")
+      .def_readonly("c_mu", &RectangularPocketField::c_mu, "mu_2/mu_1 [-], >= 1")
+      .def("__repr__", [](const RectangularPocketField& f) {
+        return Repr("RectangularPocketField")("centre_x", f.centre_x)("centre_y", f.centre_y)(
+                   "angle", f.angle)("half_length", f.half_length)("half_width", f.half_width)(
+                   "width", f.width)("c_mu", f.c_mu)
+            .str();
+      });
+  def_record(
+      rect,
+      [](double cx, double cy, double angle, double a, double b, double width, double c_mu) {
+        return checked_field(RectangularPocketField{cx, cy, angle, a, b, width, c_mu});
+      },
+      field("centre_x", &RectangularPocketField::centre_x),
+      field("centre_y", &RectangularPocketField::centre_y),
+      field("angle", &RectangularPocketField::angle),
+      field("half_length", &RectangularPocketField::half_length),
+      field("half_width", &RectangularPocketField::half_width),
+      field("width", &RectangularPocketField::width), field("c_mu", &RectangularPocketField::c_mu));
+
+  const CircularPocketField c;
+  py::class_<CircularPocketField> circle(m, "CircularPocketField", R"doc(
+A rough circular pocket of radius `radius` about (centre_x, centre_y); m rises from 1 at its
+edge to c_mu at depth `width` inside (depth = radius - |p - centre|).)doc");
+  circle
+      .def(py::init([](double centre_x, double centre_y, double radius, double width,
+                       double c_mu) {
+             return checked_field(CircularPocketField{centre_x, centre_y, radius, width, c_mu});
+           }),
+           py::kw_only(), py::arg("centre_x") = c.centre_x, py::arg("centre_y") = c.centre_y,
+           py::arg("radius") = c.radius, py::arg("width") = c.width, py::arg("c_mu") = c.c_mu,
+           "Raises InvalidParameter naming the parameter out of range.")
+      .def_readonly("centre_x", &CircularPocketField::centre_x, "x of the centre [-]")
+      .def_readonly("centre_y", &CircularPocketField::centre_y, "y of the centre [-]")
+      .def_readonly("radius", &CircularPocketField::radius, "[-], > 0")
+      .def_readonly("width", &CircularPocketField::width, "transition band [-], > 0")
+      .def_readonly("c_mu", &CircularPocketField::c_mu, "mu_2/mu_1 [-], >= 1")
+      .def("__repr__", [](const CircularPocketField& f) {
+        return Repr("CircularPocketField")("centre_x", f.centre_x)("centre_y", f.centre_y)(
+                   "radius", f.radius)("width", f.width)("c_mu", f.c_mu)
+            .str();
+      });
+  def_record(
+      circle,
+      [](double cx, double cy, double radius, double width, double c_mu) {
+        return checked_field(CircularPocketField{cx, cy, radius, width, c_mu});
+      },
+      field("centre_x", &CircularPocketField::centre_x),
+      field("centre_y", &CircularPocketField::centre_y),
+      field("radius", &CircularPocketField::radius), field("width", &CircularPocketField::width),
+      field("c_mu", &CircularPocketField::c_mu));
+
+  const GridField g;
+  const auto make_grid = [](double origin_x, double origin_y, double angle, double dx, double dy,
+                            int nx, int ny, std::vector<double> levels) {
+    return checked_field(GridField{origin_x, origin_y, angle, dx, dy, nx, ny, std::move(levels)});
+  };
+  py::class_<GridField> grid(m, "GridField", R"doc(
+Friction levels sampled on a regular grid: node (i, j) at origin + i dx e_a + j dy e_b
+(e_a = (cos angle, sin angle), e_b its normal) has level levels[j nx + i]; bilinear inside, the
+nearest edge value outside. Levels finite and > 0, nx, ny >= 2, nx ny levels.)doc");
+  grid.def(py::init([make_grid](double origin_x, double origin_y, double angle, double dx,
+                                double dy, int nx, int ny, const py::object& levels) {
+             return make_grid(origin_x, origin_y, angle, dx, dy, nx, ny,
+                              to_vector(levels, "levels"));
+           }),
+           py::kw_only(), py::arg("origin_x") = g.origin_x, py::arg("origin_y") = g.origin_y,
+           py::arg("angle") = g.angle, py::arg("dx") = g.dx, py::arg("dy") = g.dy,
+           py::arg("nx") = g.nx, py::arg("ny") = g.ny,
+           py::arg("levels") = to_array(std::vector(g.levels)),
+           "levels: a 1-D array-like of nx ny values, row j (y index) after row j - 1. Raises "
+           "InvalidParameter naming \"levels\" for a NaN or non-positive level or a count that "
+           "does not match nx ny.")
+      .def_readonly("origin_x", &GridField::origin_x, "x of node (0, 0) [-]")
+      .def_readonly("origin_y", &GridField::origin_y, "y of node (0, 0) [-]")
+      .def_readonly("angle", &GridField::angle, "direction of the grid's first axis [rad]")
+      .def_readonly("dx", &GridField::dx, "spacing along the first axis [-], > 0")
+      .def_readonly("dy", &GridField::dy, "spacing along the second axis [-], > 0")
+      .def_readonly("nx", &GridField::nx, "nodes along the first axis, >= 2")
+      .def_readonly("ny", &GridField::ny, "nodes along the second axis, >= 2")
+      .def_property_readonly(
+          "levels", [](const GridField& f) { return to_array(std::vector(f.levels)); },
+          "the nx ny levels [-] (a copy, float64, index j nx + i)")
+      .def("__repr__", [](const GridField& f) {
+        return Repr("GridField")("origin_x", f.origin_x)("origin_y", f.origin_y)(
+                   "angle", f.angle)("dx", f.dx)("dy", f.dy)("nx", f.nx)("ny", f.ny)
+            .raw("levels", list_source(f.levels))
+            .str();
+      });
+  def_record(grid, make_grid, field("origin_x", &GridField::origin_x),
+             field("origin_y", &GridField::origin_y), field("angle", &GridField::angle),
+             field("dx", &GridField::dx), field("dy", &GridField::dy), field("nx", &GridField::nx),
+             field("ny", &GridField::ny), field("levels", &GridField::levels));
+
+  m.def(
+      "planar_level",
+      [](const PlanarField& f, const py::object& x, const py::object& y) -> py::object {
+        validate(f);
+        if (is_scalar(x) && is_scalar(y)) {
+          const double xv = require_finite("x", scalar_value(x, "x"));
+          const double yv = require_finite("y", scalar_value(y, "y"));
+          return py::float_(planar_level(f, xv, yv));
+        }
+        const py::module_ numpy = py::module_::import("numpy");
+        const py::tuple both = numpy.attr("broadcast_arrays")(
+            numpy.attr("asarray")(x, "float64"), numpy.attr("asarray")(y, "float64"));
+        const auto xa = DoubleArray::ensure(both[0]), ya = DoubleArray::ensure(both[1]);
+        py::array_t<double> out(std::vector<py::ssize_t>(xa.shape(), xa.shape() + xa.ndim()));
+        double* dst = out.mutable_data();
+        for (py::ssize_t i = 0; i < xa.size(); ++i)
+          dst[i] = planar_level(f, require_finite("x", xa.data()[i]),
+                                require_finite("y", ya.data()[i]));
+        return out;
+      },
+      py::arg("field"), py::arg("x"), py::arg("y"), R"doc(
+The friction level m(x, y) [-] of a planar field at table coordinates (x, y): a float for
+floats, else a float64 array of the broadcast shape of x and y. Non-finite coordinates raise
+InvalidParameter naming "x" or "y".)doc");
+  m.def(
+      "rotated_field",
+      [](const PlanarField& f, double angle) {
+        validate(f);
+        return rotated(f, require_finite("angle", angle));
+      },
+      py::arg("field"), py::arg("angle"),
+      "The field rotated by `angle` [rad] about the origin (same kind), for frame-invariance "
+      "checks: a setup rotated as a whole moves the same way, rotated.");
+}
+
+// ---- results ---------------------------------------------------------------------------------
+
+void bind_values(py::module_& m) {
+  bind_int_enum<PatchMode>(m, "PatchMode", R"doc(
+How one step of the rigid-part stepper ended (an enum.IntEnum; the `mode` column of
+simulate_planar):
+  stick = 0  zero relative twist (the part moves with the table)
+  pivot = 1  zero slip at one contact point, the others slipping (a rotation about it)
+  slip  = 2  every contact point slips)doc",
+                           {{"stick", PatchMode::stick},
+                            {"pivot", PatchMode::pivot},
+                            {"slip", PatchMode::slip}});
+
+  py::class_<PlanarPose> pose(m, "PlanarPose", R"doc(
+A pose of the part on the table: its centre of mass (x, y) in table coordinates [-] and its
+angle relative to the table [rad].)doc");
+  pose.def(py::init([](double x, double y, double angle) { return PlanarPose{x, y, angle}; }),
+           py::arg("x") = 0.0, py::arg("y") = 0.0, py::arg("angle") = 0.0)
+      .def_readwrite("x", &PlanarPose::x, "centre of mass, table x [-]")
+      .def_readwrite("y", &PlanarPose::y, "centre of mass, table y [-]")
+      .def_readwrite("angle", &PlanarPose::angle, "angle relative to the table [rad]")
+      .def("__repr__", [](const PlanarPose& p) {
+        return Repr("PlanarPose")("x", p.x)("y", p.y)("angle", p.angle).str();
+      });
+  def_record(pose, field("x", &PlanarPose::x), field("y", &PlanarPose::y),
+             field("angle", &PlanarPose::angle));
+
+  py::class_<PlanarTwist> twist(m, "PlanarTwist", R"doc(
+A twist of the part relative to the table, in table axes: the centre of mass's velocity
+(ux, uy) [-] and the spin omega [-] (rad per unit time).)doc");
+  twist
+      .def(py::init([](double ux, double uy, double omega) { return PlanarTwist{ux, uy, omega}; }),
+           py::arg("ux") = 0.0, py::arg("uy") = 0.0, py::arg("omega") = 0.0)
+      .def_readwrite("ux", &PlanarTwist::ux, "relative velocity along the table's x axis [-]")
+      .def_readwrite("uy", &PlanarTwist::uy, "relative velocity along the table's y axis [-]")
+      .def_readwrite("omega", &PlanarTwist::omega, "relative spin [-]")
+      .def("__repr__", [](const PlanarTwist& t) {
+        return Repr("PlanarTwist")("ux", t.ux)("uy", t.uy)("omega", t.omega).str();
+      });
+  def_record(twist, field("ux", &PlanarTwist::ux), field("uy", &PlanarTwist::uy),
+             field("omega", &PlanarTwist::omega));
+
+  py::class_<PlanarCensus> census(m, "PlanarCensus",
+                                  "Steps of each kind (PatchMode) over a stretch of a run.");
+  census
+      .def(py::init([](long long stick, long long pivot, long long slip) {
+             return PlanarCensus{stick, pivot, slip};
+           }),
+           py::arg("stick") = 0, py::arg("pivot") = 0, py::arg("slip") = 0)
+      .def_readonly("stick", &PlanarCensus::stick, "steps ending in stick")
+      .def_readonly("pivot", &PlanarCensus::pivot, "steps ending in a pivot")
+      .def_readonly("slip", &PlanarCensus::slip, "steps ending in slip")
+      .def("total", &PlanarCensus::total, "stick + pivot + slip")
+      .def("__repr__", [](const PlanarCensus& c) {
+        return Repr("PlanarCensus")("stick", c.stick)("pivot", c.pivot)("slip", c.slip).str();
+      });
+  def_record(census, field("stick", &PlanarCensus::stick), field("pivot", &PlanarCensus::pivot),
+             field("slip", &PlanarCensus::slip));
+
+  using SR = PlanarSteadyResult;
+  py::class_<SR> steady(m, "PlanarSteadyResult", "The outcome of planar_steady().");
+  steady
+      .def_readonly("drift_x", &SR::drift_x,
+                    "mean velocity of the centre of mass over the last window, table x [-]")
+      .def_readonly("drift_y", &SR::drift_y,
+                    "mean velocity of the centre of mass over the last window, table y [-]")
+      .def_readonly("rotation_rate", &SR::rotation_rate,
+                    "mean spin relative to the table over the last window [-]")
+      .def_readonly("change", &SR::change,
+                    "|drift(last window) - drift(window before)| [-]: what is left of the "
+                    "transient")
+      .def_readonly("census", &SR::census, "PlanarCensus of the last window")
+      .def_readonly("end_pose", &SR::end_pose, "PlanarPose at the end of the run")
+      .def("__repr__", [](const SR& r) {
+        return Repr("PlanarSteadyResult")("drift_x", r.drift_x)("drift_y", r.drift_y)(
+                   "rotation_rate", r.rotation_rate)("change", r.change)
+            .str();
+      });
+  def_record(steady, field("drift_x", &SR::drift_x), field("drift_y", &SR::drift_y),
+             field("rotation_rate", &SR::rotation_rate), field("change", &SR::change),
+             field("census", &SR::census), field("end_pose", &SR::end_pose));
+
+  using DS = PlanarDriftSample;
+  py::class_<DS> drift(m, "PlanarDriftSample",
+                       "One sample of planar_drift_field() (its 'samples' list): from rest at "
+                       "(x, y, angle), the mean drift over the sampled periods.");
+  drift.def_readonly("x", &DS::x, "start x on the table [-]")
+      .def_readonly("y", &DS::y, "start y on the table [-]")
+      .def_readonly("angle", &DS::angle, "start angle relative to the table [rad]")
+      .def_readonly("drift_x", &DS::drift_x, "mean velocity along table x [-]")
+      .def_readonly("drift_y", &DS::drift_y, "mean velocity along table y [-]")
+      .def_readonly("rotation_rate", &DS::rotation_rate, "mean spin relative to the table [-]")
+      .def_readonly("census", &DS::census, "PlanarCensus over the sampled periods")
+      .def("__repr__", [](const DS& d) {
+        return Repr("PlanarDriftSample")("x", d.x)("y", d.y)("angle", d.angle)(
+                   "drift_x", d.drift_x)("drift_y", d.drift_y)("rotation_rate", d.rotation_rate)
+            .str();
+      });
+  def_record(drift, field("x", &DS::x), field("y", &DS::y), field("angle", &DS::angle),
+             field("drift_x", &DS::drift_x), field("drift_y", &DS::drift_y),
+             field("rotation_rate", &DS::rotation_rate), field("census", &DS::census));
+
+  using RUN = PlanarStopRun;
+  py::class_<RUN> run(m, "PlanarStopRun", "One run of planar_stop().");
+  run.def_readonly("entry", &RUN::entry, "the entry PlanarPose (the part starts at rest)")
+      .def_readonly("stopped", &RUN::stopped, "whether it stuck for a whole table period")
+      .def_readonly("end", &RUN::end, "the PlanarPose where it stopped; NaN when not stopped")
+      .def_readonly("process_time", &RUN::process_time,
+                    "T_p: start of the first whole period of stick [-]; NaN when not stopped")
+      .def_readonly("periods", &RUN::periods, "table periods simulated")
+      .def("__repr__", [](const RUN& r) {
+        return Repr("PlanarStopRun")
+            .raw("entry", py::repr(py::cast(r.entry)))("stopped", r.stopped)
+            .raw("end", py::repr(py::cast(r.end)))("process_time", r.process_time)(
+                "periods", r.periods)
+            .str();
+      });
+  def_record(run, field("entry", &RUN::entry), field("stopped", &RUN::stopped),
+             field("end", &RUN::end), field("process_time", &RUN::process_time),
+             field("periods", &RUN::periods));
+
+  using SUM = PlanarStopSummary;
+  py::class_<SUM> summary(m, "PlanarStopSummary", R"doc(
+The outcome of planar_stop(): every run, and over the stopped ones the positioning error as a
+2-D region (bounding box, largest distance from the mean end position) and an orientation error
+(range of end angles). NaN where no run stopped.)doc");
+  summary.def_readonly("runs", &SUM::runs, "a list of PlanarStopRun, one per entry (a copy)")
+      .def_readonly("stopped", &SUM::stopped, "runs that stopped")
+      .def_readonly("mean_x", &SUM::mean_x, "mean end x [-]")
+      .def_readonly("mean_y", &SUM::mean_y, "mean end y [-]")
+      .def_readonly("mean_angle", &SUM::mean_angle, "mean end angle [rad]")
+      .def_readonly("min_x", &SUM::min_x, "smallest end x [-]")
+      .def_readonly("max_x", &SUM::max_x, "largest end x [-]")
+      .def_readonly("min_y", &SUM::min_y, "smallest end y [-]")
+      .def_readonly("max_y", &SUM::max_y, "largest end y [-]")
+      .def_readonly("radius", &SUM::radius, "max |end - mean| over the stopped runs [-]")
+      .def_readonly("angle_range", &SUM::angle_range, "max - min end angle [rad]")
+      .def_readonly("max_process_time", &SUM::max_process_time,
+                    "largest T_p over the stopped runs [-]")
+      .def("__repr__", [](const SUM& s) {
+        return Repr("PlanarStopSummary")("runs", static_cast<long long>(s.runs.size()))(
+                   "stopped", s.stopped)("mean_x", s.mean_x)("mean_y", s.mean_y)(
+                   "radius", s.radius)("angle_range", s.angle_range)("max_process_time",
+                                                                     s.max_process_time)
+            .str();
+      });
+  def_record(summary, field("runs", &SUM::runs), field("stopped", &SUM::stopped),
+             field("mean_x", &SUM::mean_x), field("mean_y", &SUM::mean_y),
+             field("mean_angle", &SUM::mean_angle), field("min_x", &SUM::min_x),
+             field("max_x", &SUM::max_x), field("min_y", &SUM::min_y),
+             field("max_y", &SUM::max_y), field("radius", &SUM::radius),
+             field("angle_range", &SUM::angle_range),
+             field("max_process_time", &SUM::max_process_time));
+}
+
+// ---- runs ------------------------------------------------------------------------------------
+
+// The table's motion, borrowing the profiles (which the caller's arguments keep alive).
+PlanarTableMotion motion_of(const TableProfile* x_profile, const TableProfile* y_profile,
+                            const TableProfile* rotation, const py::handle& x_direction,
+                            const py::handle& y_direction) {
+  const auto direction = [](const py::handle& h, const char* name) {
+    const std::vector<double> v = to_vector(h, name);
+    if (v.size() != 2)
+      throw InvalidParameter(name, std::to_string(v.size()) + " values",
+                             "must be a unit vector (ex, ey)");
+    if (!(std::abs(std::hypot(v[0], v[1]) - 1) <= 1e-12))
+      throw InvalidParameter(name, std::hypot(v[0], v[1]), "must be a unit vector (|e| = 1)");
+    return v;
+  };
+  const std::vector<double> e1 = direction(x_direction, "x_direction");
+  const std::vector<double> e2 = direction(y_direction, "y_direction");
+  PlanarTableMotion motion{x_profile, e1[0], e1[1], y_profile, e2[0], e2[1], rotation};
+  validate(motion);
+  return motion;
+}
+
+// A PlanarPose, or a sequence (x, y, angle).
+PlanarPose pose_of(const py::handle& h, const char* name) {
+  if (py::isinstance<PlanarPose>(h)) return h.cast<PlanarPose>();
+  const std::vector<double> v = to_vector(h, name);
+  if (v.size() != 3)
+    throw InvalidParameter(name, std::to_string(v.size()) + " values",
+                           "must be a PlanarPose or (x, y, angle)");
+  return {v[0], v[1], v[2]};
+}
+
+// A PlanarTwist, or a sequence (ux, uy, omega).
+PlanarTwist twist_of(const py::handle& h, const char* name) {
+  if (py::isinstance<PlanarTwist>(h)) return h.cast<PlanarTwist>();
+  const std::vector<double> v = to_vector(h, name);
+  if (v.size() != 3)
+    throw InvalidParameter(name, std::to_string(v.size()) + " values",
+                           "must be a PlanarTwist or (ux, uy, omega)");
+  return {v[0], v[1], v[2]};
+}
+
+PlanarProblem problem_of(const TableProfile* x_profile, const TableProfile* y_profile,
+                         const TableProfile* rotation, const py::handle& x_direction,
+                         const py::handle& y_direction, const PlanarField& field,
+                         const RigidPart& part, const FrictionLaw& law, double step,
+                         double theta) {
+  PlanarProblem p;
+  p.motion = motion_of(x_profile, y_profile, rotation, x_direction, y_direction);
+  p.field = field;
+  p.law = law;
+  p.part = part;
+  p.options = TimeSteppingOptions{step, theta};
+  return p;
+}
+
+// Records the state every `every` steps.
+struct PlanarRecorder final : PlanarStepSink {
+  long long every = 1;
+  long long last = -1;  // step index of the last sample
+  std::vector<double> t, x, y, angle, ux, uy, omega, table_x, table_y, table_angle;
+  std::vector<std::int8_t> mode;
+  std::vector<std::int32_t> pivot;
+
+  void record(const PlanarRigidState& s) {
+    t.push_back(s.t), x.push_back(s.pose.x), y.push_back(s.pose.y);
+    angle.push_back(s.pose.angle), ux.push_back(s.twist.ux), uy.push_back(s.twist.uy);
+    omega.push_back(s.twist.omega);
+    table_x.push_back(s.table.x), table_y.push_back(s.table.y);
+    table_angle.push_back(s.table.angle);
+    mode.push_back(static_cast<std::int8_t>(s.mode));
+    pivot.push_back(s.pivot);
+    last = s.step_index;
+  }
+  void on_step(const PlanarRigidState& s) override {
+    if (s.step_index % every == 0) record(s);
+  }
+  py::dict to_dict() && {
+    py::dict d;
+    d["t"] = to_array(std::move(t)), d["x"] = to_array(std::move(x));
+    d["y"] = to_array(std::move(y)), d["angle"] = to_array(std::move(angle));
+    d["ux"] = to_array(std::move(ux)), d["uy"] = to_array(std::move(uy));
+    d["omega"] = to_array(std::move(omega)), d["mode"] = to_array(std::move(mode));
+    d["pivot"] = to_array(std::move(pivot));
+    d["table_x"] = to_array(std::move(table_x)), d["table_y"] = to_array(std::move(table_y));
+    d["table_angle"] = to_array(std::move(table_angle));
+    return d;
+  }
+};
+
+// Runs f on `threads` workers (0: all cores).
+template <class F>
+auto in_arena(int threads, F&& f) {
+  tbb::task_arena arena(worker_threads(threads));
+  return arena.execute(std::forward<F>(f));
+}
+
+// The (x, y, angle) rows of an N x 3 array-like, or a list of PlanarPose.
+std::vector<PlanarPose> entries_of(const py::handle& h) {
+  std::vector<PlanarPose> out;
+  if (py::isinstance<py::list>(h) || py::isinstance<py::tuple>(h)) {
+    const py::sequence seq = py::reinterpret_borrow<py::sequence>(h);
+    if (seq.size() > 0 && py::isinstance<PlanarPose>(seq[0])) {
+      for (const py::handle e : seq) out.push_back(pose_of(e, "entries"));
+      return out;
+    }
+  }
+  const auto a = DoubleArray::ensure(h);
+  if (!a) throw py::type_error("entries: expected an N x 3 array-like of (x, y, angle)");
+  if (a.ndim() != 2 || a.shape(1) != 3)
+    throw InvalidParameter("entries", "an array of " + std::to_string(a.ndim()) + " dimensions",
+                           "must be N x 3: one (x, y, angle) per row");
+  for (py::ssize_t i = 0; i < a.shape(0); ++i)
+    out.push_back({a.at(i, 0), a.at(i, 1), a.at(i, 2)});
+  return out;
+}
+
+constexpr const char* kCommonDoc = R"doc(
+The table moves by T(t) = x_profile(t) x_direction + y_profile(t) y_direction and turns by
+rotation(t) [rad] about its origin (None: no motion of that kind; each profile a TableProfile,
+their periods dividing the longest one). The part (RigidPart) lies on the friction level
+`field` (UniformPlanarField, HalfPlaneStepField, StripField, RectangularPocketField,
+CircularPocketField or GridField, in table coordinates) under `law` (FrictionLaw: isotropic,
+kinetic_forward = kinetic_backward, and velocity-independent), and is advanced by Moreau's
+time-stepping with step `step` [-] and theta `theta` (docs/planar.md). Everything is
+dimensionless: mass 1, lengths in L, friction per unit m g mu_1. Raises InvalidParameter
+naming the first invalid argument. Runs without the GIL.)doc";
+
+std::string doc(const char* head) { return std::string(head) + kCommonDoc; }
+
+void bind_runs(py::module_& m) {
+  const auto none = py::none();
+  const py::tuple zero3 = py::make_tuple(0.0, 0.0, 0.0);
+  const py::tuple ex = py::make_tuple(1.0, 0.0), ey = py::make_tuple(0.0, 1.0);
+  static const std::string simulate_doc = doc(R"doc(
+One run of a rigid part on a table moving in the plane, from `pose` (PlanarPose or (x, y,
+angle): centre of mass in table coordinates, angle relative to the table) with `twist`
+(PlanarTwist or (ux, uy, omega): relative to the table, in table axes) at t = 0, over `periods`
+table periods or a `duration` [-] (exactly one; a table at rest, no profiles, needs duration,
+a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at t = 0, every
+`every` steps, and at the last step:
+  float64  t; x, y, angle (the pose on the table); ux, uy, omega (the relative twist);
+           table_x, table_y, table_angle (the table's world pose: the part's world centre is
+           (table_x, table_y) + R(table_angle) (x, y), its world angle table_angle + angle)
+  int8     mode (PatchMode of the step that ended there: 0 stick, 1 pivot, 2 slip; at t = 0
+           stick for a zero twist, else slip)
+  int32    pivot (the pivot contact's index in part.patch for mode 1, else -1)
+)doc");
+  m.def(
+      "simulate_planar",
+      [](const TableProfile* x_profile, const TableProfile* y_profile,
+         const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
+         const FrictionLaw& law, double step, double theta, std::optional<long long> periods,
+         std::optional<double> duration, const py::object& pose_in, const py::object& twist_in,
+         long long every, const py::object& x_direction, const py::object& y_direction) {
+        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
+                                           y_direction, field, part, law, step, theta);
+        const PlanarPose pose = pose_of(pose_in, "pose");
+        const PlanarTwist twist = twist_of(twist_in, "twist");
+        if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
+        if (periods.has_value() == duration.has_value())
+          throw InvalidParameter("periods", periods ? std::to_string(*periods) : "None",
+                                 "give exactly one of periods and duration");
+        validate(p.field);
+        validate(p.part);
+        validate(p.options);
+        require_planar_law(p.law);
+        double steps = 0;
+        if (periods) {
+          if (!x_profile && !y_profile && !rotation)
+            throw InvalidParameter("periods", static_cast<double>(*periods),
+                                   "needs a table profile (a table at rest: give duration)");
+          if (*periods < 0)
+            throw InvalidParameter("periods", static_cast<double>(*periods), "must be >= 0");
+          steps = static_cast<double>(*periods) * static_cast<double>(steps_per_period(p));
+        } else {
+          require_non_negative("duration", *duration);
+          steps = std::round(*duration / step);
+          if (!(std::abs(*duration / step - steps) <= 1e-9 * std::max(1.0, steps)))
+            throw InvalidParameter("duration", *duration,
+                                   "must be a whole number of steps (step " +
+                                       format_number(step) + ")");
+        }
+        if (steps > kMaxTimeSteps)
+          throw InvalidParameter("steps", steps, "the run must have at most 1e9 steps");
+        if (std::floor(steps / static_cast<double>(every)) + 2 > kMaxRecordedSamples)
+          throw InvalidParameter("every", static_cast<double>(every),
+                                 "the run would record more than 1e7 samples: raise every");
+        PlanarRecorder rec;
+        rec.every = every;
+        {
+          py::gil_scoped_release release;
+          PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
+          rec.record(s);
+          advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
+                               static_cast<long long>(steps), &rec);
+          if (rec.last != s.step_index) rec.record(s);
+        }
+        return std::move(rec).to_dict();
+      },
+      py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
+      py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
+      py::arg("step"), py::arg("theta") = 0.5, py::arg("periods") = none,
+      py::arg("duration") = none, py::arg("pose") = zero3, py::arg("twist") = zero3,
+      py::arg("every") = 1, py::arg("x_direction") = ex, py::arg("y_direction") = ey,
+      simulate_doc.c_str());
+
+  static const std::string steady_doc = doc(R"doc(
+The steady drift of a part: from `pose` with `twist` at t = 0, runs `transient` table periods
+([0, 100000]), then two windows of `window` periods ([1, 100000]); returns a PlanarSteadyResult
+with the last window's mean drift velocity and spin relative to the table, its PlanarCensus, the
+change of the drift between the two windows, and the end pose. The step must divide the period
+into 2 to 1e8 whole steps.
+)doc");
+  m.def(
+      "planar_steady",
+      [](const TableProfile* x_profile, const TableProfile* y_profile,
+         const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
+         const FrictionLaw& law, double step, double theta, const py::object& pose,
+         const py::object& twist, int transient, int window, const py::object& x_direction,
+         const py::object& y_direction) {
+        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
+                                           y_direction, field, part, law, step, theta);
+        const PlanarPose start = pose_of(pose, "pose");
+        const PlanarTwist u = twist_of(twist, "twist");
+        py::gil_scoped_release release;
+        return planar_steady(p, start, u, transient, window);
+      },
+      py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
+      py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
+      py::arg("step"), py::arg("theta") = 0.5, py::arg("pose") = zero3,
+      py::arg("twist") = zero3, py::arg("transient") = 20, py::arg("window") = 5,
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, steady_doc.c_str());
+
+  static const std::string drift_doc = doc(R"doc(
+The drift field: from rest at every pose of the grid xs x ys x angles (table coordinates [-],
+angles [rad]), the mean drift over `periods` table periods ([1, 100000]), in parallel on
+`threads` workers (0: all cores; results independent of the count). Returns a dict:
+  xs, ys, angles  the grid (1-D float64)
+  x, y, angle, drift_x, drift_y, rotation_rate  float64 arrays shaped
+                  (len(ys), len(xs), len(angles)): the start pose and the mean velocity
+                  along table x, y [-] and the mean spin relative to the table [-]
+  stick, pivot, slip  int64 arrays of that shape: steps of each PatchMode
+  samples         the same as a list of PlanarDriftSample (angle fastest, then x, then y)
+)doc");
+  m.def(
+      "planar_drift_field",
+      [](const TableProfile* x_profile, const TableProfile* y_profile,
+         const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
+         const FrictionLaw& law, double step, double theta, const py::object& xs_in,
+         const py::object& ys_in, const py::object& angles_in, int periods, int threads,
+         const py::object& x_direction, const py::object& y_direction) {
+        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
+                                           y_direction, field, part, law, step, theta);
+        const std::vector<double> xs = to_vector(xs_in, "xs"), ys = to_vector(ys_in, "ys"),
+                                  angles = to_vector(angles_in, "angles");
+        std::vector<PlanarDriftSample> samples;
+        {
+          py::gil_scoped_release release;
+          samples =
+              in_arena(threads, [&] { return planar_drift_field(p, xs, ys, angles, periods); });
+        }
+        const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(ys.size()),
+                                             static_cast<py::ssize_t>(xs.size()),
+                                             static_cast<py::ssize_t>(angles.size())};
+        py::array_t<double> x(shape), y(shape), angle(shape), dx(shape), dy(shape), rate(shape);
+        py::array_t<std::int64_t> stick(shape), pivot(shape), slip(shape);
+        py::list list;
+        for (std::size_t i = 0; i < samples.size(); ++i) {
+          const PlanarDriftSample& s = samples[i];
+          x.mutable_data()[i] = s.x, y.mutable_data()[i] = s.y;
+          angle.mutable_data()[i] = s.angle;
+          dx.mutable_data()[i] = s.drift_x, dy.mutable_data()[i] = s.drift_y;
+          rate.mutable_data()[i] = s.rotation_rate;
+          stick.mutable_data()[i] = s.census.stick, pivot.mutable_data()[i] = s.census.pivot;
+          slip.mutable_data()[i] = s.census.slip;
+          list.append(py::cast(s));
+        }
+        py::dict d;
+        d["xs"] = to_array(std::vector(xs)), d["ys"] = to_array(std::vector(ys));
+        d["angles"] = to_array(std::vector(angles));
+        d["x"] = x, d["y"] = y, d["angle"] = angle;
+        d["drift_x"] = dx, d["drift_y"] = dy, d["rotation_rate"] = rate;
+        d["stick"] = stick, d["pivot"] = pivot, d["slip"] = slip;
+        d["samples"] = list;
+        return d;
+      },
+      py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
+      py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
+      py::arg("step"), py::arg("theta") = 0.5, py::arg("xs"), py::arg("ys"),
+      py::arg("angles") = py::make_tuple(0.0), py::arg("periods"), py::arg("threads") = 0,
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, drift_doc.c_str());
+
+  static const std::string stop_doc = doc(R"doc(
+Stopping in a rough region: from rest at each entry pose (`entries`: an N x 3 array-like of
+(x, y, angle) rows, or a list of PlanarPose), runs until the part sticks for a whole table period
+(stopped; T_p = the start of that period) or max_periods ([1, 1e6]) pass, in parallel on
+`threads` workers (0: all cores). Returns a PlanarStopSummary: every run, the region of the
+stopped end positions and the range of their angles.
+)doc");
+  m.def(
+      "planar_stop",
+      [](const TableProfile* x_profile, const TableProfile* y_profile,
+         const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
+         const FrictionLaw& law, double step, double theta, const py::object& entries_in,
+         int max_periods, int threads, const py::object& x_direction,
+         const py::object& y_direction) {
+        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
+                                           y_direction, field, part, law, step, theta);
+        const std::vector<PlanarPose> entries = entries_of(entries_in);
+        py::gil_scoped_release release;
+        return in_arena(threads, [&] { return planar_stop(p, entries, max_periods); });
+      },
+      py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
+      py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
+      py::arg("step"), py::arg("theta") = 0.5, py::arg("entries"), py::arg("max_periods"),
+      py::arg("threads") = 0, py::arg("x_direction") = ex, py::arg("y_direction") = ey,
+      stop_doc.c_str());
+}
+
+}  // namespace
+
+void bind_planar(py::module_& m) {
+  bind_patches(m);
+  bind_fields(m);
+  bind_values(m);
+  bind_runs(m);
+}
+
+}  // namespace selfalign::python

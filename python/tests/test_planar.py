@@ -1,0 +1,241 @@
+"""Planar motion of a rigid part (issue 13): contact patches, planar fields, simulate_planar and
+the planar analyses, checked against independent values (the 1-D time-stepping scheme, the
+closed-form stop of a sliding disc), bad input, and the figures."""
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import selfalign as sa
+
+PROFILE = sa.ThreePhaseProfile(1.0, 0.084, 3.0, 0.9)
+
+
+# ---- (a) the 1-D scheme along one axis -----------------------------------------------------
+
+def test_point_patch_along_x_is_the_1d_time_stepping_scheme():
+    h, periods = 1e-3, 3
+    start = sa.ObjectState(0.0, 0.1, 0.2)
+    one_d = sa.simulate(PROFILE, sa.UniformFriction(), start,
+                        sa.SimulationOptions(method="time-stepping", duration=periods * 1.0,
+                                             step=h, theta=0.5)).trajectory
+    r = sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                           step=h, periods=periods, pose=(0.1, 0.0, 0.0), twist=(0.2, 0.0, 0.0))
+    assert len(r["t"]) == len(one_d.t) == periods * 1000 + 1
+    np.testing.assert_allclose(r["t"], one_d.t, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(r["x"], one_d.x, rtol=0, atol=1e-10)
+    np.testing.assert_allclose(r["ux"], one_d.xd, rtol=0, atol=1e-10)
+    np.testing.assert_allclose(r["table_x"], one_d.y, rtol=0, atol=1e-10)
+    assert np.all(r["y"] == 0) and np.all(r["uy"] == 0) and np.all(r["table_y"] == 0)
+    assert np.all(r["angle"] == 0) and np.all(r["omega"] == 0) and np.all(r["table_angle"] == 0)
+    np.testing.assert_array_equal(r["mode"][1:] == sa.PatchMode.stick, one_d.stick[1:])
+    assert set(np.unique(r["mode"])) <= {0, 2} and np.all(r["pivot"] == -1)
+
+
+def test_sampling_every_n_steps_keeps_t0_and_the_last_step():
+    full = sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                              step=0.01, periods=2)
+    sparse = sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                step=0.01, periods=2, every=30)
+    idx = list(range(0, 201, 30)) + [200]
+    for key in ("t", "x", "ux", "table_x", "mode"):
+        np.testing.assert_array_equal(sparse[key], full[key][idx], err_msg=key)
+    assert full["t"][0] == 0 and full["t"][-1] == pytest.approx(2.0)
+    assert full["mode"].dtype == np.int8 and full["x"].dtype == np.float64
+
+
+def test_a_held_part_keeps_its_pose_on_a_rotating_table():
+    part = sa.RigidPart(0.005, sa.rectangle_patch(0.2, 0.1, 2, 2))
+    r = sa.simulate_planar(PROFILE, PROFILE, PROFILE, field=sa.UniformPlanarField(10.0),
+                           part=part, step=0.01, periods=2, pose=(0.3, -0.1, 0.4))
+    assert np.all(r["x"] == 0.3) and np.all(r["y"] == -0.1) and np.all(r["angle"] == 0.4)
+    assert np.all(r["mode"] == sa.PatchMode.stick)
+    y, _, _ = PROFILE.sample(r["t"])
+    np.testing.assert_allclose(r["table_x"], y, atol=1e-12)
+    np.testing.assert_allclose(r["table_angle"], y, atol=1e-12)
+
+
+# ---- (b) a uniform disc on a table at rest -------------------------------------------------
+
+DISC = sa.RigidPart(0.02, sa.disc_patch(0.2, 12, 24))  # j = r^2/2 for r = 0.2
+
+
+def _stop_index(values):
+    """The first sample from which values stay exactly 0."""
+    moving = np.flatnonzero(values != 0)
+    return 0 if moving.size == 0 else int(moving[-1]) + 1
+
+
+def test_sliding_and_spinning_disc_stops_both_at_once():
+    h = 1e-3
+    r = sa.simulate_planar(field=sa.UniformPlanarField(), part=DISC, step=h, duration=1.0,
+                           twist=(0.3, 0.0, 2.0))
+    translation = _stop_index(np.hypot(r["ux"], r["uy"]))
+    spin = _stop_index(r["omega"])
+    assert 0 < translation < len(r["t"]) - 1 and 0 < spin < len(r["t"]) - 1
+    assert abs(translation - spin) <= 5
+    # the spin takes part of the friction as torque: it slides longer than a pure slide (0.3)
+    assert r["t"][translation] > 0.3
+    assert np.all(r["mode"][max(translation, spin) + 1:] == sa.PatchMode.stick)
+
+
+def test_pure_slide_of_a_disc_stops_at_v0_over_k():
+    h = 1e-3
+    r = sa.simulate_planar(field=sa.UniformPlanarField(), part=DISC, step=h, duration=0.5,
+                           twist=(0.3, 0.0, 0.0))
+    stop = _stop_index(r["ux"])
+    assert abs(r["t"][stop] - 0.3) <= 2 * h  # decelerates at k m = 1
+    assert np.abs(r["omega"]).max() < 1e-12 and np.abs(r["uy"]).max() < 1e-12  # round-off
+    assert r["x"][-1] == pytest.approx(0.3 ** 2 / 2, abs=2 * h * 0.3)  # v0^2 / (2 k)
+
+
+# ---- patches and fields --------------------------------------------------------------------
+
+def test_patches_carry_unit_load_centred_on_the_origin():
+    for patch in (sa.point_patch(), sa.disc_patch(0.2, 12, 24), sa.rectangle_patch(0.4, 0.2, 4, 2),
+                  sa.polygon_patch([0, 1, 1, 0], [0, 0, 1, 1], 3),
+                  sa.weighted_points_patch([-0.1, 0.1], [0.0, 0.0], [0.5, 0.5])):
+        loads = np.array([p.load for p in patch])
+        xs = np.array([p.x for p in patch])
+        ys = np.array([p.y for p in patch])
+        assert loads.sum() == pytest.approx(1, abs=1e-12)
+        assert abs(loads @ xs) < 1e-12 and abs(loads @ ys) < 1e-12
+    # r^2/2, less O(1/rings^2) and the sectors' (sin(a/2)/(a/2))^2, a = 2 pi/sectors
+    assert sa.polar_moment(sa.disc_patch(0.2, 40, 200)) == pytest.approx(0.02, rel=1e-3)
+    # a unit square: polar moment (1 + 1)/12 in the limit
+    assert sa.polar_moment(sa.rectangle_patch(1, 1, 40, 40)) == pytest.approx(1 / 6, rel=1e-3)
+    assert sa.patch_radius(sa.weighted_points_patch([-0.1, 0.1], [0, 0], [0.5, 0.5])) == \
+        pytest.approx(0.1)
+    assert sa.RigidPart().patch == sa.point_patch() == [sa.ContactPoint(0, 0, 1)]
+
+
+def test_planar_level_is_vectorised_and_matches_the_fields():
+    step = sa.HalfPlaneStepField(origin_x=1.0, width=0.5, c_mu=3.0)
+    assert sa.planar_level(step, 0.9, 7.0) == 1.0
+    assert sa.planar_level(step, 1.25, -3.0) == pytest.approx(2.0)
+    assert sa.planar_level(step, 2.0, 0.0) == 3.0
+    x = np.linspace(0, 2, 5)
+    y = np.array([[0.0], [1.0]])
+    out = sa.planar_level(step, x, y)
+    assert out.shape == (2, 5)
+    np.testing.assert_allclose(out[0], [1.0, 1.0, 1.0, 3.0, 3.0])
+    disc = sa.CircularPocketField(radius=1.0, width=0.2, c_mu=2.0)
+    assert sa.planar_level(disc, 0.0, 0.0) == 2.0 and sa.planar_level(disc, 0.9, 0.0) == \
+        pytest.approx(1.5)
+    grid = sa.GridField(dx=1.0, dy=1.0, nx=2, ny=2, levels=[1.0, 2.0, 3.0, 4.0])
+    assert sa.planar_level(grid, 0.5, 0.5) == pytest.approx(2.5)
+    rot = sa.rotated_field(step, math.pi / 2)
+    assert type(rot) is sa.HalfPlaneStepField
+    assert sa.planar_level(rot, 0.0, 2.0) == 3.0
+
+
+# ---- (c) bad input -------------------------------------------------------------------------
+
+@pytest.mark.parametrize("make, name", [
+    (lambda: sa.RigidPart(0.0), "inertia"),
+    (lambda: sa.RigidPart(-1.0, sa.point_patch()), "inertia"),
+    (lambda: sa.polygon_patch([0.0, 1.0], [0.0, 0.0]), "polygon"),
+    (lambda: sa.polygon_patch([0.0, 1.0, 1.0, 0.0], [0.0, 1.0, 0.0, 1.0]), "polygon"),
+    (lambda: sa.weighted_points_patch([-0.1, 0.1], [0.0, 0.0], [0.5, 0.4]), "load_fractions"),
+    (lambda: sa.GridField(levels=[1.0, math.nan, 1.0, 1.0]), "levels"),
+    (lambda: sa.HalfPlaneStepField(width=-1.0), "width"),
+    (lambda: sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                step=0.01, periods=1, every=0), "every"),
+    (lambda: sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                step=0.3, periods=1), "step"),
+    (lambda: sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                step=0.01, periods=1, law=sa.FrictionLaw(1.2, 1.0, 0.9)), "law"),
+    (lambda: sa.simulate_planar(field=sa.UniformPlanarField(), part=sa.RigidPart(), step=0.01,
+                                periods=1), "periods"),
+    (lambda: sa.planar_steady(field=sa.UniformPlanarField(), part=sa.RigidPart(), step=0.01),
+     "motion"),
+    (lambda: sa.simulate_planar(field=sa.UniformPlanarField(), part=sa.RigidPart(), step=0.01,
+                                duration=0.015), "duration"),
+    (lambda: sa.planar_level(sa.UniformPlanarField(), [0.0, math.inf], 0.0), "x"),
+    (lambda: sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                step=0.01, periods=1, duration=1.0), "periods"),
+    (lambda: sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                step=0.01, periods=1, x_direction=(1.0, 1.0)), "x_direction"),
+    (lambda: sa.planar_stop(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                            step=0.01, entries=[[0.0, 0.0]], max_periods=1), "entries"),
+])
+def test_bad_input_raises_naming_the_parameter(make, name):
+    with pytest.raises(sa.InvalidParameter) as error:
+        make()
+    assert error.value.name == name
+    assert name in str(error.value)
+
+
+# ---- analyses -----------------------------------------------------------------------------
+
+def test_steady_drift_of_a_point_is_the_1d_steady_velocity():
+    r = sa.planar_steady(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                         step=1e-3, transient=3, window=2)
+    v_bar = sa.steady_state(PROFILE).v_bar
+    assert r.drift_x == pytest.approx(v_bar, abs=5e-3)
+    assert r.drift_y == 0 and r.rotation_rate == 0 and r.change < 1e-9
+    assert r.census.total() == 2000 and r.census.pivot == 0
+
+
+def test_drift_field_arrays_match_its_samples_and_stop_in_a_rough_region():
+    field = sa.HalfPlaneStepField(origin_x=0.3, width=0.05, c_mu=4.0)
+    xs, ys = [0.0, 0.5], [0.0, 0.1, 0.2]
+    d = sa.planar_drift_field(PROFILE, field=field, part=sa.RigidPart(), step=0.005, xs=xs,
+                              ys=ys, angles=[0.0, 1.0], periods=2, threads=1)
+    assert d["drift_x"].shape == (3, 2, 2) and len(d["samples"]) == 12
+    for i, s in enumerate(d["samples"]):
+        iy, ix, ia = np.unravel_index(i, (3, 2, 2))
+        assert (s.x, s.y, s.angle) == (xs[ix], ys[iy], [0.0, 1.0][ia])
+        assert s.drift_x == d["drift_x"][iy, ix, ia] and s.census.stick == d["stick"][iy, ix, ia]
+    assert np.all(d["drift_x"][:, 0, :] > 0)  # smooth region: walks along +x
+    assert np.all(d["drift_x"][:, 1, :] == 0)  # deep in the rough region: held
+    summary = sa.planar_stop(PROFILE, field=field, part=sa.RigidPart(), step=0.005,
+                             entries=np.array([[0.0, 0.0, 0.0], [0.1, 0.2, 0.5]]),
+                             max_periods=60, threads=1)
+    assert summary.stopped == 2 and all(run.stopped for run in summary.runs)
+    assert 0.3 <= summary.min_x <= summary.max_x < 0.3 + field.width
+    assert summary.min_y == 0.0 and summary.max_y == 0.2 and summary.angle_range == 0.5
+    assert summary.max_process_time == max(run.process_time for run in summary.runs)
+
+
+def test_value_types_pickle_and_compare():
+    values = [sa.ContactPoint(0.1, -0.2, 0.5), sa.PlanarPose(1, 2, 3), sa.PlanarTwist(0.1, 0, 2),
+              sa.GridField(nx=3, levels=[1, 2, 3, 4, 5, 6]), DISC,
+              sa.StripField(angle=0.3, half_width=0.4)]
+    for v in values:
+        w = pickle.loads(pickle.dumps(v))
+        assert type(w) is type(v) and w == v and repr(w) == repr(v)
+        assert eval(repr(v), vars(sa)) == v
+
+
+# ---- (d) figures ---------------------------------------------------------------------------
+
+def test_figures_write_png_and_gif(tmp_path):
+    import matplotlib.pyplot as plt
+
+    from selfalign import planar_figures
+
+    field = sa.CircularPocketField(centre_x=0.15, radius=0.1, width=0.05, c_mu=3.0)
+    part = sa.RigidPart(0.005, sa.rectangle_patch(0.2, 0.1, 3, 2))
+    r = sa.simulate_planar(PROFILE, None, PROFILE, field=field, part=part, step=0.01, periods=2,
+                           every=10, twist=(0.1, 0.05, 1.0))
+    png = tmp_path / "path.png"
+    ax = planar_figures.plot_planar_path(r, field, part, path=png)
+    plt.close(ax.figure)
+    assert png.stat().st_size > 0 and png.read_bytes()[:4] == b"\x89PNG"
+
+    d = sa.planar_drift_field(PROFILE, field=field, part=sa.RigidPart(), step=0.02,
+                              xs=np.linspace(-0.2, 0.3, 4), ys=np.linspace(-0.1, 0.1, 3),
+                              periods=1, threads=1)
+    drift_png = tmp_path / "drift.png"
+    ax = planar_figures.plot_drift_field(d, path=drift_png)
+    plt.close(ax.figure)
+    assert drift_png.stat().st_size > 0
+
+    gif = tmp_path / "part.gif"
+    assert planar_figures.animate_planar(r, field, part, gif, fps=10, max_frames=6) == str(gif)
+    data = gif.read_bytes()
+    assert len(data) > 0 and data[:4] == b"GIF8"
+    assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".tmp-")] == []
