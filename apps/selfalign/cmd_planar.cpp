@@ -3,6 +3,7 @@
 // (io/planar_config.hpp), in SI units. Each writes a JSON report (--out, or the table / --json
 // on stdout) and, with --csv, its rows (trajectory, drift field, stopping runs).
 
+#include <iostream>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -11,10 +12,12 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "report.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/planar_config.hpp"
+#include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps, kMaxRecordedSamples
 
 namespace selfalign::cli {
 namespace {
@@ -24,7 +27,7 @@ using nlohmann::json;
 struct PlanarFlags {
   std::string config;
   std::optional<std::string> out, csv;
-  bool as_json = false;
+  bool as_json = false, quiet = false;
 };
 
 const char* mode_name(PatchMode m) {
@@ -55,6 +58,15 @@ json census_json(const PlanarCensus& c) {
 json pose_json(const PlanarPose& p, const Si& si) {
   return {{"x", number_or_null(si.length(p.x))}, {"y", number_or_null(si.length(p.y))},
           {"angle_rad", number_or_null(p.angle)}};
+}
+
+// One run's steps must stay below the time-stepping cap of simulate.hpp (kMaxTimeSteps).
+void require_steps(const char* key, double periods, const PlanarSetup& s) {
+  const double steps = periods * static_cast<double>(steps_per_period(s.problem));
+  if (!(steps <= kMaxTimeSteps))
+    throw InvalidParameter(key, periods,
+                           "gives " + format_number(steps) + " steps; at most " +
+                               format_number(kMaxTimeSteps) + " per run");
 }
 
 PlanarSetup load(const PlanarFlags& f) {
@@ -100,6 +112,12 @@ struct TrajectoryCsv : PlanarStepSink {
 
 void run_simulate(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
+  require_steps("run.periods", s.periods, s);
+  const double rows = s.periods * static_cast<double>(steps_per_period(s.problem)) / s.every;
+  if (!(rows <= kMaxRecordedSamples))
+    throw InvalidParameter("run.every", s.every,
+                           "records " + format_number(rows) + " rows; at most " +
+                               format_number(kMaxRecordedSamples));
   const Si si{s};
   PlanarRigidState st = make_planar_rigid_state(s.problem.motion, 0, s.pose, s.twist);
   TrajectoryCsv csv(si, s.every);
@@ -108,8 +126,13 @@ void run_simulate(const PlanarFlags& f) {
           << ",omega" << si.u("_rad_per_s", "") << ",mode,world_x" << si.u("_m", "")
           << ",world_y" << si.u("_m", "") << ",world_angle_rad\n";
   csv.row(st);
-  advance_planar_rigid(s.problem.motion, s.problem.field, s.problem.law, s.problem.part,
-                       s.problem.options, st, s.periods * steps_per_period(s.problem), &csv);
+  ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
+  for (int k = 0; k < s.periods; ++k) {
+    advance_planar_rigid(s.problem.motion, s.problem.field, s.problem.law, s.problem.part,
+                         s.problem.options, st, steps_per_period(s.problem), &csv);
+    bar.update(static_cast<std::size_t>(k + 1), static_cast<std::size_t>(s.periods));
+  }
+  bar.finish();
   json r = header(s);
   r["command"] = "planar simulate";
   r["periods"] = s.periods;
@@ -126,6 +149,7 @@ void run_simulate(const PlanarFlags& f) {
 
 void run_steady(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
+  require_steps("run.transient", s.transient + 2.0 * s.window, s);
   const Si si{s};
   const PlanarSteadyResult res = planar_steady(s.problem, s.pose, s.twist, s.transient, s.window);
   json r = header(s);
@@ -150,8 +174,12 @@ void run_steady(const PlanarFlags& f) {
 
 void run_field(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
+  require_steps("field_map.periods", s.field_periods, s);
   const Si si{s};
-  const auto samples = planar_drift_field(s.problem, s.grid_x, s.grid_y, s.grid_angles, s.field_periods);
+  ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
+  const auto samples = planar_drift_field(s.problem, s.grid_x, s.grid_y, s.grid_angles, s.field_periods,
+                                          [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
+  bar.finish();
   std::ostringstream csv;
   csv << "x" << si.u("_m", "") << ",y" << si.u("_m", "") << ",angle_rad,drift_x" << si.u("_m_per_s", "")
       << ",drift_y" << si.u("_m_per_s", "") << ",rotation_rate" << si.u("_rad_per_s", "") << ",stick,pivot,slip\n";
@@ -176,8 +204,12 @@ void run_field(const PlanarFlags& f) {
 
 void run_stop(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
+  require_steps("stop.max_periods", s.max_periods, s);
   const Si si{s};
-  const PlanarStopSummary sum = planar_stop(s.problem, s.entries, s.max_periods);
+  ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
+  const PlanarStopSummary sum = planar_stop(s.problem, s.entries, s.max_periods,
+                                            [&bar](std::size_t d, std::size_t n) { bar.update(d, n); });
+  bar.finish();
   std::ostringstream csv;
   csv << "entry_x" << si.u("_m", "") << ",entry_y" << si.u("_m", "") << ",entry_angle_rad,stopped,end_x"
       << si.u("_m", "") << ",end_y" << si.u("_m", "") << ",end_angle_rad,process_time" << si.u("_s", "") << '\n';
@@ -215,6 +247,7 @@ void add_planar_sub(CLI::App* parent, const char* name, const char* help, void (
   sub->add_option("--csv", f->csv, csv_help)->type_name("FILE");
   sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
   sub->add_flag("--json", f->as_json, "print the report as JSON");
+  sub->add_flag("--quiet", f->quiet, "no progress bar (drawn only when stderr is a terminal)");
   sub->callback([f, run] { run(*f); });
 }
 

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -78,7 +79,8 @@ PlanarSteadyResult planar_steady(const PlanarProblem& p, const PlanarPose& pose,
 std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
                                                   const std::vector<double>& xs,
                                                   const std::vector<double>& ys,
-                                                  const std::vector<double>& angles, int periods) {
+                                                  const std::vector<double>& angles, int periods,
+                                                  const ProgressCallback& progress) {
   validate(p);
   if (periods < 1 || periods > 100000)
     throw InvalidParameter("periods", std::to_string(periods), "must be in [1, 100000]");
@@ -89,6 +91,7 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
   for (double v : angles) require_moderate("grid angle", v);
   std::vector<PlanarDriftSample> out(xs.size() * ys.size() * angles.size());
   const double span = periods * planar_period(p.motion);
+  std::atomic<std::size_t> done{0};
   tbb::parallel_for(std::size_t{0}, out.size(), [&](std::size_t i) {
     const std::size_t ia = i % angles.size(), ix = (i / angles.size()) % xs.size(),
                       iy = i / (angles.size() * xs.size());
@@ -101,12 +104,13 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
     d.drift_y = (s.pose.y - d.y) / span;
     d.rotation_rate = (s.pose.angle - d.angle) / span;
     d.census = census.census;
+    if (progress) progress(++done, out.size());
   });
   return out;
 }
 
 PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPose>& entries,
-                              int max_periods) {
+                              int max_periods, const ProgressCallback& progress) {
   validate(p);
   if (max_periods < 1 || max_periods > 1000000)
     throw InvalidParameter("max_periods", std::to_string(max_periods), "must be in [1, 1000000]");
@@ -114,6 +118,7 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
   PlanarStopSummary sum;
   sum.runs.resize(entries.size());
   const double period = planar_period(p.motion);
+  std::atomic<std::size_t> done{0};
   tbb::parallel_for(std::size_t{0}, entries.size(), [&](std::size_t i) {
     PlanarStopRun& run = sum.runs[i];
     run.entry = entries[i];
@@ -130,6 +135,7 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
         break;
       }
     }
+    if (progress) progress(++done, entries.size());
   });
   double sx = 0, sy = 0, sa = 0;
   for (const auto& r : sum.runs)

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "selfalign/analysis/sweep.hpp"  // ProgressCallback
 #include "selfalign/planar/planar_rigid.hpp"
 
 namespace selfalign {
@@ -58,11 +59,13 @@ struct PlanarDriftSample {
 };
 
 /// The drift field on the grid xs x ys x angles (angle fastest, then x, then y), in parallel
-/// (oneTBB; results independent of the thread count).
+/// (oneTBB; results independent of the thread count). `progress` (optional, thread-safe
+/// calls) gets (samples done, samples).
 std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& problem,
                                                   const std::vector<double>& xs,
                                                   const std::vector<double>& ys,
-                                                  const std::vector<double>& angles, int periods);
+                                                  const std::vector<double>& angles, int periods,
+                                                  const ProgressCallback& progress = {});
 
 /// One stopping run.
 struct PlanarStopRun {
@@ -86,8 +89,8 @@ struct PlanarStopSummary {
 };
 
 /// From rest at each entry pose, runs until the part sticks for a whole period (stopped) or
-/// max_periods pass.
+/// max_periods pass. `progress` (optional) gets (entries done, entries).
 PlanarStopSummary planar_stop(const PlanarProblem& problem, const std::vector<PlanarPose>& entries,
-                              int max_periods);
+                              int max_periods, const ProgressCallback& progress = {});
 
 }  // namespace selfalign

@@ -1,0 +1,136 @@
+#!/usr/bin/python3
+"""Seeded fuzz of `selfalign planar` configs (standard library only): each case mutates one or
+two keys of a small valid TOML config (numbers to 0, negatives, NaN, inf, huge, tiny, wrong
+types, wrong array lengths; unknown keys; removed keys; other shapes and field types) and runs
+one of simulate/steady/field/stop with --csv and --out. A case fails on a signal, an exit code
+other than 0 or 2, an exit 2 whose stderr is not one "selfalign: error: " line or that leaves a
+file behind, or an exit 0 with anything on stderr. Runs slower than --timeout seconds are
+counted (long valid runs exist) but not failures.
+
+    /usr/bin/python3 tests/fuzz/fuzz_planar.py --binary build/release/apps/selfalign/selfalign \\
+        --seed 1 --cases 200
+"""
+import argparse
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+BASE = {
+    "units": '"dimensionless"',
+    "table.x": {"profile": '"three-phase"', "period": "1.0", "stroke": "0.084", "a2": "3.0", "a3": "0.9"},
+    "table.y": {"profile": '"fourier"', "period": "0.5", "cos": "[0.01]", "sin": "[0.0]"},
+    "table.rotation": {"profile": '"fourier"', "period": "1.0", "cos": "[0.02]", "sin": "[0.0]"},
+    "part": {"inertia": "0.01", "shape": '"rectangle"', "length": "0.2", "width": "0.1", "nx": "2", "ny": "2"},
+    "friction": {"static": "1.2", "kinetic": "1.0"},
+    "field": {"type": '"circle"', "centre": "[0.3, 0.0]", "radius": "0.2", "width": "0.05", "c_mu": "2.5"},
+    "run": {"step": "0.02", "periods": "3", "every": "5", "transient": "2", "window": "1",
+            "pose": "[0.0, 0.0, 0.0]", "twist": "[0.1, 0.0, 0.5]"},
+    "field_map": {"x": "[0.0, 0.2]", "y": "[0.0]", "angles": "[0.0]", "periods": "1"},
+    "stop": {"entries": "[[0.0, 0.0, 0.0]]", "max_periods": "20"},
+}
+VALUES = ["0", "-1", "nan", "inf", "-inf", "1e300", "-1e300", "1e-300", "2", "0.5", "100000000",
+          '"abc"', "[]", "[1.0]", "[1.0, 2.0, 3.0, 4.0]", "[nan, 1.0, 1.0]", "true", "3.5"]
+ALTERNATIVES = {
+    ("part", "shape"): ['"point"', '"disc"', '"polygon"', '"points"', '"blob"'],
+    ("field", "type"): ['"uniform"', '"half-plane"', '"strip"', '"rectangle"', '"grid"', '"x"'],
+    ("table.x", "profile"): ['"fourier"', '"sampled"'],
+}
+EXTRA = {  # keys that other shapes and types need, with good and bad values
+    "part": {"radius": ["0.1", "-0.1"], "rings": ["2", "0"], "sectors": ["4", "100000"],
+             "xs": ["[0.0, 0.1, 0.0]", "[0.0, 0.1, 0.1, 0.0]", "[-0.1, 0.1]"],
+             "ys": ["[0.0, 0.0, 0.1]", "[0.0, 0.1, 0.0, 0.1]", "[0.0, 0.0]"],
+             "loads": ["[0.5, 0.5]", "[0.6, 0.6]", "[1.5, -0.5]"], "subdivisions": ["2", "0"]},
+    "field": {"levels": ["[1.0, 2.0, 1.0, 2.0]", "[1.0, nan, 1.0, 1.0]"], "dx": ["0.1"], "dy": ["0.1"],
+              "nx": ["2", "1"], "ny": ["2"], "half_width": ["0.1", "0"], "half_length": ["0.2"],
+              "origin": ["[0.1, 0.0]"], "angle": ["0.3", "nan"], "level": ["2.0", "-1"], "colour": ['"red"']},
+}
+
+
+def render(cfg):
+    out = []
+    for key, val in cfg.items():
+        if not isinstance(val, dict):
+            out.append(f"{key} = {val}")
+    for key, val in cfg.items():
+        if isinstance(val, dict):
+            out.append(f"[{key}]")
+            out.extend(f"{k} = {v}" for k, v in val.items())
+    return "\n".join(out) + "\n"
+
+
+def mutate(rng):
+    cfg = {k: (dict(v) if isinstance(v, dict) else v) for k, v in BASE.items()}
+    for _ in range(rng.choice([1, 1, 2, 3])):
+        section = rng.choice([k for k, v in cfg.items() if isinstance(v, dict)] + ["__drop_section"])
+        if section == "__drop_section":
+            cfg.pop(rng.choice(["table.y", "table.rotation", "field", "friction", "stop"]), None)
+            continue
+        table = cfg[section]
+        op = rng.random()
+        if op < 0.15 and table:
+            table.pop(rng.choice(list(table)))
+        elif op < 0.3 and section in EXTRA:
+            k = rng.choice(list(EXTRA[section]))
+            table[k] = rng.choice(EXTRA[section][k])
+        elif op < 0.4:
+            table[rng.choice(["bogus", "Step", "inertia_kg"])] = "1.0"
+        elif table:
+            k = rng.choice(list(table))
+            alts = ALTERNATIVES.get((section, k))
+            table[k] = rng.choice(alts) if alts and rng.random() < 0.6 else rng.choice(VALUES)
+    return cfg
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--binary", required=True)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--cases", type=int, default=200)
+    ap.add_argument("--timeout", type=float, default=20)
+    a = ap.parse_args()
+    a.binary = os.path.abspath(a.binary)
+    rng = random.Random(a.seed)
+    failures, slow, ok, refused = [], 0, 0, 0
+    for case in range(a.cases):
+        cfg = mutate(rng)
+        command = rng.choice(["simulate", "steady", "field", "stop"])
+        with tempfile.TemporaryDirectory() as root:
+            path = os.path.join(root, "p.toml")
+            with open(path, "w") as f:
+                f.write(render(cfg))
+            work = os.path.join(root, "work")
+            os.mkdir(work)
+            args = [a.binary, "planar", command, "--config", path, "--csv", "o.csv", "--out", "r.json"]
+            try:
+                r = subprocess.run(args, cwd=work, capture_output=True, text=True, timeout=a.timeout)
+            except subprocess.TimeoutExpired:
+                slow += 1
+                continue
+            left = os.listdir(work)
+            why = None
+            if r.returncode not in (0, 2):
+                why = f"exit {r.returncode}"
+            elif r.returncode == 2:
+                refused += 1
+                lines = r.stderr.splitlines()
+                if len(lines) != 1 or not lines[0].startswith("selfalign: error: "):
+                    why = "stderr not one error line: " + r.stderr[:300]
+                elif left:
+                    why = f"left {left}"
+            else:
+                ok += 1
+                if r.stderr:
+                    why = "stderr on success: " + r.stderr[:300]
+            if why:
+                failures.append((case, command, why, render(cfg)))
+    print(f"planar fuzz seed {a.seed}: {a.cases} cases, {ok} ran, {refused} refused, {slow} slow, "
+          f"{len(failures)} failed")
+    for case, command, why, text in failures[:10]:
+        print(f"--- case {case} ({command}): {why}\n{text}")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
