@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import os
 import tempfile
-from typing import Any, Mapping, Optional, Sequence, Union
+from typing import Any, Callable, Mapping, Optional, Sequence, Union
 
 import matplotlib
 
@@ -83,20 +83,31 @@ def _level_image(field: Any, extent: Sequence[float], resolution: int) -> np.nda
     return np.asarray(sa.planar_level(field, gx[None, :], gy[:, None]))
 
 
-def _save_atomic(fig: plt.Figure, path: PathLike, dpi: int) -> None:
-    """savefig into a temporary file beside path, then os.replace (no half-written file)."""
+def _write_atomically(path: PathLike, suffix: str, write: Callable[[str], None]) -> str:
+    """write(tmp) into a temporary file beside path, then os.replace (no half-written file);
+    the file gets the permissions a new file would (0666 less the umask, not mkstemp's 0600)."""
     path = os.fspath(path)
     folder = os.path.dirname(os.path.abspath(path))
-    suffix = os.path.splitext(path)[1] or ".png"
     fd, tmp = tempfile.mkstemp(dir=folder, suffix=suffix, prefix=".tmp-")
     os.close(fd)
     try:
-        fig.savefig(tmp, dpi=dpi, format=suffix.lstrip(".") or "png")
+        write(tmp)
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
             os.remove(tmp)
         raise
+    return path
+
+
+def _save_atomic(fig: plt.Figure, path: PathLike, dpi: int) -> None:
+    """savefig to path atomically, in the format its extension names (PNG by default)."""
+    suffix = os.path.splitext(os.fspath(path))[1] or ".png"
+    _write_atomically(path, suffix,
+                      lambda tmp: fig.savefig(tmp, dpi=dpi, format=suffix.lstrip(".") or "png"))
 
 
 def plot_planar_path(result: Mapping[str, np.ndarray], field: Any, part: sa.RigidPart,
@@ -227,16 +238,9 @@ def animate_planar(result: Mapping[str, np.ndarray], field: Any, part: sa.RigidP
         return image, table, points, ring, label
 
     anim = matplotlib.animation.FuncAnimation(fig, draw, frames=list(frames), blit=False)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(dir=folder, suffix=".gif", prefix=".tmp-")
-    os.close(fd)
     try:
-        anim.save(tmp, writer=matplotlib.animation.PillowWriter(fps=fps), dpi=dpi)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.remove(tmp)
-        raise
+        return _write_atomically(
+            path, ".gif",
+            lambda tmp: anim.save(tmp, writer=matplotlib.animation.PillowWriter(fps=fps), dpi=dpi))
     finally:
         plt.close(fig)
-    return path

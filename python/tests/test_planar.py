@@ -3,6 +3,7 @@ the planar analyses, checked against independent values (the 1-D time-stepping s
 closed-form stop of a sliding disc), bad input, and the figures."""
 
 import math
+import os
 import pickle
 
 import numpy as np
@@ -239,3 +240,7 @@ def test_figures_write_png_and_gif(tmp_path):
     data = gif.read_bytes()
     assert len(data) > 0 and data[:4] == b"GIF8"
     assert [p.name for p in tmp_path.iterdir() if p.name.startswith(".tmp-")] == []
+    umask = os.umask(0)
+    os.umask(umask)
+    for written in (png, drift_png, gif):  # a new file's permissions, not mkstemp's 0600
+        assert written.stat().st_mode & 0o777 == 0o666 & ~umask, written
