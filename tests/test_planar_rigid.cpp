@@ -15,6 +15,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 #include <numbers>
 #include <random>
 
@@ -31,6 +33,15 @@ const ThreePhaseProfile kPaper({1.0, 0.084, 3.0, 0.9});  // Sect. 7.2
 const ThreePhaseProfile kCross({0.5, 0.02, 2.2, 1.4});   // half the period: divides it
 
 using Twist = std::array<double, 3>;
+
+// The sanitizer build is unoptimised (Debug): its runs of the two long property tests below
+// check fewer cases: two launches of a coarser disc (6 x 12); 3 initial twists settled for 6
+// periods instead of 12 for 20.
+#ifdef SELFALIGN_SANITIZED_TESTS
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
 
 // ---- second method for the step's problem ---------------------------------------------------
 
@@ -275,7 +286,10 @@ struct StopTimes : PlanarStepSink {
   }
 };
 
-StopTimes launch_disc(double h, double v0, double w0, int rings = 12, int sectors = 24) {
+// 12 x 24 points; 6 x 12 in the sanitizer build.
+constexpr int kRings = kSanitized ? 6 : 12;
+
+StopTimes launch_disc(double h, double v0, double w0, int rings = kRings, int sectors = 2 * kRings) {
   const double radius = 0.2;
   RigidPart part{radius * radius / 2, disc_patch(radius, rings, sectors)};
   PlanarTableMotion still;  // no profile: the table is at rest
@@ -328,18 +342,23 @@ TEST(PlanarRigid, AUniformDiscStopsSlidingAndSpinningAtTheSameInstant) {
   // Closed forms first (pure slide: t = v0 / k; pure spin: t = j omega0 / torque with
   // torque = sum w_i |p_i| = (2/3) R up to the quadrature's O(1/sectors^2 + 1/rings^2)).
   const double radius = 0.2;
-  EXPECT_NEAR(launch_disc(1e-4, 0.3, 0).t_slide, 0.3, 2e-4);
-  ContactPatch disc = disc_patch(radius, 12, 24);
+  const double hc = kSanitized ? 1e-3 : 1e-4;
+  EXPECT_NEAR(launch_disc(hc, 0.3, 0).t_slide, 0.3, 2 * hc);
+  ContactPatch disc = disc_patch(radius, kRings, 2 * kRings);
   double torque = 0;
   for (const auto& p : disc) torque += p.load * std::hypot(p.x, p.y);
-  // cell centroids sit at sinc(pi/sectors) of the sector's mean radius: 1 - sinc(pi/24) = 2.9e-3
-  EXPECT_NEAR(torque, 2 * radius / 3, 4e-3 * 2 * radius / 3);
-  EXPECT_NEAR(launch_disc(1e-4, 0, 5).t_spin, radius * radius / 2 * 5 / torque, 2e-4);
+  // cell centroids sit at sinc(pi/sectors) of the sector's mean radius: 1 - sinc(pi/24) = 2.9e-3,
+  // 1 - sinc(pi/12) = 1.1e-2
+  EXPECT_NEAR(torque, 2 * radius / 3, (kSanitized ? 1.5e-2 : 4e-3) * 2 * radius / 3);
+  EXPECT_NEAR(launch_disc(hc, 0, 5).t_spin, radius * radius / 2 * 5 / torque, 2 * hc);
   // Combined: both stop together, at the instant a second method gives: RK4 on the smooth
   // sliding-and-spinning equations (the same contact points, friction k w_i against each
   // point's slip direction), run until the slip is below 1e-9; Moreau's common stop instant
   // converges to it with the step order.
-  for (const auto& [v0, w0] : {std::pair{0.3, 2.0}, {0.1, 5.0}, {0.3, 0.5}}) {
+  const std::vector<std::pair<double, double>> launches =
+      kSanitized ? std::vector<std::pair<double, double>>{{0.1, 5.0}, {0.3, 0.5}}
+                 : std::vector<std::pair<double, double>>{{0.3, 2.0}, {0.1, 5.0}, {0.3, 0.5}};
+  for (const auto& [v0, w0] : launches) {
     const double t_rk4 = rk4_stop_time(disc, radius * radius / 2, v0, w0, 1e-4);
     double err_prev = HUGE_VAL;
     for (double h : {1e-3, 1e-4}) {
@@ -369,10 +388,10 @@ TEST(PlanarRigid, TheAsymptoticDriftDoesNotDependOnTheInitialTwist) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(-1, 1);
   double ref[3] = {NAN, NAN, NAN};
-  for (int trial = 0; trial < 12; ++trial) {
+  for (int trial = 0; trial < (kSanitized ? 3 : 12); ++trial) {
     PlanarRigidState r = make_planar_rigid_state(motion, 0, {0, 0, 0},
                                                  {u(rng), u(rng), 10 * u(rng)});
-    advance_planar_rigid(motion, UniformPlanarField{1.0}, law, part, o, r, 20'000);
+    advance_planar_rigid(motion, UniformPlanarField{1.0}, law, part, o, r, kSanitized ? 6000 : 20'000);
     const PlanarPose a = r.pose;
     advance_planar_rigid(motion, UniformPlanarField{1.0}, law, part, o, r, 1000);
     const PlanarPose b = r.pose;
