@@ -5,6 +5,7 @@
 #include <string>
 
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -73,29 +74,22 @@ PlanarPointState make_planar_point_state(const PlanarTableMotion& motion, double
   return s;
 }
 
-void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& field,
-                          const FrictionLaw& law, const TimeSteppingOptions& o,
-                          PlanarPointState& st, long long steps) {
-  validate(o);
-  validate(motion);
-  validate(field);
-  if (motion.rotation)
-    throw InvalidParameter("rotation", motion.rotation->kind(),
-                           "a point contact needs a translating table (use the rigid part)");
-  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
-    throw InvalidParameter("law", law.describe(),
-                           "planar friction must be isotropic (kinetic_forward = "
-                           "kinetic_backward) and velocity-independent");
-  const double h = o.step, theta = o.theta;
-  const double s = law.static_coefficient(), kin = law.kinetic_forward();
+namespace {
+
+// The step loop of advance_planar_point, for any table-velocity and level functors (so that the
+// common cases, piecewise-polynomial profiles and a uniform level, run without virtual calls or
+// a variant visit per step).
+template <class TableVelocity, class Level>
+void point_steps(const TableVelocity& table_v, const Level& level, double s, double kin, double h,
+                 double theta, PlanarPointState& st, long long steps) {
   double x = st.x, y = st.y, ux = st.ux, uy = st.uy, tvx = st.table_vx, tvy = st.table_vy;
   long long k = st.step_index;
   for (long long i = 0; i < steps; ++i) {
     ++k;
     const double t = st.t0 + static_cast<double>(k) * h;
     double tvx1 = 0, tvy1 = 0;
-    table_velocity(motion, t, tvx1, tvy1);
-    const double m = planar_level(field, x + 0.5 * h * ux, y + 0.5 * h * uy);
+    table_v(t, tvx1, tvy1);
+    const double m = level(x + 0.5 * h * ux, y + 0.5 * h * uy);
     const double vx = ux - (tvx1 - tvx), vy = uy - (tvy1 - tvy);  // v*: no friction
     const double speed = std::hypot(vx, vy);
     const bool sliding_on = vx * ux + vy * uy > 0;
@@ -114,6 +108,52 @@ void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& fi
   st.t = st.t0 + static_cast<double>(k) * h;
   st.x = x, st.y = y, st.ux = ux, st.uy = uy, st.table_vx = tvx, st.table_vy = tvy;
   st.stick = ux == 0 && uy == 0;
+}
+
+template <class TableVelocity>
+void point_steps_on(const TableVelocity& table_v, const PlanarField& field, double s, double kin,
+                    double h, double theta, PlanarPointState& st, long long steps) {
+  if (const auto* u = std::get_if<UniformPlanarField>(&field)) {
+    const double m = u->level;
+    point_steps(table_v, [m](double, double) { return m; }, s, kin, h, theta, st, steps);
+  } else {
+    point_steps(table_v, [&field](double x, double y) { return planar_level(field, x, y); }, s,
+                kin, h, theta, st, steps);
+  }
+}
+
+}  // namespace
+
+void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& field,
+                          const FrictionLaw& law, const TimeSteppingOptions& o,
+                          PlanarPointState& st, long long steps) {
+  validate(o);
+  validate(motion);
+  validate(field);
+  if (motion.rotation)
+    throw InvalidParameter("rotation", motion.rotation->kind(),
+                           "a point contact needs a translating table (use the rigid part)");
+  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
+    throw InvalidParameter("law", law.describe(),
+                           "planar friction must be isotropic (kinetic_forward = "
+                           "kinetic_backward) and velocity-independent");
+  const double h = o.step, theta = o.theta;
+  const double s = law.static_coefficient(), kin = law.kinetic_forward();
+  // Both directions piecewise polynomial (or absent): call their velocity directly.
+  const PiecewisePolynomialProfile* p1 = motion.first ? motion.first->piecewise_polynomial() : nullptr;
+  const PiecewisePolynomialProfile* p2 = motion.second ? motion.second->piecewise_polynomial() : nullptr;
+  if (p1 && p2) {
+    const double e1x = motion.e1_x, e1y = motion.e1_y, e2x = motion.e2_x, e2y = motion.e2_y;
+    point_steps_on(
+        [=](double t, double& vx, double& vy) {
+          const double v1 = p1->velocity(t), v2 = p2->velocity(t);
+          vx = v1 * e1x + v2 * e2x, vy = v1 * e1y + v2 * e2y;
+        },
+        field, s, kin, h, theta, st, steps);
+  } else {
+    point_steps_on([&motion](double t, double& vx, double& vy) { table_velocity(motion, t, vx, vy); },
+                   field, s, kin, h, theta, st, steps);
+  }
 }
 
 }  // namespace selfalign

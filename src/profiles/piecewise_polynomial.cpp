@@ -144,18 +144,6 @@ PiecewisePolynomialProfile PiecewisePolynomialProfile::from_breakpoints(
   return build(d, a, b, std::move(kind), "accels", "accels");
 }
 
-double PiecewisePolynomialProfile::phase(double t) const noexcept {
-  double p = t - period_ * std::floor(t / period_);
-  if (p >= period_) p -= period_;  // rounding at the top end
-  return p < 0 ? 0 : p;
-}
-
-std::size_t PiecewisePolynomialProfile::segment_at(double phase) const noexcept {
-  std::size_t i = 0;
-  while (i + 1 < segments_.size() && phase >= segments_[i + 1].begin) ++i;
-  return i;
-}
-
 TableState PiecewisePolynomialProfile::state(double t) const {
   const double ph = phase(t);
   const AccelerationSegment& s = segments_[segment_at(ph)];
@@ -164,13 +152,6 @@ TableState PiecewisePolynomialProfile::state(double t) const {
     return {s.y + s.yd * tau + 0.5 * s.accel * tau * tau, s.yd + s.accel * tau, s.accel};
   return {s.y + y_increment(s.yd, s.accel, s.jerk, tau),
           s.yd + yd_increment(s.accel, s.jerk, tau), s.accel + s.jerk * tau};
-}
-
-double PiecewisePolynomialProfile::velocity(double t) const {
-  const double ph = phase(t);
-  const AccelerationSegment& s = segments_[segment_at(ph)];
-  const double tau = ph - s.begin;
-  return s.yd + (s.jerk == 0.0 ? s.accel * tau : yd_increment(s.accel, s.jerk, tau));
 }
 
 }  // namespace selfalign

@@ -7,6 +7,7 @@
 /// real actuators (Sect. 8, item 2). It is the common form of every profile the exact
 /// event-driven solver integrates (simulate/exact.hpp).
 
+#include <cmath>
 #include <span>
 #include <string>
 #include <vector>
@@ -62,7 +63,13 @@ class PiecewisePolynomialProfile final : public TableProfile {
 
   double period() const override { return period_; }
   TableState state(double t) const override;
-  double velocity(double t) const override;
+  /// Inline (the time-stepping schemes' hot path); the same formulas as state().
+  double velocity(double t) const override {
+    const double ph = phase(t);
+    const AccelerationSegment& s = segments_[segment_at(ph)];
+    const double tau = ph - s.begin;
+    return s.yd + (s.jerk == 0.0 ? s.accel * tau : tau * (s.accel + 0.5 * s.jerk * tau));
+  }
   double peak_acceleration() const override { return peak_; }
   double stroke() const override { return stroke_; }
   std::string kind() const override { return kind_; }
@@ -70,9 +77,17 @@ class PiecewisePolynomialProfile final : public TableProfile {
 
   std::span<const AccelerationSegment> segments() const noexcept { return segments_; }
   /// Index of the segment containing phase p in [0, Δt).
-  std::size_t segment_at(double phase) const noexcept;
+  std::size_t segment_at(double phase) const noexcept {
+    std::size_t i = 0;
+    while (i + 1 < segments_.size() && phase >= segments_[i + 1].begin) ++i;
+    return i;
+  }
   /// Phase of t in [0, Δt).
-  double phase(double t) const noexcept;
+  double phase(double t) const noexcept {
+    double p = t - period_ * std::floor(t / period_);
+    if (p >= period_) p -= period_;  // rounding at the top end
+    return p < 0 ? 0 : p;
+  }
   /// True when every segment has jerk 0 (the paper's piecewise-constant acceleration).
   bool piecewise_constant() const noexcept { return constant_; }
   /// The largest |jerk| over the segments [-] (0 for piecewise-constant acceleration).
