@@ -256,6 +256,27 @@ CATALOGUE = [
      {"attr": (["order", "segments"], [], []), "value": IN("2", big=["10**9"])}, "optimization"),
     ("s = sa.steady_state(P); s.v_bar = {value}; result = s.v_bar",
      {"value": (["1.0"], [], [])}, "readonly"),
+    # planar motion (issue 13)
+    ("result = sa.polar_moment(sa.disc_patch({radius}, {rings}, {sectors}))",
+     {"radius": FL("0.2"), "rings": IN("3", big=["10**5"]), "sectors": IN("6", big=["10**5"])},
+     "finite_if_finite_inputs"),
+    ("result = sa.polar_moment(sa.polygon_patch({xs}, {ys}, {subdivisions}))",
+     {"xs": AR("[0.0, 1.0, 1.0, 0.0]", "[0.0, 2.0, 1.0]"), "ys": AR("[0.0, 0.0, 1.0, 1.0]", "[0.0, 0.0, 1.0]"),
+      "subdivisions": IN("1", "3", big=["10**6"])}, "none"),
+    ("result = sa.weighted_points_patch({xs}, {ys}, {loads})",
+     {"xs": AR("[-0.1, 0.1]"), "ys": AR("[0.0, 0.0]"), "loads": AR("[0.5, 0.5]")}, "none"),
+    ("result = sa.planar_level(sa.GridField(dx={dx}, dy=0.5, nx=2, ny=2, levels={levels}), {x}, 0.2)",
+     {"dx": FL("0.5"), "levels": AR("[1.0, 2.0, 1.0, 2.0]"), "x": FL("0.3")}, "finite_if_finite_inputs"),
+    ("result = sa.simulate_planar(P, R, field=sa.CircularPocketField(centre_x=0.3, radius={radius}, "
+     "width={width}, c_mu={c_mu}), part=sa.RigidPart({inertia}, sa.rectangle_patch(0.2, 0.1, 2, 2)), "
+     "step={step}, periods={periods})",
+     {"radius": FL("0.2"), "width": FL("0.05"), "c_mu": FL("2.5"), "inertia": FL("0.01"),
+      "step": FL("0.01"), "periods": IN("2", big=["10**9"])}, "none"),
+    ("result = sa.planar_stop(P, field=sa.StripField(origin_x=0.4, half_width={half_width}), "
+     "part=sa.RigidPart(0.01, sa.disc_patch(0.1, 2, 4)), step={step}, entries={entries}, "
+     "max_periods={max_periods})",
+     {"half_width": FL("0.3"), "step": FL("0.02"), "entries": AR("[[0.0, 0.0, 0.0]]"),
+      "max_periods": IN("20", big=["10**9"])}, "none"),
 ]
 
 # Calls 0 .. len(CORPUS)-1: fixed, one per known defect class of the module (see

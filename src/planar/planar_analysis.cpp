@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "selfalign/error.hpp"
+#include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps
 
 namespace selfalign {
 namespace {
@@ -22,6 +24,19 @@ struct CensusSink : PlanarStepSink {
     }
   }
 };
+
+std::string compact(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", v);
+  return text;
+}
+
+// One run's steps stay below the time-stepping cap of simulate.hpp (kMaxTimeSteps).
+void require_steps(const char* name, double periods, const PlanarProblem& p) {
+  const double steps = periods * static_cast<double>(steps_per_period(p));
+  if (!(steps <= kMaxTimeSteps))
+    throw InvalidParameter(name, periods, "gives " + compact(steps) + " steps per run; at most 1e9");
+}
 
 void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
                  PlanarStepSink* sink = nullptr) {
@@ -58,6 +73,7 @@ PlanarSteadyResult planar_steady(const PlanarProblem& p, const PlanarPose& pose,
     throw InvalidParameter("transient", std::to_string(transient_periods), "must be in [0, 100000]");
   if (window_periods < 1 || window_periods > 100000)
     throw InvalidParameter("window", std::to_string(window_periods), "must be in [1, 100000]");
+  require_steps("transient", transient_periods + 2.0 * window_periods, p);
   const double span = window_periods * planar_period(p.motion);
   PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
   run_periods(p, s, transient_periods);
@@ -86,6 +102,11 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
     throw InvalidParameter("periods", std::to_string(periods), "must be in [1, 100000]");
   if (xs.empty() || ys.empty() || angles.empty())
     throw InvalidParameter("grid", "empty", "needs at least one x, y and angle");
+  const double samples = static_cast<double>(xs.size()) * static_cast<double>(ys.size()) *
+                         static_cast<double>(angles.size());
+  if (samples > 1e7)
+    throw InvalidParameter("grid", compact(samples) + " samples", "must have at most 1e7");
+  require_steps("periods", periods, p);
   for (double v : xs) require_moderate("grid x", v);
   for (double v : ys) require_moderate("grid y", v);
   for (double v : angles) require_moderate("grid angle", v);
@@ -115,6 +136,9 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
   if (max_periods < 1 || max_periods > 1000000)
     throw InvalidParameter("max_periods", std::to_string(max_periods), "must be in [1, 1000000]");
   if (entries.empty()) throw InvalidParameter("entries", "none", "needs at least one entry pose");
+  if (entries.size() > 10000000)
+    throw InvalidParameter("entries", std::to_string(entries.size()), "must be at most 1e7");
+  require_steps("max_periods", max_periods, p);
   PlanarStopSummary sum;
   sum.runs.resize(entries.size());
   const double period = planar_period(p.motion);
