@@ -15,6 +15,16 @@ void require_c_mu(double c_mu) {
     throw InvalidParameter("c_mu", c_mu, "must be in [1, 1e6]");
 }
 
+// A rough region's placement (a point and, where it has one, its direction) and its band.
+void require_point(const char* x_name, double x, const char* y_name, double y) {
+  require_moderate(x_name, x);
+  require_moderate(y_name, y);
+}
+void require_band(double width, double c_mu) {
+  require_positive_moderate("width", width);
+  require_c_mu(c_mu);
+}
+
 double ramp(double c_mu, double depth, double width) {
   return 1 + (c_mu - 1) * std::clamp(depth / width, 0.0, 1.0);
 }
@@ -31,39 +41,30 @@ void validate(const PlanarField& field) {
   std::visit(Overloaded{
                  [](const UniformPlanarField& u) { require_positive_moderate("level", u.level); },
                  [](const HalfPlaneStepField& h) {
-                   require_moderate("origin_x", h.origin_x);
-                   require_moderate("origin_y", h.origin_y);
+                   require_point("origin_x", h.origin_x, "origin_y", h.origin_y);
                    require_finite("angle", h.angle);
-                   require_positive_moderate("width", h.width);
-                   require_c_mu(h.c_mu);
+                   require_band(h.width, h.c_mu);
                  },
                  [](const StripField& f) {
-                   require_moderate("origin_x", f.origin_x);
-                   require_moderate("origin_y", f.origin_y);
+                   require_point("origin_x", f.origin_x, "origin_y", f.origin_y);
                    require_finite("angle", f.angle);
                    require_positive_moderate("half_width", f.half_width);
-                   require_positive_moderate("width", f.width);
-                   require_c_mu(f.c_mu);
+                   require_band(f.width, f.c_mu);
                  },
                  [](const RectangularPocketField& f) {
-                   require_moderate("centre_x", f.centre_x);
-                   require_moderate("centre_y", f.centre_y);
+                   require_point("centre_x", f.centre_x, "centre_y", f.centre_y);
                    require_finite("angle", f.angle);
                    require_positive_moderate("half_length", f.half_length);
                    require_positive_moderate("half_width", f.half_width);
-                   require_positive_moderate("width", f.width);
-                   require_c_mu(f.c_mu);
+                   require_band(f.width, f.c_mu);
                  },
                  [](const CircularPocketField& f) {
-                   require_moderate("centre_x", f.centre_x);
-                   require_moderate("centre_y", f.centre_y);
+                   require_point("centre_x", f.centre_x, "centre_y", f.centre_y);
                    require_positive_moderate("radius", f.radius);
-                   require_positive_moderate("width", f.width);
-                   require_c_mu(f.c_mu);
+                   require_band(f.width, f.c_mu);
                  },
                  [](const GridField& f) {
-                   require_moderate("origin_x", f.origin_x);
-                   require_moderate("origin_y", f.origin_y);
+                   require_point("origin_x", f.origin_x, "origin_y", f.origin_y);
                    require_finite("angle", f.angle);
                    require_positive_moderate("dx", f.dx);
                    require_positive_moderate("dy", f.dy);
