@@ -30,22 +30,13 @@ struct PlanarFlags {
   bool as_json = false, quiet = false;
 };
 
-const char* mode_name(PatchMode m) {
-  switch (m) {
-    case PatchMode::stick: return "stick";
-    case PatchMode::pivot: return "pivot";
-    case PatchMode::slip: return "slip";
-  }
-  return "?";
-}
-
 // SI views of dimensionless values.
 struct Si {
   const PlanarSetup& s;
   double length(double v) const { return s.si ? s.scales.length_to_si(v) : v; }
   double time(double v) const { return s.si ? s.scales.time_to_si(v) : v; }
   double velocity(double v) const { return s.si ? s.scales.velocity_to_si(v) : v; }
-  double rate(double v) const { return s.si ? v / s.scales.time() : v; }
+  double rate(double v) const { return s.si ? to_si(Dimension::rate, v, s.scales) : v; }
   std::string u(const char* si, const char* dimless) const { return s.si ? si : dimless; }
 };
 
@@ -58,16 +49,6 @@ json census_json(const PlanarCensus& c) {
 json pose_json(const PlanarPose& p, const Si& si) {
   return {{"x", number_or_null(si.length(p.x))}, {"y", number_or_null(si.length(p.y))},
           {"angle_rad", number_or_null(p.angle)}};
-}
-
-// The trajectory's steps stay below the time-stepping cap of simulate.hpp (the analyses check
-// theirs in the library).
-void require_steps(const char* key, double periods, const PlanarSetup& s) {
-  const double steps = periods * static_cast<double>(steps_per_period(s.problem));
-  if (!(steps <= kMaxTimeSteps))
-    throw InvalidParameter(key, periods,
-                           "gives " + format_number(steps) + " steps; at most " +
-                               format_number(kMaxTimeSteps) + " per run");
 }
 
 PlanarSetup load(const PlanarFlags& f) {
@@ -97,23 +78,19 @@ struct TrajectoryCsv : PlanarStepSink {
     out << csv_number(si.time(s.t)) << ',' << csv_number(si.length(s.pose.x)) << ','
         << csv_number(si.length(s.pose.y)) << ',' << csv_number(s.pose.angle) << ','
         << csv_number(si.velocity(s.twist.ux)) << ',' << csv_number(si.velocity(s.twist.uy)) << ','
-        << csv_number(si.rate(s.twist.omega)) << ',' << mode_name(s.mode) << ','
+        << csv_number(si.rate(s.twist.omega)) << ',' << patch_mode_name(s.mode) << ','
         << csv_number(si.length(w.x)) << ',' << csv_number(si.length(w.y)) << ','
         << csv_number(w.angle) << '\n';
   }
   void on_step(const PlanarRigidState& s) override {
-    switch (s.mode) {
-      case PatchMode::stick: ++census.stick; break;
-      case PatchMode::pivot: ++census.pivot; break;
-      case PatchMode::slip: ++census.slip; break;
-    }
+    census.add(s.mode);
     if (s.step_index % every == 0) row(s);
   }
 };
 
 void run_simulate(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
-  require_steps("run.periods", s.periods, s);
+  require_planar_steps("run.periods", s.periods, s.problem);
   const double rows = s.periods * static_cast<double>(steps_per_period(s.problem)) / s.every;
   if (!(rows <= kMaxRecordedSamples))
     throw InvalidParameter("run.every", s.every,

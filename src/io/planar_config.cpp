@@ -9,6 +9,7 @@
 #include <toml++/toml.h>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/simulate_config.hpp"  // Dimension, to_dimensionless
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -134,8 +135,8 @@ struct Units {
   double time(double v) const { return si ? s.time_from_si(v) : v; }
   double velocity(double v) const { return si ? s.velocity_from_si(v) : v; }
   double acceleration(double v) const { return si ? s.acceleration_from_si(v) : v; }
-  double rate(double v) const { return si ? v * s.time() : v; }  // [1/s] -> [-]
-  double jerk(double v) const { return si ? v * s.time() / s.acceleration() : v; }
+  double rate(double v) const { return si ? to_dimensionless(Dimension::rate, v, s) : v; }
+  double jerk(double v) const { return si ? to_dimensionless(Dimension::jerk, v, s) : v; }
 };
 
 std::unique_ptr<TableProfile> make_profile(const Section& p, const Units& u, bool angular) {
@@ -289,7 +290,7 @@ PlanarSetup load_planar_config(const std::string& path) {
   st.pose = pose_from(run.list("pose", {0, 0, 0}), "run.pose", u);
   const std::vector<double> tw = run.list("twist", {0, 0, 0});
   if (tw.size() != 3) throw InvalidParameter("run.twist", std::to_string(tw.size()) + " values", "must be [ux, uy, omega]");
-  st.twist = {u.velocity(tw[0]), u.velocity(tw[1]), st.si ? tw[2] * st.scales.time() : tw[2]};
+  st.twist = {u.velocity(tw[0]), u.velocity(tw[1]), u.rate(tw[2])};
   const Section fm = section("field_map", {"x", "y", "angles", "periods"});
   st.grid_x = fm.list("x", {0.0}), st.grid_y = fm.list("y", {0.0});
   for (double& v : st.grid_x) v = u.length(v);

@@ -181,6 +181,15 @@ bool pivot_solution(std::span<const PatchContact> cs, double inertia, const Twis
 
 }  // namespace
 
+const char* patch_mode_name(PatchMode mode) noexcept {
+  switch (mode) {
+    case PatchMode::stick: return "stick";
+    case PatchMode::pivot: return "pivot";
+    case PatchMode::slip: return "slip";
+  }
+  return "?";
+}
+
 double patch_objective(std::span<const PatchContact> cs, double inertia, const Twist& free,
                        const Twist& d) {
   const double e0 = d[0] - free[0], e1 = d[1] - free[1], e2 = d[2] - free[2];

@@ -16,26 +16,13 @@ namespace {
 
 struct CensusSink : PlanarStepSink {
   PlanarCensus census;
-  void on_step(const PlanarRigidState& s) override {
-    switch (s.mode) {
-      case PatchMode::stick: ++census.stick; break;
-      case PatchMode::pivot: ++census.pivot; break;
-      case PatchMode::slip: ++census.slip; break;
-    }
-  }
+  void on_step(const PlanarRigidState& s) override { census.add(s.mode); }
 };
 
 std::string compact(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", v);
   return text;
-}
-
-// One run's steps stay below the time-stepping cap of simulate.hpp (kMaxTimeSteps).
-void require_steps(const char* name, double periods, const PlanarProblem& p) {
-  const double steps = periods * static_cast<double>(steps_per_period(p));
-  if (!(steps <= kMaxTimeSteps))
-    throw InvalidParameter(name, periods, "gives " + compact(steps) + " steps per run; at most 1e9");
 }
 
 void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
@@ -45,6 +32,20 @@ void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
 }
 
 }  // namespace
+
+void require_planar_steps(const char* name, double periods, const PlanarProblem& p) {
+  const double steps = periods * static_cast<double>(steps_per_period(p));
+  if (!(steps <= kMaxTimeSteps))
+    throw InvalidParameter(name, periods, "gives " + compact(steps) + " steps per run; at most 1e9");
+}
+
+void PlanarCensus::add(PatchMode mode) noexcept {
+  switch (mode) {
+    case PatchMode::stick: ++stick; break;
+    case PatchMode::pivot: ++pivot; break;
+    case PatchMode::slip: ++slip; break;
+  }
+}
 
 void validate(const PlanarProblem& p) {
   validate(p.motion);
@@ -73,7 +74,7 @@ PlanarSteadyResult planar_steady(const PlanarProblem& p, const PlanarPose& pose,
     throw InvalidParameter("transient", std::to_string(transient_periods), "must be in [0, 100000]");
   if (window_periods < 1 || window_periods > 100000)
     throw InvalidParameter("window", std::to_string(window_periods), "must be in [1, 100000]");
-  require_steps("transient", transient_periods + 2.0 * window_periods, p);
+  require_planar_steps("transient", transient_periods + 2.0 * window_periods, p);
   const double span = window_periods * planar_period(p.motion);
   PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
   run_periods(p, s, transient_periods);
@@ -106,7 +107,7 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
                          static_cast<double>(angles.size());
   if (samples > 1e7)
     throw InvalidParameter("grid", compact(samples) + " samples", "must have at most 1e7");
-  require_steps("periods", periods, p);
+  require_planar_steps("periods", periods, p);
   for (double v : xs) require_moderate("grid x", v);
   for (double v : ys) require_moderate("grid y", v);
   for (double v : angles) require_moderate("grid angle", v);
@@ -138,7 +139,7 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
   if (entries.empty()) throw InvalidParameter("entries", "none", "needs at least one entry pose");
   if (entries.size() > 10000000)
     throw InvalidParameter("entries", std::to_string(entries.size()), "must be at most 1e7");
-  require_steps("max_periods", max_periods, p);
+  require_planar_steps("max_periods", max_periods, p);
   PlanarStopSummary sum;
   sum.runs.resize(entries.size());
   const double period = planar_period(p.motion);

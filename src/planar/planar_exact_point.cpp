@@ -66,9 +66,7 @@ long long advance_planar_exact_point(const PlanarTableMotion& motion,
     throw InvalidParameter("rotation", motion.rotation->kind(),
                            "the exact point solver needs a translating table");
   validate(PlanarField(field));
-  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
-    throw InvalidParameter("law", law.describe(),
-                           "planar friction must be isotropic and velocity-independent");
+  require_planar_law(law);
   if (!std::isfinite(t_end) || t_end < st.t)
     throw InvalidParameter("t_end", t_end, "must be finite and >= the state's time");
   const PiecewisePolynomialProfile* p1 = constant_pieces(motion.first, "first");

@@ -18,6 +18,13 @@ void validate(const PlanarTableMotion& m) {
   if (m.second) unit("e2", m.e2_x, m.e2_y);
 }
 
+void require_planar_law(const FrictionLaw& law) {
+  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
+    throw InvalidParameter("law", law.describe(),
+                           "planar friction must be isotropic (kinetic_forward = "
+                           "kinetic_backward) and velocity-independent");
+}
+
 PlanarTablePose table_pose(const PlanarTableMotion& m, double t) {
   PlanarTablePose p;
   if (m.first) {
@@ -133,10 +140,7 @@ void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& fi
   if (motion.rotation)
     throw InvalidParameter("rotation", motion.rotation->kind(),
                            "a point contact needs a translating table (use the rigid part)");
-  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
-    throw InvalidParameter("law", law.describe(),
-                           "planar friction must be isotropic (kinetic_forward = "
-                           "kinetic_backward) and velocity-independent");
+  require_planar_law(law);
   const double h = o.step, theta = o.theta;
   const double s = law.static_coefficient(), kin = law.kinetic_forward();
   // Both directions piecewise polynomial (or absent): call their velocity directly.

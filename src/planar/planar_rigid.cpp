@@ -11,13 +11,6 @@ void validate(const RigidPart& part) {
   validate(part.patch);
 }
 
-void require_planar_law(const FrictionLaw& law) {
-  if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
-    throw InvalidParameter("law", law.describe(),
-                           "planar friction must be isotropic (kinetic_forward = "
-                           "kinetic_backward) and velocity-independent");
-}
-
 PlanarRigidState make_planar_rigid_state(const PlanarTableMotion& motion, double t,
                                          const PlanarPose& pose, const PlanarTwist& twist) {
   validate(motion);

@@ -48,6 +48,9 @@ struct PatchContact {
 /// How the step ended.
 enum class PatchMode { stick, pivot, slip };
 
+/// "stick", "pivot" or "slip".
+const char* patch_mode_name(PatchMode mode) noexcept;
+
 struct PatchImpulseResult {
   std::array<double, 3> twist{};  ///< relative twist after the step (v_x, v_y, omega) [-]
   PatchMode mode = PatchMode::stick;

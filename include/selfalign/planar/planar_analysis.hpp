@@ -31,10 +31,16 @@ void validate(const PlanarProblem& problem);
 /// Steps per table period.
 long long steps_per_period(const PlanarProblem& problem);
 
+/// Throws InvalidParameter naming `name` when `periods` periods of one run exceed the
+/// time-stepping cap of simulate.hpp (kMaxTimeSteps = 1e9 steps).
+void require_planar_steps(const char* name, double periods, const PlanarProblem& problem);
+
 /// Steps of each kind.
 struct PlanarCensus {
   long long stick = 0, pivot = 0, slip = 0;
   long long total() const noexcept { return stick + pivot + slip; }
+  /// Counts one step that ended in `mode`.
+  void add(PatchMode mode) noexcept;
 };
 
 struct PlanarSteadyResult {

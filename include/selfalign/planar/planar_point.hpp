@@ -50,6 +50,10 @@ double planar_period(const PlanarTableMotion& motion);
 /// Throws InvalidParameter unless each direction given is a unit vector (to 1e-12).
 void validate(const PlanarTableMotion& motion);
 
+/// Throws InvalidParameter naming "law" unless isotropic (kinetic_forward = kinetic_backward)
+/// and velocity-independent: the planar solvers' friction law.
+void require_planar_law(const FrictionLaw& law);
+
 /// The table velocity Y'(t) [-].
 void table_velocity(const PlanarTableMotion& motion, double t, double& vx, double& vy);
 

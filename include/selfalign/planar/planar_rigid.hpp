@@ -90,7 +90,4 @@ void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& fi
                           const TimeSteppingOptions& options, PlanarRigidState& state,
                           long long steps, PlanarStepSink* sink = nullptr);
 
-/// Throws InvalidParameter naming "law" unless isotropic and velocity-independent.
-void require_planar_law(const FrictionLaw& law);
-
 }  // namespace selfalign
