@@ -131,6 +131,9 @@ const ExactSetup& PeriodMap::exact_setup() const {
 
 ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
                                   MotionCensus* census) const {
+  if (sink && !has_arcs())  // a sink would stay empty (D22, D27)
+    throw InvalidParameter("method", to_string(method()),
+                           "has no closed-form arcs: only the exact solvers deliver them");
   const double P = profile_.period();
   if (exact_) {
     ExactState s = make_exact_state(*exact_, {0, x0, v0});
@@ -209,19 +212,26 @@ Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const FrictionLaw& law)
   return s;
 }
 
+void SaltationProduct::on_arc(const Arc& a) {
+  if (count_ == 0) first_ = a;
+  else product_ = saltation(last_, a, *law_) * product_;
+  const Transition t = a.transition();
+  Eigen::Matrix2d phi;
+  phi << t.xx, t.xv, t.vx, t.vv;
+  product_ = phi * product_;
+  last_ = a;
+  ++count_;
+}
+
+Eigen::Matrix2d SaltationProduct::finish(const Arc& next) const {
+  return count_ ? Eigen::Matrix2d(saltation(last_, next, *law_) * product_) : product_;
+}
+
 Eigen::Matrix2d PeriodMap::saltation_monodromy(double x0, double v0) const {
-  const std::vector<Arc> list = arcs(x0, v0);
-  Eigen::Matrix2d m = Eigen::Matrix2d::Identity();
   // The arc that follows the period's last one is the next period's first.
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const Transition t = list[i].transition();
-    Eigen::Matrix2d phi;
-    phi << t.xx, t.xv, t.vx, t.vv;
-    m = phi * m;
-    const Arc& next = i + 1 < list.size() ? list[i + 1] : list.front();
-    m = saltation(list[i], next, law_) * m;
-  }
-  return m;
+  SaltationProduct product(law_);
+  for (const Arc& a : arcs(x0, v0)) product.on_arc(a);
+  return product.finish_periodic();
 }
 
 Eigen::Matrix2d PeriodMap::finite_difference_monodromy(double x0, double v0, double h) const {
@@ -260,6 +270,11 @@ const ObjectState& PeriodMap::Run::advance_to(double t_end, IntervalSink* sink,
 }
 
 const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
+  // Only the exact solvers have arcs: a sink given to another would stay empty (D22: the
+  // convergence analysis read past an empty arc list under a Stribeck law).
+  if (sink && !map_->has_arcs())
+    throw InvalidParameter("method", to_string(map_->method()),
+                           "has no closed-form arcs: only the exact solvers deliver them");
   if (map_->exact_) {
     advance_exact(*map_->exact_, exact_, t_end, sink);
     return exact_.object;

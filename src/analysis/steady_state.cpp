@@ -40,131 +40,148 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   const IntegratorStatistics work_before = map.integrator_statistics();
   // One period of the search: the state at t0 + Δt from x = 0, x' = v at t0. Every period
   // keeps its census and displacement: the best iterate's are the result's (no extra period).
+  // Exact maps also give the local slope λ = dP/dv of the period they simulate (the saltation
+  // product of its arcs, PeriodMap::saltation_monodromy), so every step is a Newton step on
+  // the affine piece the iterate lies on; other maps measure λ by secants.
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
   struct Period {
-    double v, g, displacement;
+    double v, g, displacement, lambda;
     MotionCensus census;
   };
   auto evaluate = [&](double v) {
-    Period p{v, 0.0, 0.0, {}};
-    const ObjectState end = map(0, v, nullptr, &p.census);
+    Period p{v, 0.0, 0.0, kNaN, {}};
+    ObjectState end;
+    if (map.has_arcs()) {
+      SaltationProduct product(map.law());
+      end = map(0, v, &product, &p.census);
+      p.lambda = product.finish_periodic()(1, 1);
+    } else {
+      end = map(0, v, nullptr, &p.census);
+    }
     p.g = end.xd - v;
     p.displacement = end.x;
     return p;
   };
 
-  // Secant iteration on g(v) = P(v) - v, started from rest: plain iterates first (they reach
-  // the stick-determined fixed point exactly), then secant steps (affine slip-slip maps).
-  // Safeguards: the steady x'_0s cannot exceed the velocity the table can impart in a period,
-  // V = max|y''| Δt + Δt (friction included), so a secant step is taken only on a clearly
-  // contracting slope and only if it lands within 2V; tolerances are relative to at most V.
+  // The fixed point v* of P is the root of g(v) = P(v) - v. P is nondecreasing (a scalar
+  // velocity: responses from two starts merge in a stick but never cross) with slope λ < 1
+  // (friction dissipates a velocity difference), so g is decreasing and a pair of iterates
+  // with g > 0 (below v*) and g < 0 (above v*) brackets v*: the bracket's width bounds the
+  // error of any point in it. P is piecewise affine for the paper's profiles (constant after a
+  // stick, slope λ2 = c4 in slip-slip, eq. 32) and piecewise smooth in general, with kinks
+  // where the event sequence changes (F05: a fixed point 8e-10 Δt from the case-3/4 kink).
   //
-  // Stopping rule: on the estimated error of v, not on the residual. Near the fixed point v*
-  // P is affine with slope λ in [0, 1) (constant after a stick, λ2 = c4 in slip-slip), so
-  // |v - v*| = |g(v)| / (1 - λ), with g' = λ - 1 the secant slope of g. With λ2 near 1 the
-  // residual understates the error by 1/(1 - λ2) (issue 9: λ2 = 0.9965, residual 4e-12, error
-  // 1.15e-9). g itself carries the period map's rounding, about eps (|v| + V), so
-  //   * the slope is taken only from iterates whose residuals differ by far more than that
-  //     (kSlopeResolution roundings): slopes of nearby iterates are rounding noise;
-  //   * the error estimate is max(|g|, rounding) / (1 - λ), and where that floor exceeds the
-  //     tolerance the search stops once secant steps no longer halve the residual (twice in a
-  //     row, with the residual already at rounding level: kRoundingLevel), returning the best
-  //     iterate with its estimate.
-  constexpr double kSlopeResolution = 1e3;
-  constexpr double kStallFactor = 0.5;  // a secant step on an affine map gains far more
-  constexpr int kStallsToStop = 2;
-  constexpr double kRoundingLevel = 1e-9;  // |g| / (1 + |v|): far above rounding, far below
-                                           // any residual a secant step leaves off the floor
-  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // Steps: plain iterates from rest first (they reach a stick-determined fixed point exactly),
+  // then Newton steps v - g / (λ - 1) on the local slope (exact maps) or secant steps; a step
+  // that leaves the bracket, or one that fails to halve the residual twice, is replaced by
+  // bisection. Once the local estimate |g| / (1 - λ) is within half the tolerance, the next
+  // point is the mirror image across the estimated v*: where the estimate holds, g changes
+  // sign there and the bracket, of width twice the estimate, certifies it; where a kink lies
+  // between, the search goes on from the mirror point. Stops when
+  //   * g = 0 in floating point (a stick-determined fixed point: error the map's rounding), or
+  //   * the bracket is narrower than the tolerance, or than the map's rounding amplified by
+  //     1 / (1 - λ) (kFloor roundings): no evaluation resolves the sign closer than that.
+  // The reported error is the bracket's width, never less than the rounding floor: a bound,
+  // not an estimate from a slope that may have been taken across a kink.
+  // The steady x'_0s cannot exceed the velocity the table can impart in a period,
+  // V = max|y''| Δt + Δt (friction included); steps beyond 2V are replaced by plain iterates.
+  constexpr double kSlopeResolution = 1e3;  // residual differences below this many roundings
+                                            // give no secant slope
+  constexpr double kStallFactor = 0.5;      // a Newton/secant step on an affine map gains more
+  constexpr int kStallsToBisect = 2;
+  constexpr double kFloor = 2;              // roundings of g: closer to v*, g's sign is noise
+  constexpr double kProbeStep = 1e-6;       // relative: far above rounding, below |v|'s scale
   require_moderate("initial_velocity", o.initial_velocity);
   const double V = (profile.peak_acceleration() + 1) * P;
   auto scale = [&](double v) { return 1 + std::min(std::abs(v), V); };
   auto rounding = [&](double v) {
     return std::numeric_limits<double>::epsilon() * (std::abs(v) + V);
   };
-  // |v - v*| from the residual and the slope of g (NaN: unknown; then only g = 0, a fixed point
-  // in floating point, counts, as a stick-determined one with λ = 0).
-  auto error_estimate = [&](double v, double g, double slope) {
-    const double r = std::max(std::abs(g), rounding(v));
-    if (std::isfinite(slope) && slope < 0) return r / std::min(-slope, 1.0);
-    return g == 0 ? r : kInf;
-  };
-  const double v_start = o.initial_velocity;
-  Period best = evaluate(v_start);
-  double v_prev = v_start, g_prev = best.g;
-  r.periods = 1;
-  // A neighbour's slope (with its x'_0s as the start) makes the first step a secant step.
   const bool hinted = std::isfinite(o.initial_slope) && o.initial_slope < 0;
-  double slope = hinted ? o.initial_slope : std::numeric_limits<double>::quiet_NaN();
-  bool done = g_prev == 0;
-  double v = v_prev + g_prev;  // plain iterate
-  if (hinted && slope < -1e-3 && std::abs(v_prev - g_prev / slope) <= 2 * V)
-    v = v_prev - g_prev / slope;  // secant step on the neighbour's slope
-  bool secant_step = false;
-  int stalls = 0;
-  bool probed = false;
-  constexpr double kProbeStep = 1e-6;  // relative: far above rounding, far below |v|'s scale
-  // The tightest bracket the iterates give (g decreasing through the fixed point: g > 0 below
-  // it, g < 0 above it): secant steps must land inside it, else it is bisected.
-  double above = 0, below = 0;
-  bool have_above = false, have_below = false;
-  auto note_side = [&](double vv, double gg) {
-    if (gg > 0 && (!have_below || vv > below)) below = vv, have_below = true;
-    if (gg < 0 && (!have_above || vv < above)) above = vv, have_above = true;
+  double secant_slope = hinted ? o.initial_slope : kNaN;  // g' from iterates (or the hint)
+  // g' = λ - 1 at an iterate: its own λ (exact maps), else the last secant slope.
+  auto slope_at = [&](const Period& p) {
+    return std::isfinite(p.lambda) ? p.lambda - 1 : secant_slope;
   };
-  note_side(v_prev, g_prev);
+  // 1 - λ from the slope of g (taken as at most 1; 1 where unknown), and the rounding floor
+  // of v*: kFloor roundings of g over it.
+  auto contraction = [&](const Period& p) {
+    const double s = slope_at(p);
+    return std::isfinite(s) && s < 0 ? std::min(-s, 1.0) : 1.0;
+  };
+  auto floor_at = [&](const Period& p) { return kFloor * rounding(p.v) / contraction(p); };
+
+
+  double below = 0, above = 0;  // bracket: g(below) > 0 > g(above)
+  bool have_below = false, have_above = false;
+  auto note_side = [&](const Period& p) {
+    if (p.g > 0 && (!have_below || p.v > below)) below = p.v, have_below = true;
+    if (p.g < 0 && (!have_above || p.v < above)) above = p.v, have_above = true;
+  };
+  auto bracketed = [&] { return have_below && have_above && below < above; };
+
+  Period best = evaluate(o.initial_velocity);
+  r.periods = 1;
+  note_side(best);
+  Period last = best;  // the latest iterate
+  // At the rounding floor a Newton iterate on the map's own slope needs no certificate: no
+  // evaluation could resolve g's sign closer to v* (a secant slope may come from across a kink,
+  // so other maps always bracket).
+  auto at_floor = [&](const Period& p) {
+    return p.g == 0 || (std::isfinite(p.lambda) && std::abs(p.g) <= kFloor * rounding(p.v));
+  };
+  bool done = at_floor(best), probed = false;
+  int stalls = 0;  // consecutive Newton/secant steps that failed to halve the residual
   while (!done && r.periods < o.max_periods) {
-    Period current = evaluate(v);
-    const double g = current.g;
-    ++r.periods;
-    note_side(v, g);
-    if (std::abs(g - g_prev) > kSlopeResolution * (rounding(v) + rounding(v_prev)))
-      slope = (g - g_prev) / (v - v_prev);
-    const bool stalled = secant_step && !(std::abs(g) <= kStallFactor * std::abs(best.g));
-    stalls = stalled ? stalls + 1 : 0;
-    if (std::abs(g) <= std::abs(best.g)) best = std::move(current);
-    if (g == 0 || error_estimate(best.v, best.g, slope) <= tol * scale(best.v) ||
-        (stalls >= kStallsToStop && std::abs(best.g) <= kRoundingLevel * scale(best.v))) {
-      done = true;
-      break;
-    }
-    double next = v + g;  // plain iterate
-    secant_step = false;
-    // Residuals too close to each other to give a slope (a start near the fixed point, a map
-    // with λ near 1): one probe a resolvable distance towards the fixed point measures it, and
-    // the secant takes over (plain iterates would crawl at rate λ).
-    if (!std::isfinite(slope) && !probed && r.periods >= 3 && g != 0) {
+    const double v = last.v, g = last.g;
+    const double s = slope_at(last);
+    // The next point: Newton/secant where a slope is known and clearly contracting (not in
+    // the first plain iterates from rest, which find stick-determined fixed points exactly),
+    // else a plain iterate.
+    double next = v + g;
+    bool step = false, certify = false;
+    const bool may_step = r.periods >= 3 || hinted || std::isfinite(last.lambda);
+    if (may_step && std::isfinite(s) && s < -1e-3 && std::abs(v - g / s) <= 2 * V) {
+      const double estimate = std::abs(g / s);
+      // Certify: mirror across the estimated v*, at least the rounding floor away.
+      certify = estimate <= 0.5 * tol * scale(v);
+      next = v + std::copysign(certify ? std::max(2 * estimate, floor_at(last)) : estimate, g);
+      step = !certify;
+    } else if (!std::isfinite(s) && !probed && r.periods >= 3 && g != 0) {
+      // Residuals too close to each other to give a slope (a start near the fixed point, a
+      // map with λ near 1): one probe a resolvable distance towards v* measures it.
       next = v + std::copysign(kProbeStep * scale(v), g);
       probed = true;
     }
-    if ((r.periods > 3 || hinted) && std::isfinite(slope) && slope < -1e-3) {
-      const double secant = v - g / slope;
-      if (std::abs(secant) <= 2 * V) {
-        next = secant;
-        secant_step = true;
-      }
+    if (bracketed() && (stalls >= kStallsToBisect || !(next > below && next < above))) {
+      next = 0.5 * (below + above);
+      step = certify = false;
+      stalls = 0;
     }
-    // A secant step that leaves the bracket, or one that stalled far above the rounding floor
-    // (a kink in g between iterates can trap the secant in a cycle), is replaced by bisection.
-    const bool bracketed = have_above && have_below && below < above;
-    if (bracketed && std::abs(best.g) > kRoundingLevel * scale(best.v) &&
-        (stalls >= 1 || (secant_step && !(next > below && next < above)))) {
-      next = 0.5 * (above + below);
-      secant_step = false;
-    }
-    v_prev = v;
-    g_prev = g;
-    v = next;
-  }
-  v = done ? best.v : v;
-  r.x_dot_0s_error = done ? error_estimate(best.v, best.g, slope) : kInf;
-  r.slope = slope;
-  done = done && std::abs(v) <= 2 * V;
-  r.converged = done;
-  r.x_dot_0s = v;
-  if (!(v == best.v)) {  // not converged: the last iterate's period, simulated once more
-    best = evaluate(v);
+    Period current = evaluate(next);
     ++r.periods;
+    note_side(current);
+    if (std::abs(current.g - g) > kSlopeResolution * (rounding(next) + rounding(v)))
+      secant_slope = (current.g - g) / (next - v);
+    if (step) stalls = std::abs(current.g) <= kStallFactor * std::abs(g) ? 0 : stalls + 1;
+    if (std::abs(current.g) <= std::abs(best.g)) best = current;
+    last = std::move(current);
+    done = at_floor(best) ||
+           (bracketed() && above - below <= std::max(tol * scale(best.v), floor_at(best)));
   }
+  // |v - v*|: at the floor the residual (at least one rounding) over the local contraction,
+  // else the bracket's width (never below the rounding over the contraction).
+  const double residual_error =
+      std::max(std::abs(best.g), rounding(best.v)) / contraction(best);
+  r.x_dot_0s_error = !done           ? kInf
+                     : at_floor(best) ? residual_error
+                                      : std::max(above - below, rounding(best.v) / contraction(best));
+  r.slope = slope_at(best);
+  done = done && std::abs(best.v) <= 2 * V;
+  r.converged = done;
+  if (!done) best = last;  // not converged: the last iterate (fields hold it)
+  r.x_dot_0s = best.v;
   r.displacement = best.displacement;
   r.motion_case = best.census.motion_case();
   r.pattern = best.census.pattern();

@@ -75,8 +75,9 @@ class PeriodMap {
   }
   const TimeSteppingOptions& stepping() const noexcept { return stepping_; }
 
-  /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only)
-  /// receives every arc; a census (either method) the stick/slip classes of the period.
+  /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only:
+  /// given to another map it throws InvalidParameter naming "method") receives every arc; a
+  /// census (any method) the stick/slip classes of the period.
   ObjectState operator()(double x0, double v0, ArcSink* sink = nullptr,
                          MotionCensus* census = nullptr) const;
   /// The arcs of one period from (x0, x'0) at phase 0 (has_arcs() only; throws otherwise).
@@ -90,8 +91,9 @@ class PeriodMap {
   /// A run from `start` across as many periods as wanted (stopping, positioning, convergence).
   class Run {
    public:
-    /// Advances to t_end >= the current time; every arc goes to sink (exact only; the
-    /// time-stepping run takes whole steps, ending at the step nearest t_end).
+    /// Advances to t_end >= the current time; every arc goes to sink (exact only: a sink given
+    /// to a map without arcs throws InvalidParameter naming "method"; the time-stepping run
+    /// takes whole steps, ending at the step nearest t_end).
     const ObjectState& advance_to(double t_end, ArcSink* sink = nullptr);
     /// The same for the integrator's map: every stick and slip interval goes to sink, and
     /// every crossing of a position in `watch` (sorted) to sink->on_crossing (integrator only;
@@ -135,6 +137,29 @@ class PeriodMap {
 /// the one capability check of the analyses that need the exact solver's arcs.
 const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& profile,
                                                         const std::string& analysis);
+
+/// The monodromy matrix of a stream of arcs (an ArcSink): each arc's transition matrix, coupled
+/// to the next arc's by the saltation matrix of the event between them,
+///   M = S(a_n, a_1) Φ_n ... S(a_1, a_2) Φ_1,
+/// the last event coupled to `next` given to finish() (a period's own first arc for a periodic
+/// solution, as saltation_monodromy() does). Used where the arcs are computed anyway: the
+/// steady-state search reads dP/dx'0 = M(1, 1) off the period it simulates.
+class SaltationProduct final : public ArcSink {
+ public:
+  explicit SaltationProduct(const FrictionLaw& law) : law_(&law) {}
+  void on_arc(const Arc& a) override;
+  /// The product so far with the saltation of the last arc's end into `next`. Identity when
+  /// no arc was received.
+  Eigen::Matrix2d finish(const Arc& next) const;
+  /// finish() with the first arc received as `next` (the periodic coupling).
+  Eigen::Matrix2d finish_periodic() const { return count_ ? finish(first_) : product_; }
+
+ private:
+  const FrictionLaw* law_;
+  Eigen::Matrix2d product_ = Eigen::Matrix2d::Identity();  // up to the last arc's Φ
+  Arc first_{}, last_{};
+  std::size_t count_ = 0;
+};
 
 /// The saltation matrix at the end of arc `a` when arc `next` follows (Leine & Nijmeijer): the
 /// jump of the linearised flow across the event that ended `a`.

@@ -3,14 +3,19 @@
 /// Steady state of the object on the uniform low-friction table (Sect. 4.3, 5.1, 6.2): the
 /// periodic velocity response, its average velocity v̄ (eq. 10) and the objective f (eq. 11).
 ///
-/// Sect. 6.2 proves the velocity response is unique, so it is found from any start: the
-/// period map P(v) = x'(t0 + Δt) given x'(t0) = v is iterated, and once two iterates exist the
-/// fixed point is found by secant steps on P(v) - v (P is piecewise affine: constant after a
-/// stick, affine with slope λ2 = c4 in slip-slip, eq. 32), so slowly contracting slip-slip
-/// responses (λ2 near 1) converge in a few steps too. The search stops on the estimated error
-/// of x'_0s, |P(v) - v| / (1 - λ) with λ the secant slope of P, not on the residual |P(v) - v|
-/// (which understates the error by 1/(1 - λ2)); or, where the period map's rounding keeps the
-/// residual from falling further, at that floor. Exact solver where the table acceleration is
+/// Sect. 6.2 proves the velocity response is unique, so it is found from any start as the
+/// root of g(v) = P(v) - v, P the period map x'(t0 + Δt) given x'(t0) = v. P is nondecreasing
+/// with slope λ < 1, so g decreases and two iterates with g of opposite signs bracket the
+/// fixed point; P is piecewise affine for the paper's profiles (constant after a stick, slope
+/// λ2 = c4 in slip-slip, eq. 32) with kinks where the event sequence changes. Steps: plain
+/// iterates from rest, then Newton steps on the map's own slope dP/dv (the saltation product of
+/// the period's arcs, exact maps) or secant steps (other maps), bisection where a step leaves
+/// the bracket or stalls. The search stops at a fixed point in floating point (or, for a Newton
+/// iterate, at the rounding floor of g), or when a bracket narrower than the tolerance holds
+/// it: an estimate within tolerance is certified by evaluating its mirror image across the
+/// estimated fixed point. x_dot_0s_error is then the bracket's width, a bound rather than a
+/// residual over a slope that may have been taken across a kink (issue 20, F05). Exact solver
+/// where the table acceleration is
 /// piecewise constant or linear, or the profile is smooth (Fourier: simulate/smooth_exact.hpp);
 /// time-stepping otherwise.
 
@@ -34,7 +39,7 @@ double objective_f(double v_bar, double c = kObjectiveScale);
 
 struct SteadyStateOptions {
   int max_periods = 2000;        ///< periods simulated at most before giving up
-  /// Estimated error |x'_0s - v*| = |P(v) - v| / (1 - λ) accepted as steady, relative to
+  /// Bound on |x'_0s - v*| (the certifying bracket's width) accepted as steady, relative to
   /// 1 + |v| [-] (exact solver).
   double velocity_tol = 1e-13;
   /// Time-stepping (profiles the exact solver cannot take): h = Δt / steps_per_period.
@@ -57,8 +62,9 @@ struct SteadyState {
   bool converged = false;      ///< false: max_periods reached (fields hold the last iterate)
   Method method = Method::exact;
   double x_dot_0s = 0;         ///< steady-state x' at the profile's t0 (phase 0) [-]
-  /// Estimated |x'_0s - v*|: the residual |P(v) - v| over 1 - λ, λ the period map's secant
-  /// slope [-]; +inf when not converged. Bounded below by the map's rounding over 1 - λ.
+  /// Bound on |x'_0s - v*| [-]: the width of the bracket that holds v* (g = P(v) - v changes
+  /// sign across it), or at the rounding floor the residual |P(v) - v| over 1 - λ (λ the map's
+  /// own slope at x'_0s); never below the map's rounding over 1 - λ; +inf when not converged.
   double x_dot_0s_error = 0;
   double phase = 0;            ///< phase of the steady-state initial condition in [0, Δt) [-]
   double v_bar = 0;            ///< average velocity over a steady period, eq. (10) [-]
