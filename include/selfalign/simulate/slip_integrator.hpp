@@ -26,6 +26,12 @@
 ///   - x crossing a friction-piece boundary (friction_boundary): likewise on sigma (x - X);
 ///   - a segment end of the table acceleration: the window ends there and the slip restarts
 ///     with the next segment's acceleration (the event time does not depend on the state).
+/// A velocity zero is then placed more precisely: the step that holds it has stages past it,
+/// where a Stribeck law's mu(|x'|) has a kink, so its interpolant is no better than that kink
+/// allows. The slip is integrated again from the step's start by a controlled dopri5 whose
+/// steps end at the located time, and the time is corrected by Newton on x'(t) = 0 from the
+/// accurate state there, until the correction is below the resolution of t (issue 20, F06:
+/// results no longer depend on whether output samples shorten the steps).
 
 #include <cstddef>
 #include <cstdint>
@@ -44,10 +50,16 @@ namespace selfalign {
 struct IntegratorOptions {
   double relative_tolerance = 1e-10;  ///< in (0, 1)
   double absolute_tolerance = 1e-12;  ///< in (0, 1) [-]
+  /// Work budget: Runge-Kutta step attempts (accepted or rejected), and stick/slip intervals,
+  /// per table period of a call's horizon (at least one period), in [1, 1e9]. A non-stiff slip
+  /// at rtol 1e-12 takes ~1e3 steps per period; a viscous rate c needs ~c Δt / 3.3 explicit
+  /// steps (stability). Beyond it advance_integrated throws InvalidParameter naming the likely
+  /// cause: "viscous" or "stribeck_velocity" for a stiff slip, else "relative_tolerance".
+  double max_steps_per_period = 1e6;
 };
 
-/// Throws InvalidParameter naming "relative_tolerance" or "absolute_tolerance" unless each is
-/// in (0, 1).
+/// Throws InvalidParameter naming "relative_tolerance", "absolute_tolerance" or
+/// "max_steps_per_period" unless each is in its range.
 void validate(const IntegratorOptions& options);
 
 /// What the integrator did, for the results' provenance.
@@ -99,7 +111,9 @@ bool integrable_profile(const TableProfile& profile) noexcept;
 /// to stats (if any). Returns the number of intervals. With a sink, every crossing of a
 /// position in `watch` (sorted ascending) by a slip is reported to sink->on_crossing (stopping
 /// runs time their targets so). Throws InvalidParameter for a profile that is neither piecewise
-/// polynomial nor smooth, bad options, a non-finite state or t_end, an unsorted watch.
+/// polynomial nor smooth, bad options, a non-finite state or t_end, an unsorted watch; and
+/// when the work budget (options.max_steps_per_period) is spent or the state leaves the finite
+/// numbers (a stiff slip), naming "viscous", "stribeck_velocity" or "relative_tolerance".
 std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
                                IntervalSink* sink = nullptr, IntegratorStatistics* stats = nullptr,
                                std::span<const double> watch = {});
