@@ -3,7 +3,11 @@
 
 #include "selfalign/analysis/convergence.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
+
+#include <cmath>
+#include <limits>
 
 using namespace selfalign;
 
@@ -75,4 +79,65 @@ TEST(Convergence, DurationBelowTheRoundingOfT0IsRefused) {
   EXPECT_THROW(velocity_convergence(profile, o), InvalidParameter);
   o.duration = 1e-9 * 1.5;  // above the floor and resolvable at t0 = 1e7 (ulp 1.9e-9)
   EXPECT_NO_THROW(velocity_convergence(profile, o));
+}
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Closed-form reference for a viscous law on a piecewise-constant table acceleration
+// (docs/slip-integrator.md, V1-V3): in a slip of direction sigma under y'' = A,
+//   x'' = -sigma k - c x' - A,  x'(t) = (v0 + b/c) e^{-c t} - b/c,  b = sigma k + A,
+// reaching x' = 0 at t* = ln(1 + c v0 / b) / c when sigma b > 0; at x' = 0 the object sticks
+// while |A| <= s, else slips against A. Event by event, no integrator.
+double viscous_velocity(const PiecewisePolynomialProfile& p, double s, double k, double c,
+                        double v, double t_end) {
+  const auto segs = p.segments();
+  double t = 0;
+  for (std::size_t i = 0; t < t_end; i = (i + 1) % segs.size()) {
+    const double period_start = std::floor(t / p.period() + 1e-12) * p.period();
+    const double seg_end = std::min(t_end, period_start + segs[i].begin + segs[i].duration);
+    if (seg_end <= t) continue;
+    const double A = segs[i].accel;
+    while (t < seg_end) {
+      if (v == 0) {
+        if (std::abs(A) <= s) { t = seg_end; break; }
+      }
+      const double sigma = v > 0 ? 1 : v < 0 ? -1 : (A > 0 ? -1 : 1);
+      const double b = sigma * k + A;
+      // The time to the velocity zero (a slip from rest first moves against A).
+      const double t_star = v != 0 && sigma * b > 0 ? std::log(1 + c * v / b) / c : kInf;
+      const double tau = std::min(t_star, seg_end - t);
+      v = tau == t_star ? 0.0 : (v + b / c) * std::exp(-c * tau) - b / c;
+      t += tau;
+    }
+  }
+  return v;
+}
+}  // namespace
+
+// D22: under a speed-dependent law the analysis read past an empty arc list (SIGSEGV). Now
+// the slip integrator runs both responses; their velocities match the closed-form viscous
+// reference above, and eq. (36)'s shape holds.
+TEST(Convergence, ViscousLawMatchesTheClosedFormResponses) {
+  const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
+  const double c = 0.7;
+  const FrictionLaw law = FrictionLaw(1.2, 1.0).with_viscous(c);
+  ConvergenceOptions o;
+  o.v1 = 0.5;
+  o.v2 = -0.5;
+  o.duration = 3;
+  o.samples_per_period = 20;
+  const VelocityConvergence r = velocity_convergence(profile, law, o);
+  ASSERT_FALSE(r.t.empty());
+  // The integrator at its default rtol 1e-10 over 3 periods: 1e-8 is 100 tolerances.
+  constexpr double kIntegratorTol = 1e-8;
+  for (std::size_t j = 0; j < r.t.size(); j += 7) {
+    const PiecewisePolynomialProfile& p = *profile.piecewise_polynomial();
+    EXPECT_NEAR(r.v1[j], viscous_velocity(p, 1.2, 1.0, c, o.v1, r.t[j]), kIntegratorTol)
+        << "t = " << r.t[j];
+    EXPECT_NEAR(r.v2[j], viscous_velocity(p, 1.2, 1.0, c, o.v2, r.t[j]), kIntegratorTol)
+        << "t = " << r.t[j];
+  }
+  EXPECT_LE(r.lyapunov.back(), r.lyapunov.front());
+  EXPECT_NO_THROW(velocity_convergence(profile, FrictionLaw(1.2, 1.0).with_stribeck(0.1), o));
 }

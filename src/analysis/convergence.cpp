@@ -27,6 +27,34 @@ struct ArcList final : ArcSink {
 // The selected friction force's class on an arc: +1 / -1 while slipping, 0 while sticking.
 int friction_class(const Arc& a) { return a.kind() == ArcKind::stick ? 0 : a.direction; }
 
+// One response under the slip integrator (speed-dependent laws): its stick and slip intervals,
+// contiguous and sorted, with their friction class (the interval's direction).
+struct IntervalList final : IntervalSink {
+  std::vector<MotionInterval> intervals;
+  void on_interval(const MotionInterval& i) override {
+    if (i.t1 > i.t0) intervals.push_back(i);
+  }
+  const MotionInterval& at(double t) const {
+    auto it = std::upper_bound(intervals.begin(), intervals.end(), t,
+                               [](double value, const MotionInterval& i) { return value < i.t1; });
+    return it == intervals.end() ? intervals.back() : *it;
+  }
+};
+
+// A response's friction class and velocity wherever the analysis asks: the exact solver's arcs
+// (closed form at any t), or the integrator's intervals (class) and a second run that stops at
+// every sample time (velocity; the integrator places its events the same way whatever the
+// stops, to its tolerance).
+struct Response {
+  ArcList arcs;
+  IntervalList intervals;
+  std::vector<double> v;  // at the sample times (integrator)
+  int friction_class_at(double t, bool exact) const {
+    return exact ? friction_class(arcs.at(t)) : intervals.at(t).direction;
+  }
+  bool stuck_at(double t, bool exact) const { return friction_class_at(t, exact) == 0; }
+};
+
 }  // namespace
 
 VelocityConvergence velocity_convergence(const TableProfile& profile, const ConvergenceOptions& o) {
@@ -61,14 +89,23 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Fric
     throw InvalidParameter("duration", o.duration,
                            "must be >= 1e-9 table periods and resolvable at t0 (|t0| <= 1e8 "
                            "periods)");
-  ArcList a1, a2;
-  map.start({o.t0, 0, o.v1}).advance_to(t_end, &a1);
-  map.start({o.t0, 0, o.v2}).advance_to(t_end, &a2);
+  const bool exact = map.has_arcs();
+  if (!exact && map.method() != Method::integrator)
+    throw InvalidParameter("profile", profile.kind(),
+                           "convergence needs the exact solver or the slip integrator");
+  Response r1, r2;
+  for (auto [resp, v0] : {std::pair{&r1, o.v1}, std::pair{&r2, o.v2}}) {
+    PeriodMap::Run run = map.start({o.t0, 0, v0});
+    if (exact) run.advance_to(t_end, &resp->arcs);
+    else run.advance_to(t_end, &resp->intervals, {});
+  }
 
-  // Breakpoints: every arc boundary of either trajectory.
+  // Breakpoints: every arc (interval) boundary of either trajectory.
   std::vector<double> breaks{o.t0, t_end};
-  for (const ArcList* list : {&a1, &a2})
-    for (const Arc& a : list->arcs) breaks.push_back(a.t1);
+  for (const Response* resp : {&r1, &r2}) {
+    for (const Arc& a : resp->arcs.arcs) breaks.push_back(a.t1);
+    for (const MotionInterval& i : resp->intervals.intervals) breaks.push_back(i.t1);
+  }
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
   while (!breaks.empty() && breaks.back() > t_end) breaks.pop_back();
@@ -76,13 +113,12 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Fric
   VelocityConvergence r;
   for (std::size_t i = 0; i + 1 < breaks.size(); ++i) {
     const double mid = 0.5 * (breaks[i] + breaks[i + 1]);
-    const Arc &arc1 = a1.at(mid), &arc2 = a2.at(mid);
-    const bool same = friction_class(arc1) == friction_class(arc2);
+    const bool same = r1.friction_class_at(mid, exact) == r2.friction_class_at(mid, exact);
     if (!r.intervals.empty() && r.intervals.back().same == same)
       r.intervals.back().t_end = breaks[i + 1];
     else
       r.intervals.push_back({breaks[i], breaks[i + 1], same});
-    const bool both_stuck = arc1.kind() == ArcKind::stick && arc2.kind() == ArcKind::stick;
+    const bool both_stuck = r1.stuck_at(mid, exact) && r2.stuck_at(mid, exact);
     if (both_stuck && !r.t_coincide) r.t_coincide = breaks[i];
   }
 
@@ -92,8 +128,16 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Fric
   for (double t = o.t0 + dt; t < t_end; t += dt) times.push_back(t);
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
-  for (double t : times) {
-    const double v1 = a1.at(t).at(t).xd, v2 = a2.at(t).at(t).xd;
+  if (!exact) {
+    for (auto [resp, v0] : {std::pair{&r1, o.v1}, std::pair{&r2, o.v2}}) {
+      PeriodMap::Run run = map.start({o.t0, 0, v0});
+      for (double t : times) resp->v.push_back(t == o.t0 ? v0 : run.advance_to(t, nullptr, {}).xd);
+    }
+  }
+  for (std::size_t j = 0; j < times.size(); ++j) {
+    const double t = times[j];
+    const double v1 = exact ? r1.arcs.at(t).at(t).xd : r1.v[j];
+    const double v2 = exact ? r2.arcs.at(t).at(t).xd : r2.v[j];
     r.t.push_back(t);
     r.v1.push_back(v1);
     r.v2.push_back(v2);

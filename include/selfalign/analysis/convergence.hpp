@@ -44,7 +44,10 @@ struct ConvergenceOptions {
 };
 
 /// Runs both trajectories with the exact solver (the profile must be piecewise constant).
-/// Throws InvalidParameter otherwise or on bad options.
+/// Throws InvalidParameter otherwise or on bad options. Under a speed-dependent law (Stribeck,
+/// viscous) the slip integrator runs them: the '=' / '≠' intervals come from its stick and slip
+/// intervals, the velocities from a second run of each response that stops at every sample
+/// time (its events agree with the first run's to the integrator's tolerance).
 VelocityConvergence velocity_convergence(const TableProfile& profile,
                                          const ConvergenceOptions& options = {});
 /// The same under `law` (static >= kinetic, direction-dependent kinetic; any
