@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/simulate.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 using namespace selfalign;
@@ -163,5 +165,32 @@ TEST(Positioning, SectionSevenTwoSettingsAgainstBruteForce) {
     } else {
       EXPECT_GT(acc.dx_d, 1e-3);
     }
+  }
+}
+
+// D27 (issue 20): under a speed-dependent law Δx (x_mu, Sect. 7.1) came out as -inf, because
+// the arcs that give the largest position of the steady period were asked of the slip
+// integrator, which has none. Second method: the same steady period simulated with samples
+// every Δt/1e5 and the largest sampled x: the maximum sits at a velocity zero, so sampling
+// misses it by at most a (h)^2/2 ~ 1e-10 (|x''| <= 3 here): 1e-9.
+TEST(Positioning, SpeedDependentLawPlacesXMuAtTheLargestSteadyDisplacement) {
+  constexpr double kSampledMaximum = 1e-9;
+  const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
+  const UniformFriction uniform;
+  for (const FrictionLaw& law :
+       {FrictionLaw(1.0, 1.0).with_viscous(0.01), FrictionLaw(1.2, 1.0).with_stribeck(0.1)}) {
+    PositioningOptions o;
+    o.entries = 3;
+    const PositioningAccuracy r = positioning_accuracy(profile, law, 0.05, 2.5, o);
+    ASSERT_TRUE(r.reaches);
+    SimulationOptions so;
+    so.duration = profile.period();
+    so.output_step = profile.period() / 1e5;
+    const SimulationResult steady_period =
+        simulate(profile, uniform, law, {0, 0, r.steady.x_dot_0s}, so);
+    double max_x = -std::numeric_limits<double>::infinity();
+    for (double x : steady_period.trajectory.x) max_x = std::max(max_x, x);
+    EXPECT_NEAR(r.x_mu, max_x, kSampledMaximum) << law.describe();
+    EXPECT_TRUE(std::isfinite(r.dx_d)) << law.describe();
   }
 }

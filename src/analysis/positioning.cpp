@@ -27,11 +27,23 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Largest x over the arcs (x is monotone on each arc, so the ends suffice).
-struct MaxPosition final : ArcSink {
+// Largest x over the arcs, or over the slip integrator's intervals (x is monotone on each:
+// both end at every velocity zero, so the ends suffice).
+struct MaxPosition final : ArcSink, IntervalSink {
   double max_x = -std::numeric_limits<double>::infinity();
   void on_arc(const Arc& a) override { max_x = std::max({max_x, a.x0, a.x1}); }
+  void on_interval(const MotionInterval& i) override { max_x = std::max({max_x, i.x0, i.x1}); }
 };
+
+// Δx of Sect. 7.1: the largest displacement in one period from x = 0, x' = v0 at phase 0, by
+// the exact solver's arcs or the slip integrator's intervals (D27: under a speed-dependent
+// law the arcs were asked of the integrator, which has none, and Δx came out as -inf).
+double largest_displacement(const PeriodMap& map, double v0) {
+  MaxPosition max_position;
+  if (map.has_arcs()) map(0, v0, &max_position);
+  else map.start({0, 0, v0}).advance_to(map.period(), &max_position, {});
+  return max_position.max_x;
+}
 
 }  // namespace
 
@@ -55,9 +67,7 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Fric
   }
   // Δx: the largest displacement in one steady period (Sect. 7.1), from x = 0 at phase 0.
   const PeriodMap map(profile, law);
-  MaxPosition max_position;
-  map(0, r.steady.x_dot_0s, &max_position);
-  r.x_mu = max_position.max_x;
+  r.x_mu = largest_displacement(map, r.steady.x_dot_0s);
 
   const TwoRegionFriction friction(r.x_mu, width, c_mu);
   r.x_stick_min =
