@@ -158,3 +158,18 @@ TEST(CliLaw, StribeckRunsReportTheIntegrator) {
   EXPECT_GT(j["intervals"].get<long long>(), 0);
   EXPECT_TRUE(j["law"]["viscous"].is_null());
 }
+
+// D28 (issue 20): accumulation offered the law flags and ignored them (a report byte-identical
+// to the paper's law). Eq. (59) is the paper's law's: the flags are gone from its --help, and
+// a law from a config file is refused naming it, with no file written.
+TEST(CliLaw, AccumulationRefusesALawItCannotTake) {
+  CliSandbox box;
+  const selfalign::testing::CliResult help = box.run({"accumulation", "--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  for (const char* flag : {"--mu-static", "--mu-backward", "--stribeck-velocity", "--viscous"})
+    EXPECT_EQ(help.out.find(flag), std::string::npos) << flag;
+  EXPECT_EQ(box.run({"accumulation", "--viscous", "0.1", "--out", "m.csv"}).exit_code, 2);
+  const std::string config = write(box, "law.toml", "stribeck_velocity = 0.01\n");
+  expect_clean_failure(box, box.run({"accumulation", "--config", config, "--out", "m.csv"}),
+                       {"invalid law", "paper's law only"});
+}

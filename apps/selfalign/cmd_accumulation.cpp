@@ -145,6 +145,14 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
   const SimulateModel model = stopping_model(config);
+  // Eq. (59) is derived for the paper's law; a law from a config file is refused, not ignored
+  // (D28: the report was byte-identical whatever the law keys said).
+  if (!model.law.is_unit())
+    throw InvalidParameter("law", model.law.describe(),
+                           "accumulation's stick-position map (eq. 59) holds for the paper's law "
+                           "only (static = kinetic, no Stribeck or viscous term): leave out "
+                           "mu_static, mu_backward, stribeck_velocity, viscous; stop and accuracy "
+                           "take any law");
   const TwoRegionFriction& friction = two_region(model);
   const StickPositionMap map(three_phase_profile(model), friction);
   const OutputUnits u = model.output_units();
@@ -173,9 +181,13 @@ void add_accumulation_command(CLI::App& app) {
       "x_{n+1}(x_mu) < x_stick,min for accumulation from every entry (null with a reason where "
       "its derivation does not hold), and the map iterated from --x1. --out: the map on a grid, "
       "CSV x_n,x_next,diagonal.");
+  // No law flags (eq. 59 is the paper's law's; a config file's law keys are refused) and no
+  // integrator tolerances (nothing is integrated).
   auto flags = add_stopping_config_flags(
       *sub,
-      {{"x0", ""}, {"v0", ""}, {"t0", ""}, {"output_step", ""},
+      {{"x0", ""}, {"v0", ""}, {"t0", ""}, {"output_step", ""}, {"mu_static", ""},
+       {"mu_backward", ""}, {"stribeck_velocity", ""}, {"stribeck_exponent", ""},
+       {"viscous", ""}, {"relative_tolerance", ""}, {"absolute_tolerance", ""},
        {"out", "CSV x_n,x_next,diagonal of the map on the grid --from, --to, --n (Fig. 18; "
                "default: none)"},
        {"summary", "report JSON file, - for stdout (default: <out without extension>"
