@@ -6,6 +6,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/simulate_config.hpp"
+#include "selfalign/io/spelling.hpp"
 
 namespace selfalign {
 namespace {
@@ -159,30 +160,11 @@ std::string simulate_config_key_list() {
 }
 
 std::string unknown_config_key_hint(std::string_view name) {
-  // The key with the smallest edit distance (Levenshtein), when it is a plausible typo.
-  std::string_view best;
-  std::size_t best_distance = std::string_view::npos;
-  for (const ConfigKey& key : kKeys) {
-    const std::string_view k = key.name;
-    std::vector<std::size_t> row(k.size() + 1);
-    for (std::size_t j = 0; j <= k.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= name.size() && i <= 64; ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= k.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1,
-                           diagonal + (name[i - 1] == k[j - 1] ? 0u : 1u)});
-        diagonal = up;
-      }
-    }
-    if (row[k.size()] < best_distance) {
-      best_distance = row[k.size()];
-      best = k;
-    }
-  }
+  std::vector<std::string> names;
+  for (const ConfigKey& key : kKeys) names.emplace_back(key.name);
+  const std::string best = closest_name(name, names);
   std::string hint = "unknown key";
-  if (best_distance <= 2 && name.size() <= 64) hint += " (did you mean " + std::string(best) + "?)";
+  if (!best.empty()) hint += " (did you mean " + best + "?)";
   return hint + "; keys: units, method, profile, period, stroke, a2, a3, ..., every one in "
                 "docs/config.md and `selfalign simulate --help`";
 }
