@@ -5,6 +5,7 @@
 #include "report.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/uncertainty_file.hpp"
+#include "warnings.hpp"
 
 namespace selfalign::cli {
 
@@ -65,6 +66,21 @@ void add_uncertainty_flags(CLI::App* sub, UncertaintyFlags& f) {
                   "a JSON or TOML file of NAME = \"DIST\" pairs; --uncertain overrides it")
       ->type_name("FILE")
       ->group("Uncertainty");
+}
+
+void warn_about_request(const DesignRequest& q, bool mu_given) {
+  warn_default_mu(mu_given, q.mu, q.mu_static, q.mu_backward);
+  warn_if_millimetres("--width", q.width, 1);
+  warn_if_millimetres("--stroke-max", q.stroke_max, 1);
+  warn_if_millimetres("--tolerance", q.tolerance, 1);
+  warn_if_millimetres("--distance", q.distance, 10);
+  warn_if_grams("--mass", q.mass);
+}
+
+bool any_uncertain(const ProcessUncertainty& u) {
+  for (const UncertainInput& in : uncertain_inputs())
+    if (is_uncertain(u.*in.member)) return true;
+  return false;
 }
 
 json uncertainty_json(const DesignRequest& q, const ProcessUncertainty& u) {
