@@ -1,12 +1,13 @@
 // Shell completion and the man page (hidden `selfalign completion bash|zsh`, `selfalign man`):
 // generated from the same tree as --help, so every subcommand and flag --help lists is there,
 // and bash completes them. (zsh is not installed on the build machines: its script is checked
-// for the same names, and run by zsh where zsh exists.)
+// for the same names, and parsed by zsh where zsh exists.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <string>
@@ -53,57 +54,67 @@ std::set<std::string> help_flags(const CliSandbox& box, const std::string& comma
   return flags;
 }
 
-// What bash completes for the words (the last is being completed), through the script.
-std::string complete(const CliSandbox& box, const std::string& script,
-                     const std::vector<std::string>& words) {
-  std::string array;
-  for (const std::string& w : words) array += " " + quote(w);
-  const std::string shell = "source " + quote(script) + "; COMP_WORDS=(selfalign" + array +
-                            "); COMP_CWORD=" + std::to_string(words.size()) +
-                            "; _selfalign; echo \"${COMPREPLY[*]}\"";
-  const std::string out = box.file("completion.txt");
-  const std::string cmd = "cd " + quote(box.work().string()) + " && bash -c " + quote(shell) +
-                          " > " + quote(out) + " 2>&1";
-  EXPECT_EQ(std::system(cmd.c_str()), 0) << shell;
-  const std::string text = read_text(out);
-  return text.substr(0, text.find('\n'));
-}
-
-TEST(CliCompletion, BashCompletesEverySubcommandAndFlagOfHelp) {
-  CliSandbox box;
-  const auto r = box.run({"completion", "bash", "--out", box.file("selfalign.bash")});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const std::string script = box.file("selfalign.bash");
-  EXPECT_EQ(std::system(("bash -n " + quote(script)).c_str()), 0);
-  EXPECT_EQ(complete(box, script, {"des"}), "design");
-  EXPECT_EQ(complete(box, script, {"sweep", "acc"}), "accelerations");
-  EXPECT_EQ(complete(box, script, {"planar", "st"}), "steady stop");
-  EXPECT_EQ(complete(box, script, {"steady", "--c-"}), "--c-mu");
-  EXPECT_EQ(complete(box, script, {"steady", "--a2", "3", "--c-"}), "--c-mu");
-  // After a FILE flag, file names: the sandbox's work folder holds none.
-  EXPECT_EQ(complete(box, script, {"steady", "--config", ""}), "");
-  // Every flag --help lists, per command (the generator walks the same tree).
-  for (const std::string& command : kCommands) {
-    std::vector<std::string> words = split(command);
-    words.push_back("--");
-    std::set<std::string> offered;
-    for (const std::string& f : split(complete(box, script, words))) offered.insert(f);
-    for (const std::string& f : help_flags(box, command))
-      EXPECT_TRUE(offered.count(f)) << command << " " << f;
+// What bash completes for each list of words (the last is being completed), in one bash run of
+// the script: one line per query.
+std::vector<std::string> complete(const CliSandbox& box, const std::string& script,
+                                  const std::vector<std::vector<std::string>>& queries) {
+  std::string shell = "source " + quote(script) + "\n";
+  for (const auto& words : queries) {
+    std::string array;
+    for (const std::string& w : words) array += " " + quote(w);
+    shell += "COMP_WORDS=(selfalign" + array + "); COMP_CWORD=" + std::to_string(words.size()) +
+             "; COMPREPLY=(); _selfalign; echo \"${COMPREPLY[*]}\"\n";
   }
+  const std::string file = box.file("queries.sh"), out = box.file("completion.txt");
+  std::ofstream(file) << shell;
+  const std::string cmd =
+      "cd " + quote(box.work().string()) + " && bash " + quote(file) + " > " + quote(out);
+  EXPECT_EQ(std::system(cmd.c_str()), 0);
+  return lines(read_text(out));
 }
 
-TEST(CliCompletion, ZshScriptAndManPageListTheSameNames) {
+TEST(CliCompletion, BashZshAndManListEverySubcommandAndFlagOfHelp) {
   CliSandbox box;
+  std::map<std::string, std::set<std::string>> flags;
+  for (const std::string& command : kCommands) flags[command] = help_flags(box, command);
+
+  const std::string script = box.file("selfalign.bash");
+  const auto r = box.run({"completion", "bash", "--out", script});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::vector<std::vector<std::string>> queries = {
+      {"des"}, {"sweep", "acc"}, {"planar", "st"}, {"steady", "--c-"},
+      {"steady", "--a2", "3", "--c-"},
+      {"steady", "--config", ""}};  // after a FILE flag, files: the work folder holds none
+  for (const std::string& command : kCommands) {
+    queries.push_back(split(command));
+    queries.back().push_back("--");
+  }
+  const std::vector<std::string> got = complete(box, script, queries);
+  ASSERT_EQ(got.size(), queries.size());
+  EXPECT_EQ(got[0], "design");
+  EXPECT_EQ(got[1], "accelerations");
+  EXPECT_EQ(got[2], "steady stop");
+  EXPECT_EQ(got[3], "--c-mu");
+  EXPECT_EQ(got[4], "--c-mu");
+  EXPECT_EQ(got[5], "");
+  for (std::size_t i = 0; i < kCommands.size(); ++i) {
+    const std::vector<std::string> offered = split(got[6 + i]);
+    for (const std::string& f : flags[kCommands[i]])
+      EXPECT_NE(std::find(offered.begin(), offered.end(), f), offered.end())
+          << kCommands[i] << " " << f;
+  }
+
   const auto zsh = box.run({"completion", "zsh"});
   ASSERT_EQ(zsh.exit_code, 0) << zsh.err;
   EXPECT_EQ(zsh.out.rfind("#compdef selfalign\n", 0), 0u);
   const auto man = box.run({"man"});
   ASSERT_EQ(man.exit_code, 0) << man.err;
   EXPECT_EQ(man.out.rfind(".TH SELFALIGN 1", 0), 0u);
+  EXPECT_TRUE(std::none_of(man.out.begin(), man.out.end(), [](char c) { return c & 0x80; }))
+      << "the page is ASCII";
   for (const std::string& command : kCommands) {
     EXPECT_NE(man.out.find(".SS \"selfalign " + command + "\""), std::string::npos) << command;
-    for (const std::string& f : help_flags(box, command)) {
+    for (const std::string& f : flags[command]) {
       std::string roff;  // dashes are \- in roff
       for (char c : f) roff += c == '-' ? std::string("\\-") : std::string(1, c);
       EXPECT_NE(man.out.find("\\fB" + roff + "\\fR"), std::string::npos) << command << " " << f;
@@ -111,8 +122,6 @@ TEST(CliCompletion, ZshScriptAndManPageListTheSameNames) {
           << command << " " << f;
     }
   }
-  EXPECT_TRUE(std::none_of(man.out.begin(), man.out.end(), [](char c) { return c & 0x80; }))
-      << "the page is ASCII";
   if (std::system("command -v zsh > /dev/null 2>&1") == 0) {
     std::ofstream(box.file("_selfalign")) << zsh.out;
     EXPECT_EQ(std::system(("zsh -n " + quote(box.file("_selfalign"))).c_str()), 0);
@@ -120,7 +129,8 @@ TEST(CliCompletion, ZshScriptAndManPageListTheSameNames) {
   // Bad use of the hidden commands is one error line, like every other.
   const auto bad = box.run({"completion", "fish"});
   EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_NE(bad.err.find("invalid shell = fish: must be bash or zsh"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("invalid shell = fish: must be bash or zsh"), std::string::npos)
+      << bad.err;
 }
 
 }  // namespace

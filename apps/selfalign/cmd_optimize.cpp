@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "warnings.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/design/optimize.hpp"
@@ -35,6 +36,7 @@ struct OptimizeFlags {
   // The law's coefficients, absolute as everywhere (docs/config.md "Friction law").
   double mu = 0.3;
   std::optional<double> mu_static, mu_backward;
+  bool mu_given = false;  // --mu on the command line
 };
 
 json result_json(const OptimizationResult& r) {
@@ -65,6 +67,7 @@ void run_optimize(OptimizeFlags& f) {
     f.options.law = law_of_coefficients(f.mu, f.mu_static, f.mu_backward);
     validate(f.options);
   });
+  warn_default_mu(f.mu_given, f.mu, f.mu_static, f.mu_backward);
   if (f.out) require_output_path("out", *f.out);
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   f.options.progress = [&bar](int done, int total) {
@@ -136,7 +139,10 @@ void add_optimize_command(CLI::App& app) {
   sub->add_flag("--json", f->as_json, "print the report as JSON");
   sub->add_flag("--quiet", f->quiet, "no progress bar");
   sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
-  sub->callback([f] { run_optimize(*f); });
+  sub->callback([f, sub] {
+    f->mu_given = sub->count("--mu") > 0;
+    run_optimize(*f);
+  });
 }
 
 }  // namespace selfalign::cli
