@@ -170,9 +170,10 @@ std::optional<InvalidParameter> refusal(const DesignRequest& q, const Process& p
   return std::nullopt;
 }
 
+// What the model refused, after "give no process the model takes".
 std::string refused(const InvalidParameter& e) {
-  return "the process has no valid model there (in units of the drawn width: " + e.name() +
-         " = " + e.value() + ": " + e.allowed() + ")";
+  return " (in units of the drawn width, " + e.name() + " = " + e.value() + ": " + e.allowed() +
+         ")";
 }
 
 }  // namespace
@@ -193,7 +194,7 @@ void validate_draws(const DesignRequest& q, const Process& p, const ProcessUncer
       v[k] = upper ? ends[k].second : ends[k].first;
       if (const auto e = refusal(q, p, v))
         throw InvalidParameter(std::string(kInputs[k].name) + (upper ? ".upper" : ".lower"), v[k],
-                               "draws this far give no process: " + refused(*e));
+                               "draws this far give no process the model takes" + refused(*e));
     }
   }
   // Every corner of the box (at most 2^7 models, each a closed form): a combination of draws.
@@ -208,7 +209,8 @@ void validate_draws(const DesignRequest& q, const Process& p, const ProcessUncer
       values += (i ? ", " : "") + format_number(v[k]);
     }
     if (const auto e = refusal(q, p, v))
-      throw InvalidParameter(names, values, "these draws together give no process: " + refused(*e));
+      throw InvalidParameter(names, values,
+                             "these draws together give no process the model takes" + refused(*e));
   }
 }
 
