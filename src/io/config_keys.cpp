@@ -77,11 +77,12 @@ const ConfigKey kKeys[] = {
     {"c_mu", &C::c_mu, D::none, "[-]", "[-]", "friction",
      "friction ratio c_mu = mu_2/mu_1 (two-region), > 1"},
     {"mu_static", &C::mu_static, D::none, "[-]", "[-]", "law",
-     "static friction coefficient, >= mu and mu_backward (default: mu, static = kinetic); it "
-     "holds a part at rest: stick while |y''| <= mu_static/mu m(x)"},
+     "static friction coefficient, absolute like mu (give mu with it), >= mu and mu_backward "
+     "(default: mu, static = kinetic); it holds a part at rest: stick while |y''| <= "
+     "mu_static/mu m(x)"},
     {"mu_backward", &C::mu_backward, D::none, "[-]", "[-]", "law",
-     "kinetic friction coefficient of backward slip (x' < 0), > 0 (default: mu; the forward "
-     "one is mu)"},
+     "kinetic friction coefficient of backward slip (x' < 0), absolute like mu, > 0 (default: "
+     "mu; the forward one is mu)"},
     {"stribeck_velocity", &C::stribeck_velocity, D::velocity, "[-]", "[m/s]", "law",
      "Stribeck velocity v_s, > 0: the kinetic coefficient falls from mu_static at rest to mu "
      "(mu_backward) as mu + (mu_static - mu) exp(-(|x'|/v_s)^delta) (default: none, Coulomb); "
@@ -92,7 +93,9 @@ const ConfigKey kKeys[] = {
      "viscous friction rate c >= 0: a force -m c x' while slipping (default: none); solved by "
      "the slip integrator"},
     {"mu", &C::mu, D::none, "[-]", "[-]", "scales",
-     "low-friction coefficient mu_1; with g and length_scale sets T = sqrt(L/(mu g)), > 0"},
+     "low-friction coefficient mu_1, the kinetic coefficient of forward slip: in every run the "
+     "unit of mu_static and mu_backward (their ratios to mu); in SI runs, with g and "
+     "length_scale, T = sqrt(L/(mu g)), > 0"},
     {"g", &C::g, D::none, "[m/s^2]", "[m/s^2]", "scales", "gravitational acceleration, > 0"},
     {"length_scale", &C::length_scale, D::none, "[m]", "[m]", "scales",
      "characteristic length L of the dimensionless model, > 0"},
