@@ -79,4 +79,24 @@ double require_in_half_open(const std::string& name, double value, double lo, do
   return value;
 }
 
+InvalidParameter renamed(const InvalidParameter& e, std::span<const UserName> names,
+                         std::string_view prefix) {
+  const auto rename = [&](std::string_view part) {
+    const std::string_view base = part.substr(0, part.find('['));
+    for (const UserName& n : names)
+      if (n.library == base) return std::string(n.user) + std::string(part.substr(base.size()));
+    return std::string(prefix) + std::string(part);
+  };
+  std::string name;
+  const std::string_view all = e.name();
+  for (std::size_t begin = 0;;) {
+    const std::size_t comma = all.find(", ", begin);
+    if (!name.empty()) name += ", ";
+    name += rename(all.substr(begin, comma - begin));
+    if (comma == std::string_view::npos) break;
+    begin = comma + 2;
+  }
+  return InvalidParameter(name, e.value(), e.allowed());
+}
+
 }  // namespace selfalign

@@ -25,6 +25,13 @@ struct CliResult {
   std::string out, err;
 };
 
+/// The binary under test: SELFALIGN_CLI_PATH, or $SELFALIGN_TEST_CLI when set (a test run
+/// against another build, e.g. to see a regression test fail before its fix).
+inline std::string cli_path() {
+  const char* other = std::getenv("SELFALIGN_TEST_CLI");
+  return other && *other ? other : SELFALIGN_CLI_PATH;
+}
+
 /// `s` single-quoted for the shell.
 inline std::string quote(const std::string& s) {
   std::string q = "'";
@@ -42,7 +49,7 @@ class CliSandbox {
   std::string work_file(const std::string& name) const { return (work() / name).string(); }
 
   CliResult run(const std::vector<std::string>& args) const {
-    std::string command = "cd " + quote(work().string()) + " && " + quote(SELFALIGN_CLI_PATH);
+    std::string command = "cd " + quote(work().string()) + " && " + quote(cli_path());
     for (const std::string& a : args) command += " " + quote(a);
     command += " >" + quote(file("stdout.txt")) + " 2>" + quote(file("stderr.txt"));
     const int status = std::system(command.c_str());

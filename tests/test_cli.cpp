@@ -84,8 +84,9 @@ const ConfigMisuseCase kMisuseCases[] = {
     {"c_mu_below_one", {"--c-mu", "0.5"}, "", "", {"c_mu = 0.5", "must be > 1"}},
     {"period_zero", {"--period", "0"}, "", "", {"period = 0", "must be > 0"}},
     {"period_negative", {"--period", "-1"}, "", "", {"period = -1", "must be > 0"}},
-    {"width_nan", {"--width", "nan"}, "", "", {"width = nan", "must be > 0"}},
-    {"c_mu_nan", {"--c-mu", "nan"}, "", "", {"c_mu = nan", "must be > 1"}},
+    // NaN is refused like 1e60, before any key's own range (issue 20, D35).
+    {"width_nan", {"--width", "nan"}, "", "", {"--width = nan", "finite", "1e50"}},
+    {"c_mu_nan", {"--c-mu", "nan"}, "", "", {"--c-mu = nan", "finite", "1e50"}},
     {"periods_zero", {"--periods", "0"}, "", "", {"periods = 0", "must be > 0"}},
     {"units_unknown", {"--units", "imperial"}, "", "", {"units = imperial", "dimensionless, si"}},
     {"profile_unknown", {"--profile", "square"}, "", "", {"profile = square", "three-phase"}},
@@ -106,7 +107,7 @@ const ConfigMisuseCase kMisuseCases[] = {
      {"units = xxx", "(100000 characters)"}},
     {"c_mu_unresolvable", {"--c-mu", "3e16"}, "", "", {"c_mu, width", "1e12"}},
     {"width_denormal", {"--width", "1e-320"}, "", "", {"width = 1e-320", "resolvable"}},
-    {"velocity_beyond_1e50", {"--v0", "1e308"}, "", "", {"v0 = 1e+308", "1e50"}},
+    {"velocity_beyond_1e50", {"--v0", "1e308"}, "", "", {"--v0 = 1e308", "1e50"}},  // as given
     {"negative_duration_named", {"--profile", "quadratic-sequence", "--durations", "-0.3,0.4,0.9",
                                  "--accelerations", "0,-3,4"}, "", "", {"durations[0] = -0.3"}},
     {"deep_json", {}, "deep.json",

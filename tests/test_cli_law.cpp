@@ -173,3 +173,47 @@ TEST(CliLaw, AccumulationRefusesALawItCannotTake) {
   expect_clean_failure(box, box.run({"accumulation", "--config", config, "--out", "m.csv"}),
                        {"invalid law", "paper's law only"});
 }
+
+// F07: the coefficients are absolute in every run, mu the kinetic one, whatever the unit
+// system; reports give both the coefficients and their ratios (expected ratios: the quotients
+// of the coefficients given, docs/config.md "Friction law").
+TEST(CliLaw, CoefficientsAreAbsoluteWithMuTheKineticOneInEveryRun) {
+  CliSandbox box;
+  const std::vector<std::string> sequence = {"steady", "--profile", "quadratic-sequence",
+                                             "--durations", "0.5,0.3,0.2", "--accelerations",
+                                             "1,-5,5", "--json"};
+  auto with = [&](std::vector<std::string> more) {
+    std::vector<std::string> args = sequence;
+    args.insert(args.end(), more.begin(), more.end());
+    return box.run(args);
+  };
+  const auto given = with({"--mu", "0.59", "--mu-static", "0.72"});
+  ASSERT_EQ(given.exit_code, 0) << given.err;
+  EXPECT_TRUE(given.err.empty()) << given.err;
+  const auto law = nlohmann::json::parse(given.out)["law"];
+  EXPECT_EQ(law["mu"].get<double>(), 0.59);
+  EXPECT_DOUBLE_EQ(law["mu_static"].get<double>(), 0.72);  // mu x the ratio: to rounding
+  EXPECT_EQ(law["mu_backward"].get<double>(), 0.59);
+  EXPECT_DOUBLE_EQ(law["static"].get<double>(), 0.72 / 0.59);
+  // The same coefficients in an SI run: the same ratio.
+  const auto si = with({"--units", "si", "--mu", "0.59", "--mu-static", "0.72"});
+  ASSERT_EQ(si.exit_code, 0) << si.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(si.out)["law"]["static"].get<double>(), 0.72 / 0.59);
+  // Without --mu the default kinetic coefficient 0.3 is used, and a warning says so.
+  const auto alone = with({"--mu-static", "0.72"});
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  EXPECT_DOUBLE_EQ(nlohmann::json::parse(alone.out)["law"]["static"].get<double>(), 0.72 / 0.3);
+  EXPECT_EQ(alone.err.rfind("selfalign: warning: mu_static = 0.72 is an absolute coefficient", 0),
+            0u)
+      << alone.err;
+  EXPECT_NE(alone.err.find("mu = 0.3 (ratio 2.4)"), std::string::npos) << alone.err;
+  // optimize takes the same three flags (its --static-ratio is gone).
+  const auto opt = box.run({"optimize", "--family", "three-phase", "--starts", "1",
+                            "--max-evaluations", "40", "--mu", "0.5", "--mu-static", "0.6",
+                            "--mu-backward", "0.4", "--quiet", "--json"});
+  ASSERT_EQ(opt.exit_code, 0) << opt.err;
+  const auto olaw = nlohmann::json::parse(opt.out)["law"];
+  EXPECT_DOUBLE_EQ(olaw["static"].get<double>(), 0.6 / 0.5);
+  EXPECT_DOUBLE_EQ(olaw["kinetic_backward"].get<double>(), 0.4 / 0.5);
+  EXPECT_DOUBLE_EQ(olaw["mu_static"].get<double>(), 0.6);
+}

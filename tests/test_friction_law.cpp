@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "moreau_order.hpp"
@@ -59,6 +61,39 @@ TEST(FrictionLaw, DefaultIsThePapersLawAndRefusesKineticAboveStatic) {
   EXPECT_THROW(FrictionLaw(1.0, 1.0, 1.5), InvalidParameter);
   EXPECT_THROW(FrictionLaw(1.0, -1.0), InvalidParameter);
   EXPECT_THROW(FrictionLaw(std::nan(""), 1.0), InvalidParameter);
+}
+
+// The front ends' convention (issue 20, F07, D32): absolute coefficients, their ratios to the
+// kinetic mu formed after each is checked as given.
+TEST(FrictionLaw, OfCoefficientsTakesRatiosToMuAfterCheckingEachAsGiven) {
+  const FrictionLaw law = law_of_coefficients(0.59, 0.72, std::nullopt);
+  EXPECT_EQ(law.static_coefficient(), 0.72 / 0.59);
+  EXPECT_EQ(law.kinetic_forward(), 1.0);
+  EXPECT_EQ(law.kinetic_backward(), 1.0);
+  EXPECT_TRUE(law_of_coefficients(0.3, std::nullopt, std::nullopt).is_unit());
+  EXPECT_EQ(law_of_coefficients(0.3, 0.36, 0.24).kinetic_backward(), 0.24 / 0.3);
+  const auto message = [](double mu, std::optional<double> s, std::optional<double> b) {
+    try {
+      law_of_coefficients(mu, s, b);
+    } catch (const InvalidParameter& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // 1e-300 was refused as the ratio "mu_kinetic_backward = 3.3e-300".
+  EXPECT_EQ(message(0.3, std::nullopt, 1e-300),
+            "invalid mu_backward = 1e-300: must be > 0, within [1e-50, 1e50]");
+  EXPECT_EQ(message(0.3, std::nan(""), std::nullopt),
+            "invalid mu_static = nan: must be > 0, within [1e-50, 1e50]");
+  EXPECT_EQ(message(0.3, 0.2, std::nullopt),
+            "invalid mu_static = 0.2: must be >= mu = 0.3 (the static coefficient is >= the "
+            "kinetic one)");
+  EXPECT_EQ(message(0.3, std::nullopt, 0.5),
+            "invalid mu_backward = 0.5: must be <= mu_static = 0.3 (the static coefficient is "
+            ">= the kinetic one)");
+  // The ratios stay within FrictionLaw's own range [1e-50, 1e50].
+  EXPECT_EQ(message(1e40, std::nullopt, 1e-20).rfind("invalid mu_backward = 1e-20: must be >= 1e-50 mu", 0), 0u);
+  EXPECT_EQ(message(1e-40, 1e20, std::nullopt).rfind("invalid mu_static = 1e+20: must be <= 1e50 mu", 0), 0u);
 }
 
 // v̄ of the exact steady state equals the hand derivation to 1e-12 (the closed form is a few

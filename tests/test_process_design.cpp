@@ -86,3 +86,23 @@ TEST(ProcessDesign, MisuseThrows) {
   q.distance = std::nan("");
   EXPECT_THROW(design_process(q), InvalidParameter);
 }
+
+// D29: a coefficient not given is std::nullopt (static = kinetic), never NaN; a NaN given is
+// refused naming it.
+TEST(ProcessDesign, AbsentCoefficientsAreNoneAndNanIsRefused) {
+  DesignRequest q = small_request();
+  EXPECT_FALSE(q.mu_static.has_value());
+  EXPECT_TRUE(friction_law(q).is_unit());
+  q.mu_static = std::nan("");
+  try {
+    validate(q);
+    FAIL() << "mu_static = nan accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.name(), "mu_static");
+  }
+  q = small_request();
+  q.mu_backward = std::nan("");
+  EXPECT_THROW(validate(q), InvalidParameter);
+  q.mu_backward = 0.9 * q.mu;
+  EXPECT_EQ(friction_law(q).kinetic_backward(), 0.9 * q.mu / q.mu);
+}

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "selfalign/error.hpp"
@@ -38,6 +39,28 @@ TEST(PiecewisePolynomialProfile, RejectsVelocityThatDoesNotReturn) {
   EXPECT_THROW(PiecewisePolynomialProfile::from_accelerations(d, a), InvalidParameter);
   const double neg[2] = {-1, 1}, ok[2] = {1, -1};
   EXPECT_THROW(PiecewisePolynomialProfile::from_accelerations(neg, ok), InvalidParameter);
+}
+
+// D32: a gap between breakpoints too short for its acceleration change (jerk beyond 1e50) is the
+// later breakpoint's, not the accelerations' ("accels[0]" before).
+TEST(PiecewisePolynomialProfile, BreakpointsTooCloseNameTheTime) {
+  const double t[2] = {0, 5e-324}, a[2] = {1, -1}, period = 1;
+  try {
+    PiecewisePolynomialProfile::from_breakpoints(t, a, period);
+    FAIL() << "accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.name(), "times[1]");
+    EXPECT_NE(std::string(e.allowed()).find("too close to times[0] = 0"), std::string::npos);
+  }
+  const double wide[2] = {0, 0.5};
+  EXPECT_NO_THROW(PiecewisePolynomialProfile::from_breakpoints(wide, a, period));
+  const double nan_a[2] = {1, std::nan("")};
+  try {
+    PiecewisePolynomialProfile::from_breakpoints(wide, nan_a, period);
+    FAIL() << "accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.name(), "accelerations[1]");
+  }
 }
 
 TEST(FourierProfile, SingleHarmonicByHand) {

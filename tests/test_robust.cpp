@@ -103,6 +103,43 @@ TEST(Distribution, BadInputNamesTheParameter) {
   EXPECT_EQ(name_of([] { uncertain_input_index("friction"); }), "uncertain");
 }
 
+// D32: draws the model cannot take name the uncertain input the user gave, before any run (an
+// offset of 8.3 sd = 8e40 m put x_mu 1e40 widths away, refused as "width = 1"; a width of
+// 1e-300 m made the period 6e148 T, refused as "period").
+TEST(Distribution, DrawsWithoutAProcessNameTheInput) {
+  const DesignRequest q = issue_task();
+  const Process p = process_at(0.9);
+  const auto refusal = [&](const char* name, const char* dist) {
+    ProcessUncertainty u;
+    set_input(u, name, dist);
+    validate(u);
+    try {
+      validate_draws(q, p, u);
+    } catch (const InvalidParameter& e) {
+      return e.name();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(refusal("x_mu_offset", "normal:0,1e40"), "x_mu_offset.lower");
+  EXPECT_EQ(refusal("width", "samples:1e-300,2e-300"), "width.lower");
+  EXPECT_EQ(refusal("width", "normal:0.003,5%,0.002,0.004"), "no error");
+  // Two inputs fine alone, not together (the transition must be >= 1e-9 |x_mu|): a width down
+  // to 1e-8 m keeps x_mu = 0.037 m (the offset's nominal 0) within 3.7e6 widths, an offset up
+  // to 100 m keeps x_mu within 6.7e4 nominal widths (1.5 mm); both at once, 1e10 widths.
+  ProcessUncertainty u;
+  set_input(u, "width", "uniform:1e-8,0.003");
+  set_input(u, "x_mu_offset", "normal:0,20,-0.01,100");
+  validate(u);
+  MonteCarloOptions o;
+  o.runs = 1;
+  try {
+    monte_carlo(q, p, u, o);
+    FAIL() << "accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.name(), "width, x_mu_offset");
+  }
+}
+
 TEST(UncertaintyFile, TheExampleReadsAsTheFlagsWould) {
   const ProcessUncertainty u =
       load_uncertainty(std::string(SELFALIGN_SOURCE_DIR) + "/examples/uncertainty.toml");

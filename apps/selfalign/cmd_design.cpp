@@ -18,6 +18,7 @@
 #include "progress_bar.hpp"
 #include "report.hpp"
 #include "robust_flags.hpp"
+#include "warnings.hpp"
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
@@ -41,6 +42,7 @@ struct DesignFlags {
   std::optional<std::string> out, profile_csv;
   double sample_rate = 10'000;  // [Hz]
   std::optional<double> moving_mass;  // [kg]
+  bool mu_given = false;              // --mu on the command line
 };
 
 // One period for a motion controller (design/actuator_samples.hpp) as CSV, and its rate in
@@ -67,6 +69,8 @@ std::string profile_csv(const DesignRequest& q, const DesignResult& d, double ra
   return csv;
 }
 
+json optional_json(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
 json design_json(const DesignRequest& q, const DesignResult& d) {
   json j;
   j["units"] = "si";
@@ -89,9 +93,11 @@ json design_json(const DesignRequest& q, const DesignResult& d) {
   j["requirement"] = q.tolerance == 0 ? "accumulation" : "tolerance";
   // The object and friction the design is for (montecarlo --design reads them back).
   j["request"] = {{"mass_kg", q.mass}, {"width_m", q.width}, {"mu", q.mu}, {"c_mu", q.c_mu},
-                  {"g_m_per_s2", q.gravity}, {"mu_static", number_or_null(q.mu_static)},
-                  {"mu_backward", number_or_null(q.mu_backward)}, {"distance_m", q.distance},
+                  {"g_m_per_s2", q.gravity}, {"mu_static", optional_json(q.mu_static)},
+                  {"mu_backward", optional_json(q.mu_backward)}, {"distance_m", q.distance},
                   {"tolerance_m", q.tolerance}};
+  // The law's coefficients (absolute) and their ratios to mu, as every report gives them.
+  j["law"] = law_json(friction_law(q), OutputUnits{}, q.mu);
   j["candidates"] = d.candidates;
   j["feasible_candidates"] = d.feasible_candidates;
   return j;
@@ -132,13 +138,13 @@ void run_design(const DesignFlags& f) {
     throw InvalidParameter("monte-carlo", f.monte_carlo_runs, "must be in [0, 1e7]");
   const ProcessUncertainty uncertainty = f.uncertainty.read();
   const DesignRequest& q = f.request;
-  bool any_uncertain = false;
-  for (const UncertainInput& in : uncertain_inputs())
-    any_uncertain = any_uncertain || is_uncertain(uncertainty.*in.member);
+  warn_about_request(q, f.mu_given);
+  if (f.moving_mass) warn_if_grams("--moving-mass", *f.moving_mass);
+  const bool uncertain = any_uncertain(uncertainty);
   json report;
   DesignResult d;
   if (f.robust) {
-    if (!any_uncertain)
+    if (!uncertain)
       throw InvalidParameter("uncertain", "none",
                              "--robust needs at least one --uncertain input (or --uncertainty-file)");
     validate(q);
@@ -168,7 +174,7 @@ void run_design(const DesignFlags& f) {
     if (!d.feasible) throw std::runtime_error("design infeasible: " + d.message);
     report = design_json(q, d);
     if (f.monte_carlo_runs > 0) {
-      if (!any_uncertain)
+      if (!uncertain)
         throw InvalidParameter("monte-carlo", f.monte_carlo_runs,
                                "needs at least one --uncertain input (or --uncertainty-file)");
       MonteCarloOptions mo;
@@ -179,7 +185,7 @@ void run_design(const DesignFlags& f) {
                                                f.robust_options.time_quantile, 20);
     }
   }
-  if (any_uncertain) report["uncertainty"] = uncertainty_json(q, uncertainty);
+  if (uncertain) report["uncertainty"] = uncertainty_json(q, uncertainty);
   report["fragility"] = fragility_json(fragility(q, process_of(d), f.fragility_level));
   report["warnings"] = report["fragility"]["warnings"];
   std::string csv;
@@ -264,7 +270,8 @@ void add_design_command(CLI::App& app) {
                   "mass the actuator moves [kg], > 0: adds force_n = mass x y'' to the profile "
                   "CSV (inertial force; friction and the part's reaction excluded)")
       ->group("Output");
-  sub->callback([f] {
+  sub->callback([f, sub] {
+    f->mu_given = sub->count("--mu") > 0;
     // One period has sample_rate / frequency rows; the slowest allowed frequency bounds it.
     constexpr double kMaxRows = 1e7;
     const double f_min = f->request.frequency_min;  // design_process checks it itself

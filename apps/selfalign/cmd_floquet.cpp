@@ -60,7 +60,7 @@ json floquet_json(const ProfileModel& model, const FloquetAnalysis& a, double fd
       model.three_phase && !model.jerk && model.law.is_unit()
           ? number_or_null(slip_slip_multiplier(model.three_phase->a2, model.three_phase->a3))
           : json(nullptr);
-  j["law"] = law_json(model.law, model.output_units());
+  j["law"] = law_json(model.law, model.output_units(), model.scales.mu());
   j["pattern"] = a.steady.pattern;
   j["method"] = to_string(a.steady.method);
   j["integrator"] = integrator_json(a.steady.method, model.integrator, a.steady.integrator);

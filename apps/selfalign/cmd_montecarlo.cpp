@@ -10,6 +10,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include <CLI/CLI.hpp>
 
@@ -25,16 +26,17 @@ namespace {
 
 using nlohmann::json;
 
+// The process flags as given: none where a flag was not given (then the --design report's
+// value, or an error naming the flag). A value given is checked, whatever it is: NaN included.
+struct ProcessFlags {
+  std::optional<double> period, stroke, a2, a3, jerk, x_mu;
+};
+
 struct MonteCarloFlags {
   DesignRequest request;
   UncertaintyFlags uncertainty;
   std::optional<std::string> design_file;
-  Process process{std::numeric_limits<double>::quiet_NaN(),
-                  std::numeric_limits<double>::quiet_NaN(),
-                  std::numeric_limits<double>::quiet_NaN(),
-                  std::numeric_limits<double>::quiet_NaN(),
-                  std::numeric_limits<double>::infinity(),
-                  std::numeric_limits<double>::quiet_NaN()};
+  ProcessFlags process;
   MonteCarloOptions options;
   bool worst = false;
   WorstCaseOptions worst_options;
@@ -45,13 +47,14 @@ struct MonteCarloFlags {
   std::set<std::string> given;  // request flags given on the command line
 };
 
-// The request keys of a design report and the flags that override them.
+// The request keys of a design report and the flags that override them: a number, or an
+// optional coefficient (null in the report: equal to mu).
 struct RequestKey {
   const char* key;
   const char* flag;
-  double DesignRequest::*field;
+  std::variant<double DesignRequest::*, std::optional<double> DesignRequest::*> field;
 };
-constexpr RequestKey kRequestKeys[] = {
+const RequestKey kRequestKeys[] = {
     {"mass_kg", "--mass", &DesignRequest::mass},
     {"width_m", "--width", &DesignRequest::width},
     {"mu", "--mu", &DesignRequest::mu},
@@ -63,9 +66,26 @@ constexpr RequestKey kRequestKeys[] = {
     {"tolerance_m", "--tolerance", &DesignRequest::tolerance},
 };
 
+// The library's names of the process (validate(Process)) as the flags that set them.
+constexpr UserName kProcessFlagNames[] = {
+    {"period", "period-s"}, {"stroke", "stroke-m"}, {"x_mu", "x-mu"}};
+
+// The process given by flags alone (no --design): every flag but --jerk is required.
+Process process_from_flags(const ProcessFlags& f) {
+  const auto need = [](const std::optional<double>& v, const char* flag) {
+    if (!v)
+      throw InvalidParameter(flag, "none",
+                             "must be given (or --design FILE, a `selfalign design` report)");
+    return *v;
+  };
+  return {need(f.period, "period-s"), need(f.stroke, "stroke-m"), need(f.a2, "a2"),
+          need(f.a3, "a3"), f.jerk.value_or(std::numeric_limits<double>::infinity()),
+          need(f.x_mu, "x-mu")};
+}
+
 // The process of a `design` report (its profile and x_mu) and the object and friction it was
 // designed for (its `request`); flags given explicitly win.
-Process read_design(const std::string& path, const Process& flags, DesignRequest& request,
+Process read_design(const std::string& path, const ProcessFlags& flags, DesignRequest& request,
                     const std::set<std::string>& given) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InvalidParameter("design", path, "must be a readable design report (JSON)");
@@ -94,18 +114,22 @@ Process read_design(const std::string& path, const Process& flags, DesignRequest
                ? p["jerk_m_per_s3"].get<double>()
                : std::numeric_limits<double>::infinity();
   r.x_mu = number(j, "x_mu_m");
-  const auto keep = [](double flag, double file) { return std::isnan(flag) ? file : flag; };
-  r.period = keep(flags.period, r.period);
-  r.stroke = keep(flags.stroke, r.stroke);
-  r.a2 = keep(flags.a2, r.a2);
-  r.a3 = keep(flags.a3, r.a3);
-  r.x_mu = keep(flags.x_mu, r.x_mu);
-  if (!std::isinf(flags.jerk)) r.jerk = flags.jerk;
+  r.period = flags.period.value_or(r.period);
+  r.stroke = flags.stroke.value_or(r.stroke);
+  r.a2 = flags.a2.value_or(r.a2);
+  r.a3 = flags.a3.value_or(r.a3);
+  r.x_mu = flags.x_mu.value_or(r.x_mu);
+  r.jerk = flags.jerk.value_or(r.jerk);
   if (j.contains("request") && j["request"].is_object())
     for (const RequestKey& k : kRequestKeys) {
       const json& v = j["request"].value(k.key, json());
       if (given.count(k.flag) || !(v.is_number() || v.is_null())) continue;
-      request.*k.field = v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
+      if (const auto* number = std::get_if<double DesignRequest::*>(&k.field)) {
+        if (v.is_number()) request.**number = v.get<double>();
+      } else {
+        request.*std::get<std::optional<double> DesignRequest::*>(k.field) =
+            v.is_null() ? std::nullopt : std::optional<double>(v.get<double>());
+      }
     }
   return r;
 }
@@ -118,9 +142,16 @@ void run_monte_carlo(const MonteCarloFlags& f) {
   if (f.bins < 1 || f.bins > 10'000) throw InvalidParameter("bins", f.bins, "must be in [1, 1e4]");
   DesignRequest q = f.request;
   const Process p = f.design_file ? read_design(*f.design_file, f.process, q, f.given)
-                                  : f.process;
-  validate(p);
+                                  : process_from_flags(f.process);
+  with_user_names(kProcessFlagNames, [&] { validate(p); });
+  warn_about_request(q, f.given.count("--mu") > 0 || f.design_file.has_value());
   const ProcessUncertainty u = f.uncertainty.read();
+  // Without an uncertain input every run would be the nominal one: say so rather than run it
+  // --runs times (docs/cli.md, montecarlo).
+  if (!any_uncertain(u))
+    throw InvalidParameter("uncertain", "none",
+                           "montecarlo needs an uncertain input (--uncertain NAME=DIST or "
+                           "--uncertainty-file); without one every run is the nominal run");
   MonteCarloOptions o = f.options;
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
@@ -185,7 +216,7 @@ void add_montecarlo_command(CLI::App& app) {
                   "request it was designed for (width, mu, c_mu, g, mu-static, mu-backward, "
                   "distance, tolerance, mass); flags given here override them")
       ->type_name("FILE")->group("Process");
-  Process& p = f->process;
+  ProcessFlags& p = f->process;
   sub->add_option("--period-s", p.period, "table period [s]")->group("Process");
   sub->add_option("--stroke-m", p.stroke, "table stroke [m]")->group("Process");
   sub->add_option("--a2", p.a2, "y2'' [m/s^2]")->group("Process");

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "warnings.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/design/optimize.hpp"
@@ -32,7 +33,10 @@ struct OptimizeFlags {
   OptimizeOptions options;
   bool as_json = false, quiet = false;
   std::optional<std::string> out;
-  double static_ratio = 1, backward_ratio = 1;  // the law, relative to the forward kinetic
+  // The law's coefficients, absolute as everywhere (docs/config.md "Friction law").
+  double mu = 0.3;
+  std::optional<double> mu_static, mu_backward;
+  bool mu_given = false;  // --mu on the command line
 };
 
 json result_json(const OptimizationResult& r) {
@@ -50,32 +54,20 @@ json result_json(const OptimizationResult& r) {
 }
 
 // The library's names of the limits and options, as the flags that set them.
-InvalidParameter with_flag_names(const InvalidParameter& e) {
-  static const std::pair<const char*, const char*> kFlags[] = {
-      {"max_velocity", "velocity-max"}, {"max_acceleration", "acceleration-max"},
-      {"max_jerk", "jerk-max"}, {"mu_static", "static-ratio"},
-      {"mu_kinetic", "static-ratio"}, {"mu_kinetic_backward", "backward-ratio"},
-      {"mu_static, mu_kinetic", "static-ratio"},
-      {"mu_static, mu_kinetic_backward", "backward-ratio"},
-      {"max_evaluations", "max-evaluations"}};
-  for (const auto& [library, flag] : kFlags)
-    if (e.name() == library) return InvalidParameter(flag, e.value(), e.allowed());
-  return e;
-}
+constexpr UserName kFlagNames[] = {{"max_velocity", "velocity-max"},
+                                   {"max_acceleration", "acceleration-max"},
+                                   {"max_jerk", "jerk-max"},
+                                   {"max_evaluations", "max-evaluations"},
+                                   {"mu_static", "mu-static"},
+                                   {"mu_backward", "mu-backward"}};
 
 void run_optimize(OptimizeFlags& f) {
-  try {
+  with_user_names(kFlagNames, [&] {
     validate(f.limits);
-    if (!(f.static_ratio >= 1 && f.static_ratio >= f.backward_ratio))
-      throw InvalidParameter("static-ratio", f.static_ratio,
-                             "must be >= 1 and >= backward-ratio = " +
-                                 format_number(f.backward_ratio) +
-                                 " (the static coefficient is >= the kinetic ones)");
-    f.options.law = FrictionLaw(f.static_ratio, 1.0, f.backward_ratio);
+    f.options.law = law_of_coefficients(f.mu, f.mu_static, f.mu_backward);
     validate(f.options);
-  } catch (const InvalidParameter& e) {
-    throw with_flag_names(e);
-  }
+  });
+  warn_default_mu(f.mu_given, f.mu, f.mu_static, f.mu_backward);
   if (f.out) require_output_path("out", *f.out);
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   f.options.progress = [&bar](int done, int total) {
@@ -97,7 +89,7 @@ void run_optimize(OptimizeFlags& f) {
                    {"max_velocity", f.limits.max_velocity},
                    {"max_acceleration", f.limits.max_acceleration},
                    {"max_jerk", number_or_null(f.limits.max_jerk)}}},
-                 {"law", law_json(f.options.law, OutputUnits{})},
+                 {"law", law_json(f.options.law, OutputUnits{}, f.mu)},
                  {"results", json::array()}};
   TextTable table;
   for (const OptimizationResult& r : results) {
@@ -127,11 +119,14 @@ void add_optimize_command(CLI::App& app) {
                   "jerk limit |d3y/dt3| [-], > 0: the three-phase family uses ramps at this jerk, the "
                   "piecewise-constant one (jumps) is infeasible, a Fourier optimum is checked. "
                   "Default: none");
-  sub->add_option("--static-ratio", f->static_ratio,
-                  "static friction coefficient / mu_1 (the forward kinetic one) [-], >= 1 and "
-                  ">= --backward-ratio. Default: 1");
-  sub->add_option("--backward-ratio", f->backward_ratio,
-                  "kinetic coefficient of backward slip / mu_1 [-], > 0. Default: 1");
+  sub->add_option("--mu", f->mu,
+                  "kinetic friction coefficient mu_1 [-], > 0: the unit of the law's "
+                  "coefficients (the optimisation itself is dimensionless). Default: 0.3");
+  sub->add_option("--mu-static", f->mu_static,
+                  "static friction coefficient [-] (absolute, like --mu), >= mu and "
+                  ">= mu-backward; the law's static ratio is mu-static/mu. Default: mu");
+  sub->add_option("--mu-backward", f->mu_backward,
+                  "kinetic coefficient of backward slip [-] (absolute), > 0. Default: mu");
   sub->add_option("--order", f->options.order, "Fourier order N, in [1, 100]. Default: 12");
   sub->add_option("--segments", f->options.segments, "K of piecewise-constant, in [2, 64]. Default: 4");
   sub->add_option("--starts", f->options.starts, "multi-starts, in [1, 1000]. Default: 8");
@@ -144,7 +139,10 @@ void add_optimize_command(CLI::App& app) {
   sub->add_flag("--json", f->as_json, "print the report as JSON");
   sub->add_flag("--quiet", f->quiet, "no progress bar");
   sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
-  sub->callback([f] { run_optimize(*f); });
+  sub->callback([f, sub] {
+    f->mu_given = sub->count("--mu") > 0;
+    run_optimize(*f);
+  });
 }
 
 }  // namespace selfalign::cli

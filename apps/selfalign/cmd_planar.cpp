@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "warnings.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/planar_config.hpp"
@@ -139,11 +140,21 @@ void run_steady(const PlanarFlags& f) {
   r["drift_change_between_windows"] = si.velocity(res.change);
   r["census"] = census_json(res.census);
   r["end_pose"] = pose_json(res.end_pose, si);
+  // The drift is a window average: a steady state only if the friction under the part stayed
+  // the same while it was taken (until the contact core replaces the window average).
+  r["level_under_part"] = {{"min", res.level_min}, {"max", res.level_max}};
+  r["level_changed_in_window"] = res.level_changed();
+  if (res.level_changed())
+    warn("planar steady: the friction level under the part changed from " +
+         format_number(res.level_min) + " to " + format_number(res.level_max) +
+         " inside the averaging windows (it met the field's region): drift and rotation rate "
+         "are no steady state; start elsewhere ([run] pose) or change [run] transient, window");
   TextTable t;
   t.row("drift velocity x, y [" + si.u("m/s", "-") + "]", table_text(r["drift_x"]) + ", " + table_text(r["drift_y"]));
   t.row("rotation rate [" + si.u("rad/s", "-") + "]", table_text(r["rotation_rate"]));
   t.row("change between windows [" + si.u("m/s", "-") + "]", table_text(r["drift_change_between_windows"]));
   t.row("stick fraction", table_text(r["census"]["stick_fraction"]));
+  t.row("level changed in window", table_text(r["level_changed_in_window"]));
   std::string csv;
   if (f.csv) csv = "drift_x,drift_y,rotation_rate\n" + csv_number(r["drift_x"]) + "," + csv_number(r["drift_y"]) + "," + csv_number(r["rotation_rate"]) + "\n";
   deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv);

@@ -59,7 +59,7 @@ json steady_json(const ProfileModel& model, const std::optional<SteadyState>& st
   j["case_a_priori"] = paper_three_phase(model)
                            ? json(static_cast<int>(predict_case(*model.three_phase)))
                            : json(nullptr);
-  j["law"] = law_json(model.law, model.output_units());
+  j["law"] = law_json(model.law, model.output_units(), model.scales.mu());
   for (const char* key : {"v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
                           "periods", "method", "pattern", "integrator"})
     j[key] = nullptr;

@@ -56,7 +56,7 @@ json stop_json(const SimulateModel& model, const StoppingOptions& o, const Stopp
   const bool stopped = r.kind != StopKind::not_stopped;
   j["stop"] = to_string(r.kind);
   j["accumulation_proven"] = r.kind == StopKind::accumulation && r.accumulation_proven;
-  j["law"] = law_json(model.law, model.output_units());
+  j["law"] = law_json(model.law, model.output_units(), model.scales.mu());
   // The solver of the run: the exact one, or the slip integrator for a Stribeck/viscous law.
   j["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   j["end_position"] = stopped ? json(u.length(r.end_position)) : json(nullptr);

@@ -1,5 +1,7 @@
 #include "config_flags.hpp"
 
+#include "warnings.hpp"
+
 namespace selfalign::cli {
 namespace {
 
@@ -66,7 +68,9 @@ SimulateConfig read_config(const ConfigFlags& flags) {
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (flags.options[i] && flags.options[i]->count() > 0)
       set_simulate_config_value(overrides, keys[i].name, flags.values[i]);
-  return merge(config, overrides);
+  const SimulateConfig given = merge(config, overrides);
+  warn_about_config(given);  // printed only if the run succeeds
+  return given;
 }
 
 }  // namespace selfalign::cli

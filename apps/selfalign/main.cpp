@@ -2,6 +2,7 @@
 // as exactly one line "selfalign: error: <message>" on stderr with exit code 2.
 
 #include <charconv>
+#include <cmath>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -9,6 +10,9 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "typo_hint.hpp"
+#include "warnings.hpp"
+#include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
 
 namespace {
@@ -52,11 +56,31 @@ const CLI::Validator kRepresentable(
     },
     "", "Representable");
 
+// Every number given to a flag is a finite number within ±1e50 (error.hpp, kMaxMagnitude),
+// whether the run uses the flag or not: NaN is never "not given" (a flag not given is), and
+// 1e60 and inf are typos or probes. Each flag's own range is checked where it is used.
+CLI::Validator moderate_number(const std::string& flag) {
+  return CLI::Validator(
+      [flag](std::string& value) {
+        double v = 0;
+        const char* begin = value.data() + (!value.empty() && value[0] == '+');
+        const auto [end, ec] = std::from_chars(begin, value.data() + value.size(), v);
+        if (ec == std::errc() && end == value.data() + value.size() &&
+            !(std::abs(v) <= selfalign::kMaxMagnitude))
+          throw selfalign::InvalidParameter(flag, value,
+                                            "must be a finite number with |value| <= 1e50");
+        return std::string();  // not a number: the option's own conversion says so
+      },
+      "", "ModerateNumber");
+}
+
 void guard_values(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     if (option->get_type_size() == 0) continue;  // a flag takes no value
     option->check(kNotEmpty);
     option->check(kRepresentable);
+    if (option->get_type_name() == "FLOAT" || option->get_type_name() == "NUMBER")
+      option->check(moderate_number(option->get_name()));
     if (option->get_type_name() == "FILE") option->check(kNotAFlag);
     if (option->get_type_name() == "INT" || option->get_type_name() == "UINT") {
       // CLI11's own refusal ("Could not convert") names no range: name it from the help text.
@@ -90,6 +114,7 @@ constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_design_command,
     &selfalign::cli::add_montecarlo_command,
     &selfalign::cli::add_planar_command,
+    &selfalign::cli::add_completion_command,  // hidden: completion bash|zsh, man
 };
 
 }  // namespace
@@ -109,11 +134,16 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {  // --help, --version: print and exit 0
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    return report_error(e.what());
+    // An unknown subcommand or flag: name the one that was most likely meant.
+    const bool unknown = dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr ||
+                         dynamic_cast<const CLI::RequiredError*>(&e) != nullptr;
+    const std::string hint = unknown ? selfalign::cli::typo_hint(app, argc, argv) : "";
+    return report_error(hint.empty() ? e.what() : hint);
   } catch (const std::exception& e) {  // selfalign::InvalidParameter and everything else
     return report_error(e.what());
   } catch (...) {
     return report_error("unknown failure");
   }
+  selfalign::cli::print_warnings();
   return 0;
 }

@@ -5,6 +5,7 @@
 #include "report.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/uncertainty_file.hpp"
+#include "warnings.hpp"
 
 namespace selfalign::cli {
 
@@ -16,7 +17,9 @@ void add_request_flags(CLI::App* sub, DesignRequest& q) {
   };
   num("--mass", q.mass, "object mass [kg] (reported only).");
   num("--width", q.width, "object width = transition width [m], > 0.");
-  num("--mu", q.mu, "low-friction coefficient mu_1 [-], > 0.");
+  num("--mu", q.mu,
+      "low-friction coefficient mu_1 [-], the kinetic one: --mu-static and --mu-backward are "
+      "taken relative to it, > 0.");
   num("--c-mu", q.c_mu, "friction ratio mu_2/mu_1 of the stopping region [-], > 1.");
   num("--g", q.gravity, "gravitational acceleration [m/s^2].");
   num("--distance", q.distance, "desired end position from the start [m], > 0.");
@@ -30,10 +33,12 @@ void add_request_flags(CLI::App* sub, DesignRequest& q) {
                   "(jerk-limited three-phase profile). Default: none (jump accelerations)")
       ->group("Request");
   sub->add_option("--mu-static", q.mu_static,
-                  "static friction coefficient [-], >= mu. Default: mu")
+                  "static friction coefficient [-], absolute like --mu (give --mu with it), "
+                  ">= mu. Default: mu")
       ->group("Request");
   sub->add_option("--mu-backward", q.mu_backward,
-                  "kinetic friction coefficient of backward slip [-], <= mu-static. Default: mu")
+                  "kinetic friction coefficient of backward slip [-], absolute like --mu, "
+                  "<= mu-static. Default: mu")
       ->group("Request");
   num("--tolerance", q.tolerance,
       "allowed positioning error Δx_d [m]; 0 requires accumulation (Δx_d = 0).");
@@ -65,6 +70,21 @@ void add_uncertainty_flags(CLI::App* sub, UncertaintyFlags& f) {
                   "a JSON or TOML file of NAME = \"DIST\" pairs; --uncertain overrides it")
       ->type_name("FILE")
       ->group("Uncertainty");
+}
+
+void warn_about_request(const DesignRequest& q, bool mu_given) {
+  warn_default_mu(mu_given, q.mu, q.mu_static, q.mu_backward);
+  warn_if_millimetres("--width", q.width, 1);
+  warn_if_millimetres("--stroke-max", q.stroke_max, 1);
+  warn_if_millimetres("--tolerance", q.tolerance, 1);
+  warn_if_millimetres("--distance", q.distance, 10);
+  warn_if_grams("--mass", q.mass);
+}
+
+bool any_uncertain(const ProcessUncertainty& u) {
+  for (const UncertainInput& in : uncertain_inputs())
+    if (is_uncertain(u.*in.member)) return true;
+  return false;
 }
 
 json uncertainty_json(const DesignRequest& q, const ProcessUncertainty& u) {

@@ -26,6 +26,13 @@ struct UncertaintyFlags {
   ProcessUncertainty read() const;
 };
 void add_uncertainty_flags(CLI::App* sub, UncertaintyFlags& flags);
+/// The warnings (warnings.hpp) a request may deserve: mu_static or mu_backward without --mu,
+/// lengths that look like millimetres (width, stroke-max, tolerance >= 1 m; distance >= 10 m),
+/// a mass that looks like grams (>= 10 kg).
+void warn_about_request(const DesignRequest& request, bool mu_given);
+
+/// Whether any input of `u` is uncertain (not known).
+bool any_uncertain(const ProcessUncertainty& u);
 
 nlohmann::json uncertainty_json(const DesignRequest& request, const ProcessUncertainty& u);
 nlohmann::json fragility_json(const Fragility& f);

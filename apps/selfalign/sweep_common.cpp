@@ -115,13 +115,13 @@ SweepPaths resolve_sweep_paths(const SimulateConfig& config) {
 void write_sweep_outputs(const SweepPaths& paths, const std::string& csv, nlohmann::json summary,
                          const ProfileModel& model) {
   summary["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
-  summary["law"] = law_json(model.law, model.output_units());
+  summary["law"] = law_json(model.law, model.output_units(), model.scales.mu());
   // Every cell's solver: the exact ones, or the slip integrator under a Stribeck/viscous law.
   summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   const std::string summary_text = summary.dump(2) + "\n";
   AtomicFileSet files;
-  if (paths.csv) files.add(*paths.csv, csv);
-  if (paths.summary) files.add(*paths.summary, summary_text);
+  if (paths.csv) files.add(*paths.csv, csv, "out");
+  if (paths.summary) files.add(*paths.summary, summary_text, "summary");
   files.commit();
   if (!paths.csv) std::cout << csv << std::flush;
   if (paths.summary_to_stdout) std::cout << summary_text << std::flush;

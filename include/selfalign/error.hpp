@@ -5,8 +5,10 @@
 /// Expected outcomes (a non-physical "case 0" profile, a run that sticks) are values the caller
 /// branches on; misuse (a negative width, c_mu <= 1, NaN) throws InvalidParameter.
 
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace selfalign {
 
@@ -49,5 +51,31 @@ double require_moderate(const std::string& name, double value);
 double require_positive_moderate(const std::string& name, double value);
 /// Throws InvalidParameter unless value is finite and lo < value <= hi.
 double require_in_half_open(const std::string& name, double value, double lo, double hi);
+
+/// A library parameter's name and the name its user gave it (a flag, a config key, a file's
+/// key), so that a message names what the user typed: {"accels", "accelerations"},
+/// {"load_fractions", "part.loads"}.
+struct UserName {
+  std::string_view library, user;
+};
+
+/// `e` naming what the user gave: each comma-separated part of its name ("mu_static,
+/// mu_kinetic") that is a library name of `names`, or such a name with an index ("accels[2]"),
+/// becomes the user's name (with the same index); other parts get `prefix` before them
+/// (e.g. "table.x." for a file's section). Value and allowed range are kept.
+InvalidParameter renamed(const InvalidParameter& e, std::span<const UserName> names,
+                         std::string_view prefix = {});
+
+/// Runs `f()`, and rethrows an InvalidParameter it throws as renamed(e, names, prefix): the
+/// one place a front end maps the library's parameter names to its own.
+template <class F>
+decltype(auto) with_user_names(std::span<const UserName> names, F&& f,
+                               std::string_view prefix = {}) {
+  try {
+    return f();
+  } catch (const InvalidParameter& e) {
+    throw renamed(e, names, prefix);
+  }
+}
 
 }  // namespace selfalign

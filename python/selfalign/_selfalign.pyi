@@ -1042,8 +1042,8 @@ class DesignRequest:
     stroke_grid: int
     entries: int
     jerk_max: float
-    mu_static: float
-    mu_backward: float
+    mu_static: Optional[float]
+    mu_backward: Optional[float]
     @overload
     def __init__(self) -> None: ...
     @overload
@@ -1067,8 +1067,8 @@ class DesignRequest:
         stroke_grid: int = 3,
         entries: int = 40,
         jerk_max: float = ...,
-        mu_static: float = ...,
-        mu_backward: float = ...,
+        mu_static: Optional[float] = None,
+        mu_backward: Optional[float] = None,
     ) -> None: ...
     def to_dict(self) -> dict[str, Any]: ...
 

@@ -2,6 +2,9 @@
 #include "selfalign/design/process_design.hpp"
 
 #include <limits>
+#include <optional>
+
+#include <pybind11/stl.h>
 
 #include "arrays.hpp"
 #include "selfalign/design/actuator_samples.hpp"
@@ -27,7 +30,8 @@ resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc");
                        double distance, double stroke_max, double frequency_min,
                        double frequency_max, double velocity_max, double acceleration_max,
                        double tolerance, int acceleration_grid, int period_grid, int stroke_grid,
-                       int entries, double jerk_max, double mu_static, double mu_backward) {
+                       int entries, double jerk_max, std::optional<double> mu_static,
+                       std::optional<double> mu_backward) {
              DesignRequest q;
              q.mass = mass, q.width = width, q.mu = mu, q.c_mu = c_mu, q.gravity = gravity;
              q.distance = distance, q.stroke_max = stroke_max;
@@ -47,13 +51,15 @@ resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc");
            py::arg("acceleration_grid") = d.acceleration_grid,
            py::arg("period_grid") = d.period_grid, py::arg("stroke_grid") = d.stroke_grid,
            py::arg("entries") = d.entries, py::arg("jerk_max") = d.jerk_max,
-           py::arg("mu_static") = d.mu_static, py::arg("mu_backward") = d.mu_backward)
+           py::arg("mu_static") = py::none(), py::arg("mu_backward") = py::none())
       .def_readwrite("jerk_max", &DesignRequest::jerk_max,
                      "table jerk limit [m/s^3] (inf: jump accelerations)")
       .def_readwrite("mu_static", &DesignRequest::mu_static,
-                     "static friction coefficient [-] (NaN: equal to mu)")
+                     "static friction coefficient [-], absolute like mu, >= mu (None: equal to "
+                     "mu; NaN is refused)")
       .def_readwrite("mu_backward", &DesignRequest::mu_backward,
-                     "kinetic coefficient of backward slip [-] (NaN: equal to mu)")
+                     "kinetic coefficient of backward slip [-], absolute like mu (None: equal "
+                     "to mu; NaN is refused)")
       .def_readwrite("mass", &DesignRequest::mass, "object mass [kg]")
       .def_readwrite("width", &DesignRequest::width, "object width [m]")
       .def_readwrite("mu", &DesignRequest::mu, "low-friction coefficient mu_1 [-]")

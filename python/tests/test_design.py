@@ -1,6 +1,8 @@
 """design_process from Python: a feasible design meets the limits and its replay settles in
 the band at the predicted time (within one table period); infeasible requests explain why."""
 
+import pickle
+
 import numpy as np
 import pytest
 
@@ -42,3 +44,20 @@ def test_design_misuse_raises():
     with pytest.raises(sa.InvalidParameter) as e:
         sa.design_process(small(width=-1.0))
     assert e.value.name == "width"
+
+
+def test_absent_coefficients_are_none_and_nan_is_refused():
+    """issue 20, D29: a coefficient not given is None (static = kinetic), never NaN; NaN is
+    refused naming it, like any other bad number."""
+    req = small()
+    assert req.mu_static is None and req.mu_backward is None
+    assert req.to_dict()["mu_static"] is None
+    again = pickle.loads(pickle.dumps(small(mu_static=0.36)))
+    assert again.mu_static == 0.36 and again.mu_backward is None
+    for field in ("mu_static", "mu_backward"):
+        with pytest.raises(sa.InvalidParameter) as e:
+            sa.design_process(small(**{field: float("nan")}))
+        assert e.value.name == field
+    req.mu_static = 0.36
+    req.mu_static = None
+    assert req.mu_static is None

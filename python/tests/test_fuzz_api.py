@@ -218,7 +218,8 @@ CATALOGUE = [
     ("r = sa.DesignRequest(); r.acceleration_grid = 4; r.period_grid = 2; r.stroke_grid = 1; r.entries = 3; "
      "r.{attr} = {value}; result = sa.design_process(r, threads={threads}, progress={progress})",
      {"attr": (["width", "mu", "c_mu", "gravity", "distance", "stroke_max", "frequency_min", "frequency_max",
-                "velocity_max", "acceleration_max", "tolerance", "mass"], [], []),
+                "velocity_max", "acceleration_max", "tolerance", "mass", "mu_static",
+                "mu_backward"], [], []),
       "value": FL("0.01", "0.3"), "threads": THREADS, "progress": PROGRESS}, "design"),
     ("r = sa.DesignRequest(); r.acceleration_grid = 4; r.period_grid = 2; r.stroke_grid = 1; r.entries = 3; "
      "r.{attr} = {value}; result = sa.design_process(r)",

@@ -50,17 +50,7 @@ void validate(const DesignRequest& q) {
 }
 
 FrictionLaw friction_law(const DesignRequest& q) {
-  const double s = std::isnan(q.mu_static) ? q.mu : q.mu_static;
-  const double back = std::isnan(q.mu_backward) ? q.mu : q.mu_backward;
-  require_positive_moderate("mu_static", s);
-  require_positive_moderate("mu_backward", back);
-  if (!(s >= q.mu))
-    throw InvalidParameter("mu_static", s, "must be >= mu = " + format_number(q.mu) +
-                                               " (the static coefficient is >= the kinetic one)");
-  if (!(s >= back))
-    throw InvalidParameter("mu_backward", back, "must be <= mu_static = " + format_number(s) +
-                                                    " (the static coefficient is >= the kinetic one)");
-  return FrictionLaw(s / q.mu, 1.0, back / q.mu);
+  return law_of_coefficients(q.mu, q.mu_static, q.mu_backward);
 }
 
 std::unique_ptr<TableProfile> recommended_profile(const DesignResult& r) {

@@ -58,4 +58,25 @@ std::string FrictionLaw::describe() const {
   return s;
 }
 
+FrictionLaw law_of_coefficients(double mu, std::optional<double> mu_static,
+                                std::optional<double> mu_backward) {
+  require_positive_moderate("mu", mu);
+  const double s = require_positive_moderate("mu_static", mu_static.value_or(mu));
+  const double back = require_positive_moderate("mu_backward", mu_backward.value_or(mu));
+  if (!(s >= mu))
+    throw InvalidParameter("mu_static", s, "must be >= mu = " + format_number(mu) +
+                                               " (the static coefficient is >= the kinetic one)");
+  if (!(s >= back))
+    throw InvalidParameter("mu_backward", back,
+                           "must be <= mu_static = " + format_number(s) +
+                               " (the static coefficient is >= the kinetic one)");
+  // The ratios FrictionLaw holds stay within [1e-50, 1e50] (its own range).
+  if (!(s <= kMaxMagnitude * mu))
+    throw InvalidParameter("mu_static", s, "must be <= 1e50 mu = " + format_number(kMaxMagnitude * mu));
+  if (!(back >= mu / kMaxMagnitude))
+    throw InvalidParameter("mu_backward", back,
+                           "must be >= 1e-50 mu = " + format_number(mu / kMaxMagnitude));
+  return FrictionLaw(s / mu, 1.0, back / mu);
+}
+
 }  // namespace selfalign

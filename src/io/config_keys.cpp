@@ -6,6 +6,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/simulate_config.hpp"
+#include "selfalign/io/spelling.hpp"
 
 namespace selfalign {
 namespace {
@@ -76,11 +77,12 @@ const ConfigKey kKeys[] = {
     {"c_mu", &C::c_mu, D::none, "[-]", "[-]", "friction",
      "friction ratio c_mu = mu_2/mu_1 (two-region), > 1"},
     {"mu_static", &C::mu_static, D::none, "[-]", "[-]", "law",
-     "static friction coefficient, >= mu and mu_backward (default: mu, static = kinetic); it "
-     "holds a part at rest: stick while |y''| <= mu_static/mu m(x)"},
+     "static friction coefficient, absolute like mu (give mu with it), >= mu and mu_backward "
+     "(default: mu, static = kinetic); it holds a part at rest: stick while |y''| <= "
+     "mu_static/mu m(x)"},
     {"mu_backward", &C::mu_backward, D::none, "[-]", "[-]", "law",
-     "kinetic friction coefficient of backward slip (x' < 0), > 0 (default: mu; the forward "
-     "one is mu)"},
+     "kinetic friction coefficient of backward slip (x' < 0), absolute like mu, > 0 (default: "
+     "mu; the forward one is mu)"},
     {"stribeck_velocity", &C::stribeck_velocity, D::velocity, "[-]", "[m/s]", "law",
      "Stribeck velocity v_s, > 0: the kinetic coefficient falls from mu_static at rest to mu "
      "(mu_backward) as mu + (mu_static - mu) exp(-(|x'|/v_s)^delta) (default: none, Coulomb); "
@@ -91,7 +93,9 @@ const ConfigKey kKeys[] = {
      "viscous friction rate c >= 0: a force -m c x' while slipping (default: none); solved by "
      "the slip integrator"},
     {"mu", &C::mu, D::none, "[-]", "[-]", "scales",
-     "low-friction coefficient mu_1; with g and length_scale sets T = sqrt(L/(mu g)), > 0"},
+     "low-friction coefficient mu_1, the kinetic coefficient of forward slip: in every run the "
+     "unit of mu_static and mu_backward (their ratios to mu); in SI runs, with g and "
+     "length_scale, T = sqrt(L/(mu g)), > 0"},
     {"g", &C::g, D::none, "[m/s^2]", "[m/s^2]", "scales", "gravitational acceleration, > 0"},
     {"length_scale", &C::length_scale, D::none, "[m]", "[m]", "scales",
      "characteristic length L of the dimensionless model, > 0"},
@@ -159,30 +163,11 @@ std::string simulate_config_key_list() {
 }
 
 std::string unknown_config_key_hint(std::string_view name) {
-  // The key with the smallest edit distance (Levenshtein), when it is a plausible typo.
-  std::string_view best;
-  std::size_t best_distance = std::string_view::npos;
-  for (const ConfigKey& key : kKeys) {
-    const std::string_view k = key.name;
-    std::vector<std::size_t> row(k.size() + 1);
-    for (std::size_t j = 0; j <= k.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= name.size() && i <= 64; ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= k.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1,
-                           diagonal + (name[i - 1] == k[j - 1] ? 0u : 1u)});
-        diagonal = up;
-      }
-    }
-    if (row[k.size()] < best_distance) {
-      best_distance = row[k.size()];
-      best = k;
-    }
-  }
+  std::vector<std::string> names;
+  for (const ConfigKey& key : kKeys) names.emplace_back(key.name);
+  const std::string best = closest_name(name, names);
   std::string hint = "unknown key";
-  if (best_distance <= 2 && name.size() <= 64) hint += " (did you mean " + std::string(best) + "?)";
+  if (!best.empty()) hint += " (did you mean " + best + "?)";
   return hint + "; keys: units, method, profile, period, stroke, a2, a3, ..., every one in "
                 "docs/config.md and `selfalign simulate --help`";
 }

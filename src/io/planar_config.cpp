@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <set>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/simulate_config.hpp"  // Dimension, to_dimensionless
+#include "selfalign/io/spelling.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -30,8 +32,13 @@ class Section {
       : node_(node), name_(std::move(name)) {
     if (!node_.is_object()) throw InvalidParameter(name_, node_.dump(), "must be a table");
     for (const auto& [k, v] : node_.items())
-      if (!allowed.count(k))
-        throw InvalidParameter(key(k), "unknown key", "is not a key of [" + name_ + "]");
+      if (!allowed.count(k)) {
+        const std::string best =
+            closest_name(k, std::vector<std::string>(allowed.begin(), allowed.end()));
+        throw InvalidParameter(key(k), "unknown key",
+                               "is not a key of [" + name_ + "]" +
+                                   (best.empty() ? "" : " (did you mean " + best + "?)"));
+      }
   }
   std::string key(const std::string& k) const { return name_.empty() ? k : name_ + "." + k; }
   bool has(const std::string& k) const { return node_.contains(k); }
@@ -230,6 +237,41 @@ PlanarPose pose_from(const std::vector<double>& v, const std::string& key, const
   return {u.length(v[0]), u.length(v[1]), v[2]};
 }
 
+// The library's names of what a section builds, as the section's keys (messages name the key
+// the user wrote, with its section: "table.x.cos", "part.loads").
+struct SectionNames {
+  std::vector<std::string> users;
+  std::vector<UserName> names;
+  SectionNames(std::initializer_list<std::pair<std::string_view, std::string>> pairs) {
+    users.reserve(pairs.size());
+    for (const auto& [library, user] : pairs) users.push_back(user);
+    std::size_t i = 0;
+    for (const auto& [library, user] : pairs) names.push_back({library, users[i++]});
+  }
+  SectionNames(const SectionNames&) = delete;  // `names` views `users`
+};
+
+SectionNames axis_names(const std::string& k) {  // k = "table.x."
+  return {{"fourier coefficients", k + "cos, " + k + "sin"},
+          {"fourier order", k + "cos, " + k + "sin"},
+          {"fourier_cos", k + "cos"},
+          {"fourier_sin", k + "sin"}};
+}
+const SectionNames kPartNames{{"load_fractions", "part.loads"},
+                              {"points", "part.xs, part.ys, part.loads"},
+                              {"point x", "part.xs"},
+                              {"point y", "part.ys"},
+                              {"polygon vertex x", "part.xs"},
+                              {"polygon vertex y", "part.ys"},
+                              {"polygon", "part.xs, part.ys"}};
+const SectionNames kFrictionNames{{"mu_static", "friction.static"},
+                                  {"mu_kinetic", "friction.kinetic"}};
+const SectionNames kScalesNames{{"length_scale", "scales.length"}};
+const SectionNames kFieldNames{{"centre_x", "field.centre"}, {"centre_y", "field.centre"},
+                               {"origin_x", "field.origin"}, {"origin_y", "field.origin"}};
+const SectionNames kRunNames{{"step", "run.step"}, {"theta", "run.theta"},
+                             {"inertia", "part.inertia"}};
+
 }  // namespace
 
 PlanarSetup load_planar_config(const std::string& path) {
@@ -248,7 +290,10 @@ PlanarSetup load_planar_config(const std::string& path) {
     return Section(doc.contains(name) ? doc.at(name) : empty, name, std::move(keys));
   };
   const Section sc = section("scales", {"length", "mu", "g"});
-  st.scales = Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81));
+  st.scales = with_user_names(
+      kScalesNames.names,
+      [&] { return Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81)); },
+      "scales.");
   const Units u{st.si, st.scales};
   const Section table = section("table", {"x", "y", "rotation"});
   const std::set<std::string> profile_keys{"profile", "period", "stroke", "a2", "a3", "jerk", "cos", "sin"};
@@ -256,7 +301,10 @@ PlanarSetup load_planar_config(const std::string& path) {
   for (const char* axis : {"x", "y", "rotation"}) {
     if (!table.has(axis)) continue;
     const Section p(table.raw(axis), std::string("table.") + axis, profile_keys);
-    st.profiles.push_back(make_profile(p, u, std::string(axis) == "rotation"));
+    const SectionNames names = axis_names(p.key(""));
+    st.profiles.push_back(with_user_names(
+        names.names, [&] { return make_profile(p, u, std::string(axis) == "rotation"); },
+        p.key("")));
     const TableProfile* ptr = st.profiles.back().get();
     (std::string(axis) == "x" ? m.first : std::string(axis) == "y" ? m.second : m.rotation) = ptr;
   }
@@ -271,14 +319,24 @@ PlanarSetup load_planar_config(const std::string& path) {
   st.problem.part.inertia = st.si ? inertia / (st.mass * st.scales.length() * st.scales.length()) : inertia;
   if (!(inertia > 0) || !std::isfinite(inertia))
     throw InvalidParameter("part.inertia", inertia, "must be finite and > 0");
-  st.problem.part.patch = make_patch(part, u);
+  st.problem.part.patch =
+      with_user_names(kPartNames.names, [&] { return make_patch(part, u); }, "part.");
   const Section fr = section("friction", {"static", "kinetic"});
   const double kinetic = fr.number("kinetic", 1.0);
-  st.problem.law = FrictionLaw(fr.number("static", kinetic), kinetic);
-  st.problem.field = make_field(section("field", {"type", "level", "origin", "centre", "angle",
-                                                  "width", "half_width", "half_length", "radius",
-                                                  "c_mu", "dx", "dy", "nx", "ny", "levels"}),
-                                u);
+  st.problem.law = with_user_names(
+      kFrictionNames.names, [&] { return FrictionLaw(fr.number("static", kinetic), kinetic); },
+      "friction.");
+  const Section field = section("field", {"type", "level", "origin", "centre", "angle", "width",
+                                          "half_width", "half_length", "radius", "c_mu", "dx",
+                                          "dy", "nx", "ny", "levels"});
+  st.problem.field = with_user_names(
+      kFieldNames.names,
+      [&] {
+        PlanarField f = make_field(field, u);
+        validate(f);
+        return f;
+      },
+      "field.");
   const Section run = section("run", {"step", "theta", "periods", "pose", "twist", "every",
                                       "transient", "window"});
   st.problem.options.step = u.time(run.required("step"));
@@ -314,7 +372,7 @@ PlanarSetup load_planar_config(const std::string& path) {
   } else {
     st.entries.push_back(st.pose);
   }
-  validate(st.problem);
+  with_user_names(kRunNames.names, [&] { validate(st.problem); });
   return st;
 }
 

@@ -169,13 +169,11 @@ SimulateConfig to_dimensionless(const SimulateConfig& config, const Scales& scal
 }
 
 namespace {
-// No number of a config is beyond ±1e50 (error.hpp, kMaxMagnitude): such a value is a typo or a
-// probe, and it would overflow the motion it describes. NaN is left to the checks that name the
-// allowed range of each key.
+// Every number of a config is a finite number within ±1e50 (error.hpp, kMaxMagnitude), whether
+// the run uses its key or not: beyond, a value is a typo or a probe and would overflow the
+// motion it describes; NaN and ±inf are refused alike (never read as "not given").
 void require_moderate_numbers(const SimulateConfig& c) {
-  auto check = [](std::string_view name, double v) {
-    if (!std::isnan(v)) require_moderate(std::string(name), v);
-  };
+  auto check = [](std::string_view name, double v) { require_moderate(std::string(name), v); };
   for (const ConfigKey& key : simulate_config_keys()) {
     if (const auto* f = std::get_if<NumberField>(&key.field); f && (c.**f)) check(key.name, *(c.**f));
     if (const auto* f = std::get_if<NumberListField>(&key.field); f && (c.**f))

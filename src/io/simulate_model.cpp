@@ -74,7 +74,12 @@ FrictionField load_field(const SimulateConfig& c, UnitSystem units, const Scales
   if (!c.field_file)
     throw InvalidParameter("field_file", "none",
                            "must name a CSV file of 'position,level' rows when friction = field");
-  const FrictionField field = FrictionField::from_csv(*c.field_file, *c.field_interpolation);
+  // The field's own parameter "interpolation" is the key field_interpolation here (the
+  // samples profile's key is interpolation).
+  constexpr UserName kFieldNames[] = {{"interpolation", "field_interpolation"}};
+  const FieldInterpolation interpolation = with_user_names(
+      kFieldNames, [&] { return parse_field_interpolation(*c.field_interpolation); });
+  const FrictionField field = FrictionField::from_csv(*c.field_file, interpolation);
   if (units == UnitSystem::dimensionless) return field;
   std::vector<FieldNode> nodes(field.nodes().begin(), field.nodes().end());
   for (FieldNode& n : nodes) n.position = scales.length_from_si(n.position);
@@ -102,18 +107,7 @@ std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c, UnitSystem u
 
 FrictionLaw friction_law(const SimulateConfig& c) {
   const SimulateConfig r = resolve_simulate_config(c);
-  const double mu = require_positive("mu", *r.mu);
-  const double s = r.mu_static.value_or(mu), back = r.mu_backward.value_or(mu);
-  require_positive("mu_static", s);
-  require_positive("mu_backward", back);
-  if (!(s >= mu))
-    throw InvalidParameter("mu_static", s, "must be >= mu = " + format_number(mu) +
-                                               " (the static coefficient is >= the kinetic one)");
-  if (!(s >= back))
-    throw InvalidParameter("mu_backward", back,
-                           "must be <= mu_static = " + format_number(s) +
-                               " (the static coefficient is >= the kinetic one)");
-  FrictionLaw law(s / mu, 1.0, back / mu);
+  FrictionLaw law = law_of_coefficients(*r.mu, r.mu_static, r.mu_backward);
   if (r.stribeck_velocity) law = law.with_stribeck(*r.stribeck_velocity, *r.stribeck_exponent);
   if (r.viscous) law = law.with_viscous(*r.viscous);
   return law;

@@ -85,9 +85,12 @@ json scales_json(const SimulateModel& m) {
 
 }  // namespace
 
-json law_json(const FrictionLaw& law, const OutputUnits& u) {
+json law_json(const FrictionLaw& law, const OutputUnits& u, double mu) {
   const bool stribeck = law.stribeck_velocity() > 0;
-  return {{"static", law.static_coefficient()},  // ratios to mu [-]
+  return {{"mu", mu},  // the coefficients as given (absolute) [-]
+          {"mu_static", mu * law.static_coefficient()},
+          {"mu_backward", mu * law.kinetic_backward()},
+          {"static", law.static_coefficient()},  // ratios to mu [-]
           {"kinetic_forward", law.kinetic_forward()},
           {"kinetic_backward", law.kinetic_backward()},
           {"stribeck_velocity", stribeck ? json(u.velocity(law.stribeck_velocity())) : json(nullptr)},
@@ -115,7 +118,7 @@ json simulate_summary_json(const SimulateModel& model, const SimulationResult& r
   j["method"] = to_string(result.method);  // integrator where exact met a speed-dependent law
   j["profile"] = profile_json(*model.profile, u);
   j["friction"] = friction_json(*model.friction, u);
-  j["law"] = law_json(model.law, u);
+  j["law"] = law_json(model.law, u, model.scales.mu());
   j["initial"] = state_json(model.initial, u);
   j["final"] = state_json(result.final_state, u);
   j["periods"] = model.periods;

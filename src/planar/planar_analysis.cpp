@@ -19,6 +19,26 @@ struct CensusSink : PlanarStepSink {
   void on_step(const PlanarRigidState& s) override { census.add(s.mode); }
 };
 
+// The patch's mean friction level at each step's pose: the load-weighted field level under the
+// contact points, its least and largest value over the steps seen.
+struct LevelSink : PlanarStepSink {
+  const PlanarField& field;
+  const ContactPatch& patch;
+  CensusSink* census = nullptr;  // also counts the steps' modes when given
+  double lo = INFINITY, hi = -INFINITY;
+  LevelSink(const PlanarField& f, const ContactPatch& p) : field(f), patch(p) {}
+  void on_step(const PlanarRigidState& s) override {
+    const double c = std::cos(s.pose.angle), sn = std::sin(s.pose.angle);
+    double level = 0;
+    for (const ContactPoint& r : patch)
+      level += r.load * planar_level(field, s.pose.x + c * r.x - sn * r.y,
+                                     s.pose.y + sn * r.x + c * r.y);
+    lo = std::min(lo, level);
+    hi = std::max(hi, level);
+    if (census) census->on_step(s);
+  }
+};
+
 std::string compact(double v) {
   char text[32];
   std::snprintf(text, sizeof text, "%.3g", v);
@@ -79,10 +99,12 @@ PlanarSteadyResult planar_steady(const PlanarProblem& p, const PlanarPose& pose,
   PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
   run_periods(p, s, transient_periods);
   const PlanarPose a = s.pose;
-  run_periods(p, s, window_periods);
+  LevelSink levels(p.field, p.part.patch);
+  run_periods(p, s, window_periods, &levels);
   const PlanarPose b = s.pose;
   CensusSink census;
-  run_periods(p, s, window_periods, &census);
+  levels.census = &census;
+  run_periods(p, s, window_periods, &levels);
   PlanarSteadyResult r;
   r.drift_x = (s.pose.x - b.x) / span;
   r.drift_y = (s.pose.y - b.y) / span;
@@ -90,6 +112,8 @@ PlanarSteadyResult planar_steady(const PlanarProblem& p, const PlanarPose& pose,
   r.change = std::hypot(r.drift_x - (b.x - a.x) / span, r.drift_y - (b.y - a.y) / span);
   r.census = census.census;
   r.end_pose = s.pose;
+  r.level_min = levels.lo;
+  r.level_max = levels.hi;
   return r;
 }
 

@@ -123,8 +123,8 @@ PiecewisePolynomialProfile PiecewisePolynomialProfile::from_breakpoints(
     std::string kind) {
   if (times.size() != accels.size() || times.size() < 2)
     throw InvalidParameter("times", static_cast<double>(times.size()),
-                           "times and accels must be of equal length >= 2 (" +
-                               std::to_string(accels.size()) + " accels)");
+                           "times and accelerations must be of equal length >= 2 (" +
+                               std::to_string(accels.size()) + " accelerations)");
   if (times[0] != 0.0) throw InvalidParameter("times[0]", times[0], "must be 0");
   for (std::size_t i = 1; i < times.size(); ++i)
     if (!(times[i] > times[i - 1]) || !std::isfinite(times[i]))
@@ -135,13 +135,27 @@ PiecewisePolynomialProfile PiecewisePolynomialProfile::from_breakpoints(
     throw InvalidParameter("period", period,
                            "must be finite and > the last breakpoint " + format_number(times.back()));
   const std::size_t n = times.size();
+  for (std::size_t i = 0; i < n; ++i)
+    require_moderate("accelerations[" + std::to_string(i) + "]", accels[i]);
   std::vector<double> d(n), a(n), b(n);
   for (std::size_t i = 0; i < n; ++i) {
-    d[i] = (i + 1 < n ? times[i + 1] : period) - times[i];
+    const double end = i + 1 < n ? times[i + 1] : period;
+    d[i] = end - times[i];
     a[i] = accels[i];
     b[i] = accels[(i + 1) % n];
+    // The jerk between two breakpoints is their acceleration change over their gap: a gap too
+    // short for the change is the user's breakpoint (or period), not the accelerations.
+    if (a[i] != b[i] && !(std::abs(b[i] - a[i]) / d[i] <= kMaxMagnitude)) {
+      const std::string end_name = i + 1 < n ? "times[" + std::to_string(i + 1) + "]" : "period";
+      throw InvalidParameter(end_name, end,
+                             "is too close to times[" + std::to_string(i) + "] = " +
+                                 format_number(times[i]) + " for the acceleration change " +
+                                 format_number(b[i] - a[i]) + " (the jerk, change / gap, must be " +
+                                 "<= 1e50: a gap >= " +
+                                 format_number(std::abs(b[i] - a[i]) / kMaxMagnitude) + ")");
+    }
   }
-  return build(d, a, b, std::move(kind), "accels", "accels");
+  return build(d, a, b, std::move(kind), "accelerations", "accelerations");
 }
 
 TableState PiecewisePolynomialProfile::state(double t) const {

@@ -55,6 +55,7 @@ MonteCarloResult monte_carlo(const DesignRequest& q, const Process& p,
   validate(q);
   validate(p);
   validate(u);
+  validate_draws(q, p, u);
   if (o.runs < 1 || o.runs > 10'000'000)
     throw InvalidParameter("runs", o.runs, "must be in [1, 1e7]");
   if (o.max_periods < 1 || o.max_periods > 10'000'000)

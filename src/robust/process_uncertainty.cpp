@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -12,7 +15,7 @@ namespace selfalign {
 namespace {
 
 double static_ratio_of(const DesignRequest& q) {
-  return std::isnan(q.mu_static) ? 1.0 : q.mu_static / q.mu;
+  return q.mu_static.value_or(q.mu) / q.mu;
 }
 
 const std::array<UncertainInput, kUncertainInputs> kInputs{{
@@ -123,8 +126,17 @@ void validate(const Process& p) {
                            "(case 0: the table cannot reach the stroke)");
 }
 
-ProcessOutcome run_process(const DesignRequest& q, const Process& p, const InputValues& v,
-                           int max_periods) {
+namespace {
+
+// One draw's model, dimensionless with L = the drawn width (so w = 1).
+struct ProcessModel {
+  Scales scales;
+  std::unique_ptr<TableProfile> profile;
+  FrictionLaw law;
+  TwoRegionFriction friction;
+};
+
+ProcessModel process_model(const DesignRequest& q, const Process& p, const InputValues& v) {
   const double mu = v[0], c_mu = v[1], ratio = v[2], width = v[3], offset = v[4];
   const double amplitude = v[5], period_factor = v[6];
   const Scales sc(width, mu, q.gravity);
@@ -142,9 +154,73 @@ ProcessOutcome run_process(const DesignRequest& q, const Process& p, const Input
     profile = std::make_unique<JerkLimitedThreePhaseProfile>(
         JerkLimitedThreePhaseParameters{tp.period, tp.stroke, tp.a2, tp.a3, jerk});
   }
-  const double backward = std::isnan(q.mu_backward) ? 1.0 : q.mu_backward / q.mu;
-  const FrictionLaw law(ratio, 1.0, std::min(backward, ratio));
-  const TwoRegionFriction friction(sc.length_from_si(p.x_mu + offset), 1.0, c_mu);
+  const double backward = q.mu_backward.value_or(q.mu) / q.mu;
+  return {sc, std::move(profile), FrictionLaw(ratio, 1.0, std::min(backward, ratio)),
+          TwoRegionFriction(sc.length_from_si(p.x_mu + offset), 1.0, c_mu)};
+}
+
+// Whether the model takes the draw `v`; else what it refused, in its own (model) terms.
+std::optional<InvalidParameter> refusal(const DesignRequest& q, const Process& p,
+                                        const InputValues& v) {
+  try {
+    process_model(q, p, v);
+  } catch (const InvalidParameter& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+// What the model refused, after "give no process the model takes".
+std::string refused(const InvalidParameter& e) {
+  return " (in units of the drawn width, " + e.name() + " = " + e.value() + ": " + e.allowed() +
+         ")";
+}
+
+}  // namespace
+
+void validate_draws(const DesignRequest& q, const Process& p, const ProcessUncertainty& u) {
+  const InputValues nominal = nominal_inputs(q, u);
+  std::vector<std::size_t> uncertain;
+  std::array<std::pair<double, double>, kUncertainInputs> ends{};
+  for (std::size_t k = 0; k < kInputs.size(); ++k) {
+    const Distribution& d = u.*kInputs[k].member;
+    ends[k] = {nominal[k], nominal[k]};
+    if (!is_uncertain(d)) continue;
+    uncertain.push_back(k);
+    ends[k] = box(d, 0, kDrawSigmas);
+    // One input at a time, at either end of its draws: the message names it.
+    for (const bool upper : {false, true}) {
+      InputValues v = nominal;
+      v[k] = upper ? ends[k].second : ends[k].first;
+      if (const auto e = refusal(q, p, v))
+        throw InvalidParameter(std::string(kInputs[k].name) + (upper ? ".upper" : ".lower"), v[k],
+                               "draws this far give no process the model takes" + refused(*e));
+    }
+  }
+  // Every corner of the box (at most 2^7 models, each a closed form): a combination of draws.
+  if (uncertain.size() < 2) return;
+  for (std::size_t corner = 0; corner < (std::size_t{1} << uncertain.size()); ++corner) {
+    InputValues v = nominal;
+    std::string names, values;
+    for (std::size_t i = 0; i < uncertain.size(); ++i) {
+      const std::size_t k = uncertain[i];
+      v[k] = (corner >> i) & 1 ? ends[k].second : ends[k].first;
+      names += (i ? ", " : "") + std::string(kInputs[k].name);
+      values += (i ? ", " : "") + format_number(v[k]);
+    }
+    if (const auto e = refusal(q, p, v))
+      throw InvalidParameter(names, values,
+                             "these draws together give no process the model takes" + refused(*e));
+  }
+}
+
+ProcessOutcome run_process(const DesignRequest& q, const Process& p, const InputValues& v,
+                           int max_periods) {
+  const ProcessModel m = process_model(q, p, v);
+  const Scales& sc = m.scales;
+  const TableProfile* profile = m.profile.get();
+  const FrictionLaw& law = m.law;
+  const TwoRegionFriction& friction = m.friction;
   StoppingOptions so;
   so.max_periods = max_periods;
   so.fractions = {0.999};  // accumulation "arrives" 0.999 of the way (as design_process)

@@ -39,6 +39,7 @@ WorstCase worst_case(const DesignRequest& q, const Process& p, const ProcessUnce
   validate(q);
   validate(p);
   validate(u);
+  validate_draws(q, p, u);
   if (!(o.sigmas > 0 && o.sigmas <= 8)) throw InvalidParameter("sigmas", o.sigmas, "must be in (0, 8]");
   if (o.interior_points < 0 || o.interior_points > 100'000)
     throw InvalidParameter("interior_points", o.interior_points, "must be in [0, 1e5]");

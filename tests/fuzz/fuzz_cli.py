@@ -47,6 +47,7 @@ from clifuzz.generate import generate  # noqa: E402
 from clifuzz.report import print_failures, print_summary, tally  # noqa: E402
 from clifuzz.reproducer import reproducer  # noqa: E402
 from clifuzz.runner import Runner, run_cases  # noqa: E402
+from clifuzz.vocabulary import drift_from_help  # noqa: E402
 
 DEFAULT_SEED = 20100601
 DEFAULT_CASES = 2000
@@ -105,6 +106,10 @@ def main():
         print(f"fuzz_cli: no executable at {args.binary}", file=sys.stderr)
         return 2
 
+    drift = drift_from_help(args.binary)
+    if drift:
+        print("fuzz_cli: the vocabulary differs from --help:\n  " + "\n  ".join(drift), file=sys.stderr)
+        return 1
     args.workroot = tempfile.mkdtemp(prefix="selfalign-fuzz-")
     runner = Runner(args)
     results, skipped, elapsed = run_cases(runner, indices, seed, args.jobs, args.budget,

@@ -15,6 +15,7 @@
 
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,10 +44,11 @@ struct DesignRequest {
   /// Table jerk limit [m/s^3], > 0: every switch of the profile becomes a ramp at this jerk
   /// (the jerk-limited three-phase profile); +inf: the paper's jump accelerations.
   double jerk_max = std::numeric_limits<double>::infinity();
-  /// Static friction coefficient [-], >= mu and mu_backward; NaN: equal to mu.
-  double mu_static = std::numeric_limits<double>::quiet_NaN();
-  /// Kinetic coefficient of backward slip [-], > 0; NaN: equal to mu.
-  double mu_backward = std::numeric_limits<double>::quiet_NaN();
+  /// Static friction coefficient [-] (absolute, like mu), >= mu and mu_backward; none: equal
+  /// to mu. A NaN is refused (validate), never read as "not given".
+  std::optional<double> mu_static;
+  /// Kinetic coefficient of backward slip [-] (absolute, like mu), > 0; none: equal to mu.
+  std::optional<double> mu_backward;
   double tolerance = 0;            ///< allowed Δx_d~ [m]; 0: require accumulation (Δx_d = 0)
   int acceleration_grid = 24;      ///< candidates per acceleration axis, in [2, 200]
   int period_grid = 6;             ///< candidate periods, in [1, 100]
@@ -58,8 +60,8 @@ struct DesignRequest {
 /// 1e50]).
 void validate(const DesignRequest& request);
 
-/// The request's friction law in model units (ratios to mu). Throws InvalidParameter naming
-/// mu_static or mu_backward.
+/// The request's friction law in model units (ratios to mu): law_of_coefficients(mu,
+/// mu_static, mu_backward). Throws InvalidParameter naming mu, mu_static or mu_backward.
 FrictionLaw friction_law(const DesignRequest& request);
 
 struct DesignResult {

@@ -24,6 +24,7 @@
 /// Modelled on Drake's CoulombFriction(static, dynamic), which also refuses a dynamic
 /// coefficient above the static one.
 
+#include <optional>
 #include <string>
 
 namespace selfalign {
@@ -78,5 +79,15 @@ class FrictionLaw {
   double static_ = 1.0, forward_ = 1.0, backward_ = 1.0;
   double stribeck_velocity_ = 0.0, exponent_ = 1.0, viscous_ = 0.0;
 };
+
+/// The law of absolute friction coefficients, the convention of every front end (docs/config.md,
+/// "Friction law"): FrictionLaw(mu_static/mu, 1, mu_backward/mu).
+/// \param mu the kinetic coefficient mu_1 of forward slip [-], the model's unit, in [1e-50, 1e50].
+/// \param mu_static the static coefficient [-], >= mu and >= mu_backward; none: mu.
+/// \param mu_backward the kinetic coefficient of backward slip [-], > 0; none: mu.
+/// Each coefficient is checked as given, before the ratios are formed, and a failure names it
+/// ("mu", "mu_static", "mu_backward") with its value and range.
+FrictionLaw law_of_coefficients(double mu, std::optional<double> mu_static,
+                                std::optional<double> mu_backward);
 
 }  // namespace selfalign

@@ -128,8 +128,8 @@ SimulateConfig simulate_config_defaults();
 /// message>) for an unreadable or malformed file. Values are not range-checked here.
 SimulateConfig load_simulate_config(const std::string& path);
 
-/// Sets one key from command-line text (numbers as C-locale text, "nan" allowed and rejected
-/// later; arrays comma-separated: "0.3,0.2,0.5"). Throws InvalidParameter for an unknown key
+/// Sets one key from command-line text (numbers as C-locale text, "nan" parsed and refused by
+/// resolve_simulate_config, whatever the key; arrays comma-separated: "0.3,0.2,0.5"). Throws InvalidParameter for an unknown key
 /// or text that is not of the key's type.
 void set_simulate_config_value(SimulateConfig& config, std::string_view key,
                                const std::string& text);
@@ -149,7 +149,9 @@ SimulateConfig to_si(const SimulateConfig& config, const Scales& scales);
 SimulateConfig to_dimensionless(const SimulateConfig& config, const Scales& scales);
 
 /// Every key set: unset keys take their defaults in the run's unit system (SI defaults are the
-/// dimensionless ones converted with the run's scales). Validates units, mu, g, length_scale.
+/// dimensionless ones converted with the run's scales). Validates units, mu, g, length_scale,
+/// and that every number given (used by the run or not) is finite and within ±1e50: NaN and
+/// ±inf are refused naming their key.
 /// out, summary and samples stay unset when not given.
 SimulateConfig resolve_simulate_config(const SimulateConfig& config);
 

@@ -15,10 +15,11 @@
 namespace selfalign {
 
 /// The summary of `result`, a run of `model`. trajectory_file: the CSV written, or none (null).
-/// The friction law as JSON: static, kinetic_forward, kinetic_backward (ratios to mu [-]),
-/// stribeck_velocity [-] | [m/s], stribeck_exponent [-] and viscous [-] | [1/s] (null when the
-/// law has none).
-nlohmann::json law_json(const FrictionLaw& law, const OutputUnits& units);
+/// The friction law as JSON: the coefficients mu (the kinetic one, the model's unit), mu_static,
+/// mu_backward [-] (absolute, as given) and their ratios static, kinetic_forward,
+/// kinetic_backward to mu [-]; stribeck_velocity [-] | [m/s], stribeck_exponent [-] and viscous
+/// [-] | [1/s] (null when the law has none). `law` is in model units (ratios to `mu`).
+nlohmann::json law_json(const FrictionLaw& law, const OutputUnits& units, double mu);
 
 /// The slip integrator's provenance: stepper, tolerances, steps, rejected steps, right-hand-side
 /// evaluations and events; null unless method is Method::integrator.

@@ -49,10 +49,19 @@ struct PlanarSteadyResult {
   double change = 0;  ///< |drift(last window) - drift(window before)| [-]: the transient's trace
   PlanarCensus census;              ///< over the last window
   PlanarPose end_pose;
+  /// The least and largest mean friction level under the patch (the load-weighted field level
+  /// at the contact points) over both windows [-]. Equal where the field is uniform along the
+  /// way; apart when the part met a friction change while the drift was averaged, and then the
+  /// drift and rotation rate are no steady state (level_changed()).
+  double level_min = 0, level_max = 0;
+  /// Whether the level under the patch changed during the windows (by more than 1e-9 of it).
+  bool level_changed() const noexcept { return level_max - level_min > 1e-9 * level_max; }
 };
 
 /// Runs `transient_periods` periods from (pose, twist) at t = 0, then two windows of
-/// `window_periods`; reports the last window's drift, spin and census.
+/// `window_periods`; reports the last window's drift, spin and census, and the range of the
+/// friction level under the patch over both windows (a window average is a steady state only
+/// where that level does not change).
 PlanarSteadyResult planar_steady(const PlanarProblem& problem, const PlanarPose& pose,
                                  const PlanarTwist& twist, int transient_periods,
                                  int window_periods);

@@ -54,8 +54,9 @@ class PiecewisePolynomialProfile final : public TableProfile {
 
   /// The piecewise-linear acceleration through the periodic breakpoints (times[i], accels[i])
   /// [-]: times strictly increasing from times[0] = 0, the period is `period` > times.back(),
-  /// and the acceleration returns to accels[0] at t = period (continuous, finite jerk). Throws
-  /// InvalidParameter naming "times", "period" or "accels" otherwise.
+  /// and the acceleration returns to accels[0] at t = period (continuous, finite jerk, at most
+  /// 1e50). Throws InvalidParameter naming "times[i]" (not increasing, or too close to the
+  /// previous breakpoint for its acceleration change), "period" or "accelerations[i]".
   static PiecewisePolynomialProfile from_breakpoints(std::span<const double> times,
                                                      std::span<const double> accels,
                                                      double period,

@@ -95,6 +95,14 @@ Process process_of(const DesignResult& design);
 /// Throws InvalidParameter naming the first field out of range.
 void validate(const Process& process);
 
+/// Checks, before any run, that every draw of `u` gives `process` a model (profile and friction
+/// map in units of the drawn width): each uncertain input at either end of its draws (a
+/// normal's to ~8.3 sd) with the others nominal, then every corner of the box. Throws
+/// InvalidParameter naming the input ("x_mu_offset.upper", "width.lower") or, for a corner,
+/// the inputs together, with what the model refused. monte_carlo and worst_case call it.
+void validate_draws(const DesignRequest& request, const Process& process,
+                    const ProcessUncertainty& u);
+
 /// How one run ended, SI.
 struct ProcessOutcome {
   StopKind kind = StopKind::not_stopped;

@@ -24,6 +24,10 @@ class Case:
         self.inputs = set()    # candidate inputs: those the final command line reads never change
         self.config_inputs = {}  # config path -> samples path named inside it
         self.config_outputs = set()  # (path, key): out / summary named inside a config file
+        # What the contract says this case must do beyond the general checks (checks.py):
+        # ("refused", flag): exit 2 naming the flag; ("runs",): exit 0; ("hint",): exit 2 with
+        # a "did you mean" suggestion. None: only the general contract.
+        self.expect = None
 
     def argv(self):
         return self.sub + [t for u in self.units for t in u]
@@ -81,4 +85,5 @@ def clone(case):
     c.tags, c.big = list(case.tags), case.big
     c.inputs, c.config_outputs = set(case.inputs), set(case.config_outputs)
     c.config_inputs = dict(case.config_inputs)
+    c.expect = case.expect
     return c

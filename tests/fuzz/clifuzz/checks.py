@@ -9,7 +9,7 @@ import signal
 
 from .content import check_csv, check_json
 from .contract import (DOCUMENTED_INTERNALS, GENERIC_NAMES, HELP_FLAGS, INTERNALS, PARAM_NAMES,
-                       PREFIX, SANITIZER_MARKERS)
+                       PREFIX, SANITIZER_MARKERS, WARNING_PREFIX)
 from .folder import describe, read_head
 from .vocabulary import CSV_SUMMARY_SUBS
 
@@ -121,6 +121,7 @@ def check(case, o, max_line):
 
     if o["timed_out"] or rc not in (0, 2):
         return f
+    f += check_expected(case, rc, stderr)
     if rc == 2:
         lines = stderr.split("\n")
         if not (stderr.endswith("\n") and len(lines) == 2):
@@ -151,8 +152,9 @@ def check(case, o, max_line):
         if changed:
             f.append(("unexpected-file", f"help/version wrote {', '.join(changed[:3])}"))
         return f
-    if stderr.strip():
-        f.append(("stderr-on-success", repr(stderr.strip().splitlines()[0][:160])))
+    noise = [ln for ln in stderr.strip().splitlines() if not ln.startswith(WARNING_PREFIX)]
+    if noise:
+        f.append(("stderr-on-success", repr(noise[0][:160])))
     for p in changed:
         if p in inputs or p.endswith(".tmp") or p in tmp:
             continue
@@ -181,6 +183,28 @@ def check(case, o, max_line):
     if sub == "simulate":
         f += check_simulate(case, o)
     return f
+
+
+def check_expected(case, rc, stderr):
+    """The outcome a single mutation with an expectation must have (Case.expect)."""
+    if case.expect is None or HELP_FLAGS & set(case.argv()):
+        return []
+    first = stderr.split("\n")[0]
+    kind = case.expect[0]
+    if kind == "refused":
+        flag = case.expect[1]
+        if rc == 0:
+            return [("invalid-accepted", f"--{flag} {case.value(flag)!r} ran (exit 0)")]
+        if flag not in first and flag.replace("-", "_") not in first:
+            return [("error-wrong-parameter", f"--{flag} {case.value(flag)!r}: {first[:200]!r}")]
+    elif kind == "runs" and rc == 2:
+        return [("valid-refused", repr(first[:200]))]
+    elif kind == "hint":
+        if rc == 0:
+            return [("typo-accepted", " ".join(case.argv())[:160])]
+        if "did you mean" not in first:
+            return [("no-suggestion", repr(first[:200]))]
+    return []
 
 
 def check_content(sub, where, data, case):

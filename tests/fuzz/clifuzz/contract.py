@@ -87,13 +87,14 @@ NULLABLE = {
     "sweep positioning": {"csv_file", "law.stribeck_velocity", "law.stribeck_exponent",
                           "law.viscous"},
     "optimize": {"law.stribeck_velocity", "law.stribeck_exponent", "law.viscous", "results.f", "results.v_bar", "results.max_jerk", "limits.max_jerk"},  # f, v_bar: infeasible results only (check_json); max_jerk: infinite (no limit, jumps)
-    # docs/cli.md "design": jerk null without a limit; fragility's end positions and shifts
+    # docs/cli.md "design": jerk null without a limit; law as for steady (no speed terms); fragility's end positions and shifts
     # null where a run with mu or c_mu off does not stop; T_p quantiles null (infinite) when
     # more runs than 1 - q never stop; end-position quantiles null when none stopped.
     "design": {"profile.jerk_m_per_s3", "fragility.end_m_with_c_mu_low_high",
                "fragility.end_m_with_mu_low_high", "fragility.end_shift_c_mu_m",
                "fragility.end_shift_mu_m", "fragility.end_nominal_m",
-               "robust.time_quantile_value_s", "request.mu_static", "request.mu_backward"}
+               "robust.time_quantile_value_s", "request.mu_static", "request.mu_backward",
+               "law.stribeck_velocity", "law.stribeck_exponent", "law.viscous"}
               | {f"{block}.process_time_quantiles_s.{q}" for block in ("monte_carlo", "robust.verification") for q in ("0.5", "0.9", "0.99")}
               | {f"{block}.end_position_quantiles_m.{q}" for block in ("monte_carlo", "robust.verification") for q in ("0.005", "0.05", "0.5", "0.95", "0.995")}
               | {"monte_carlo.process_time_at_quantile_s", "robust.verification.process_time_at_quantile_s"},
@@ -121,6 +122,9 @@ PARAM_NAMES = set(ALL_FLAGS) | {f.replace("-", "_") for f in ALL_FLAGS} | set(CO
 GENERIC_NAMES = ["fraction p", "config file", "config key", "output file", "output", "samples", "summary",
                  "subcommand", "argument", "design infeasible", "profile", "file", "input"]
 PREFIX = "selfalign: error: "
+# docs/cli.md "Errors": a run that goes ahead with something to know adds warning lines on
+# stderr (exit 0 only; an error is one line and no warning).
+WARNING_PREFIX = "selfalign: warning: "
 HELP_FLAGS = {"--help", "-h", "--version"}
 
 

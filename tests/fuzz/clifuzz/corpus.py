@@ -9,6 +9,8 @@ from .values import LONG_GARBAGE, VALID_SAMPLES_CONSTANT
 S_OK = repr(VALID_SAMPLES_CONSTANT.encode())
 CFG_TOML = repr(b"periods = 2.0\n")
 CFG_JSON = repr(b'{"periods": 2.0}\n')
+MC = ["montecarlo", "--period-s", "0.05", "--stroke-m", "0.0005", "--a2", "5", "--a3", "4", "--x-mu",
+      "0.05", "--distance", "0.055", "--tolerance", "0.001", "--runs", "20"]
 
 
 def _f(path, payload=None, kind="file"):
@@ -16,7 +18,7 @@ def _f(path, payload=None, kind="file"):
 
 
 CORPUS = [
-    # (tag, argv, files, inputs, big)
+    # (tag, argv, files, inputs, big[, expect]): expect as Case.expect
     ("no subcommand", [], [], [], False),
     ("--help", ["--help"], [], [], False),
     ("--version", ["--version"], [], [], False),
@@ -86,6 +88,36 @@ CORPUS = [
     ("repeated flag", ["steady", "--a2", "2", "--a2", "3"], [], [], False),
     ("--out= swallows a flag (D18)", ["steady", "--out=", "--json"], [], [], False),
     ("--summary= swallows a flag", ["converge", "--periods", "2", "--summary=", "--quiet"], [], [], False),
+    # issue 20: NaN is never "not given", unused keys are checked, messages name the user's
+    # flag, typos get a suggestion, a valid law runs everywhere (expectations: Case.expect)
+    ("design --mu-static nan (D29)", ["design", "--acceleration-grid", "4", "--period-grid", "2",
+                                      "--stroke-grid", "1", "--entries", "3", "--mu-static", "nan"],
+     [], [], False, ("refused", "mu-static")),
+    ("montecarlo --x-mu nan (D29)", MC + ["--uncertain", "mu=normal:0.3,3%", "--x-mu", "nan"], [], [],
+     False, ("refused", "x-mu")),
+    ("unused --width nan (D35)", ["steady", "--width", "nan"], [], [], False, ("refused", "width")),
+    ("unused --x0 1e60 (D35)", ["steady", "--x0", "1e60"], [], [], False, ("refused", "x0")),
+    ("unused --stroke-max nan", MC + ["--uncertain", "mu=normal:0.3,3%", "--stroke-max", "nan"], [],
+     [], False, ("refused", "stroke-max")),
+    ("--mu-backward 1e-300 (D32)", ["steady", "--mu-backward", "1e-300"], [], [], False,
+     ("refused", "mu-backward")),
+    ("--times gap 5e-324 (D32)", ["simulate", "--profile", "piecewise-linear", "--times", "0,5e-324",
+                                  "--accelerations", "1,-1", "--period", "1"], [], [], False,
+     ("refused", "times")),
+    ("--field-interpolation cubic (D32)", ["simulate", "--friction", "field", "--field-file", "f.csv",
+                                           "--field-interpolation", "cubic"],
+     [_f("f.csv", repr(b"0,1\n1,2\n"))], ["f.csv"], False, ("refused", "field-interpolation")),
+    ("subcommand typo", ["desing"], [], [], False, ("hint",)),
+    ("flag typo --c_mu", ["steady", "--c_mu", "2"], [], [], False, ("hint",)),
+    ("montecarlo nothing uncertain", MC, [], [], False, ("refused", "uncertain")),
+    ("--mu-static without --mu (F07)", ["steady", "--mu-static", "0.36", "--json"], [], [], False,
+     ("runs",)),
+    ("law on converge (D22)", ["converge", "--periods", "2", "--mu", "0.3", "--mu-static", "0.36",
+                               "--stribeck-velocity", "0.1", "--relative-tolerance", "1e-6"], [], [],
+     False, ("runs",)),
+    ("law on accuracy (D27)", ["accuracy", "--entries", "3", "--mu", "0.3", "--mu-static", "0.36",
+                               "--stribeck-velocity", "0.1", "--relative-tolerance", "1e-6"], [], [],
+     False, ("runs",)),
     # config files
     ("deep JSON (D01)", ["simulate", "--config", "deep.json"], [_f("deep.json", deep_expr("json", 100000))], ["deep.json"], False),
     ("deep TOML", ["steady", "--config", "deep.toml"], [_f("deep.toml", deep_expr("toml", 100000))], ["deep.toml"], False),
@@ -153,7 +185,7 @@ CORPUS = [
 
 
 def corpus_case(index, seed):
-    tag, argv, files, inputs, big = CORPUS[index]
+    tag, argv, files, inputs, big = CORPUS[index][:5]
     c = Case(index, seed)
     n = 2 if argv[:1] == ["sweep"] and len(argv) > 1 and not argv[1].startswith("-") else min(1, len(argv))
     if argv[:1] and argv[0].startswith("-"):
@@ -173,5 +205,6 @@ def corpus_case(index, seed):
         c.add_file(path, kind, payload)
     c.inputs = set(inputs)
     c.big = big
+    c.expect = CORPUS[index][5] if len(CORPUS[index]) > 5 else None
     c.tags = ["corpus: " + tag]
     return c

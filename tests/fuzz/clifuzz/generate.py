@@ -4,8 +4,8 @@ mutations."""
 
 from .case import Case
 from .corpus import CORPUS, corpus_case
-from .mutate_flags import (mutate_big, mutate_drop, mutate_equals, mutate_help, mutate_list,
-                           mutate_number, mutate_range, mutate_repeat, mutate_text,
+from .mutate_flags import (EXPECTING, mutate_big, mutate_drop, mutate_equals, mutate_help,
+                           mutate_list, mutate_number, mutate_range, mutate_repeat, mutate_text,
                            mutate_unknown, pool, time_stepping_for_simulate)
 from .mutate_inputs import mutate_config, mutate_samples
 from .mutate_outputs import ensure_samples, mutate_collision, output_flags
@@ -89,6 +89,10 @@ def generate(index, seed):
     sub = rng.choice(SUBCOMMANDS)
     c.sub = sub.split()
     c.units = [list(u) for u in BASE[sub]]
+    if rng.random() < 0.12:  # one mutation with an expected outcome, on the valid base
+        fn = rng.choices([f for f, _ in EXPECTING], [w for _, w in EXPECTING])[0]
+        fn(c, sub)
+        return c
     if sub in CONFIG_SUBS:
         choose_profile(c, sub)
     choose_outputs(c, sub)

@@ -2,7 +2,7 @@
 `--flag=` forms, dropped units, help, big requests."""
 
 from .values import (BIG, BIG_REQUESTS, COST, EDGE_INT, EDGE_LIST, EDGE_NUMBERS, EDGE_RANGE,
-                     EDGE_TEXT, SMALL_INVALID, VALID, VALID_SAMPLES_CONSTANT)
+                     EDGE_TEXT, LAWS, NAN_HUGE, SMALL_INVALID, VALID, VALID_SAMPLES_CONSTANT)
 from .vocabulary import FLAGS, KIND, SUBCOMMANDS
 
 
@@ -191,6 +191,74 @@ def mutate_big(c, sub):
         c.set(units[i][2:], units[i + 1] if i + 1 < len(units) else None)
     c.big = True
     c.tags.append("big " + " ".join(units))
+
+
+# ---- single mutations with an expected outcome (Case.expect, checked in checks.py) ----
+# Subcommands where a valid law on the valid base command must run (exit 0): every analysis
+# takes the law (README). Not design (an infeasible request is an error, docs/cli.md) nor
+# accumulation (D28: it takes the law or refuses its flags; docs/cli.md says which).
+LAW_MUST_RUN = {"simulate", "steady", "floquet", "converge", "stop", "accuracy",
+                "sweep accelerations", "sweep period", "sweep stroke", "sweep positioning",
+                "optimize", "montecarlo"}
+
+
+def nan_huge(c, sub):
+    """NaN or a number beyond ±1e50 on one number flag of `sub`, whether the run uses it or
+    not: exit 2 naming that flag (docs/cli.md "Errors"; D29, D35)."""
+    flag = c.rng.choice([f for f in FLAGS[sub] if KIND.get(f) == "num"])
+    v = c.rng.choice(NAN_HUGE)
+    c.set(flag, v, anywhere=True)
+    c.expect = ("refused", flag)
+    c.tags.append(f"--{flag} {v} (must be refused)")
+
+
+def law(c, sub):
+    """A valid friction law on a subcommand that lists the law flags: it runs (D22, D27)."""
+    laws = [u for u in LAWS if all(u[i][2:] in FLAGS[sub] for i in range(0, len(u), 2))]
+    if not laws:
+        return nan_huge(c, sub)
+    units = c.rng.choice(laws)
+    for i in range(0, len(units), 2):
+        c.set(units[i][2:], units[i + 1])
+    if sub in LAW_MUST_RUN:
+        c.expect = ("runs",)
+    c.tags.append("law " + " ".join(units))
+
+
+def typo_of(rng, word):
+    """`word` with one typo a user makes: two letters swapped, one dropped, '-' as '_'."""
+    kinds = ["swap", "drop"] + (["underscore"] * 2 if "-" in word else [])
+    kind = rng.choice(kinds)
+    if kind == "underscore":
+        return word.replace("-", "_")
+    i = rng.randrange(1, len(word) - 1)
+    if kind == "swap" and word[i] != word[i + 1]:
+        return word[:i] + word[i + 1] + word[i] + word[i + 2:]
+    return word[:i] + word[i + 1:]
+
+
+def typo(c, sub):
+    """A mistyped subcommand or flag: exit 2 with "did you mean ...?" (docs/cli.md)."""
+    rng = c.rng
+    names = [f for f in FLAGS[sub] if len(f) >= 5]
+    if rng.random() < 0.4 or not names:
+        i = len(c.sub) - 1  # the subcommand, or the sweep kind
+        wrong = typo_of(rng, c.sub[i])
+        if wrong in FLAGS or wrong in [s.split()[-1] for s in FLAGS]:
+            return nan_huge(c, sub)
+        c.sub[i] = wrong
+    else:
+        flag = rng.choice(names)
+        wrong = typo_of(rng, flag)
+        if wrong in FLAGS[sub]:
+            return nan_huge(c, sub)
+        unit = ["--" + wrong] if KIND.get(flag) == "bool" else ["--" + wrong, rng.choice(pool(sub, flag))]
+        c.units.insert(rng.randint(0, len(c.units)), unit)
+    c.expect = ("hint",)
+    c.tags.append("typo " + " ".join(c.sub) + (f" --{wrong}" if c.sub[-1] != wrong else ""))
+
+
+EXPECTING = [(nan_huge, 6), (law, 4), (typo, 2)]
 
 
 def short(s, n=40):

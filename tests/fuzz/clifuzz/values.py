@@ -39,6 +39,11 @@ VALID = {
     "stroke-max": ["0.002", "0.001"], "frequency-min": ["5", "10"],
     "frequency-max": ["50", "20"], "design:velocity-max": ["0.2", "0.5"],
     "design:acceleration-max": ["10", "20"], "tolerance": ["0", "1e-4"],
+    "jerk": ["50", "20"], "times": ["0,0.5", "0,0.3,0.6"], "field-interpolation": ["steps", "linear"],
+    "footprint": ["uniform", "point"], "mu-static": ["0.36", "0.3"], "mu-backward": ["0.25", "0.3"],
+    "stribeck-velocity": ["0.1", "0.3"], "stribeck-exponent": ["1", "2"], "viscous": ["0.1", "0"],
+    "relative-tolerance": ["1e-6", "1e-8"], "absolute-tolerance": ["1e-8", "1e-10"],
+    "design:jerk-max": ["3000", "1000"], "optimize:jerk-max": ["1e5", "3e4"], "montecarlo:jerk": ["3000"],
     "acceleration-grid": ["4", "3", "2"], "period-grid": ["2", "1"], "stroke-grid": ["1", "2"],
     "design:entries": ["3", "2"], "sample-rate": ["2000", "100"],
 }
@@ -71,6 +76,7 @@ LONG_GARBAGE = "9" * 3000
 EDGE_NUMBERS = [
     "0", "-0", "-1", "-2.5", "1e-300", "5e-324", "4.9e-324", "2.2250738585072014e-308", "1e-9",
     "1e308", "-1e308", "1.7976931348623157e308", "3e16", "9007199254740993", "nan", "-nan",
+    "1e60", "-1e60", "1e51",
     "NaN", "inf", "-inf", "Infinity", "1e999", "-1e999", "1e-999", "", " ", "abc", "1.5.2",
     "0x1p3", "0x10", "1e", "+2", "2 ", " 2", "1,2", "1_000", "--", "-", "true", "1/2", "\uff12",
     "\udcff\udcfe", LONG_GARBAGE, "-" + LONG_GARBAGE]
@@ -160,3 +166,18 @@ SAMPLES_VARIANTS = [
     ("hex", "0x0,1\n0.5,-1\n1,0\n"), ("negative-t", "-1,1\n0,-1\n1,0\n"),
     ("two-headers", "t,ydd\nt,ydd\n0,1\n0.5,-1\n1,0\n"), ("bom", "\ufefft,ydd\n0,1\n0.5,-1\n1,0\n"),
 ]
+
+# NaN or beyond ±1e50: refused on every number flag, used by the run or not (docs/cli.md
+# "Errors"; found D29, D35).
+NAN_HUGE = ["nan", "NaN", "-nan", "inf", "-inf", "1e60", "-1e60", "1e51", "-1e51"]
+
+# Valid friction laws (docs/config.md "Friction law": absolute coefficients with --mu): every
+# subcommand that lists the law flags takes them (README: "Every analysis takes them"; found D22,
+# D27, D28). Cheap: Coulomb laws run the exact solver, Stribeck and viscous ones the slip
+# integrator at a loose tolerance.
+LAWS = [["--mu", "0.3", "--mu-static", "0.36"],
+        ["--mu", "0.3", "--mu-backward", "0.25"],
+        ["--mu", "0.3", "--mu-static", "0.39", "--mu-backward", "0.27"],
+        ["--mu", "0.3", "--mu-static", "0.36", "--stribeck-velocity", "0.1",
+         "--relative-tolerance", "1e-6"],
+        ["--viscous", "0.1", "--relative-tolerance", "1e-6"]]
