@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "oracles/single_harmonic.hpp"
+#include "oracles/stribeck_rk4.hpp"
 #include "selfalign/analysis/floquet.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
@@ -330,6 +331,15 @@ TEST(SlipIntegrator, StribeckResultDoesNotDependOnTheOutputStep) {
   o.output_step = P / 500;
   const SimulationResult settled = simulate(profile, uniform, law, {0, 0, 0}, o);
   EXPECT_NEAR(steady.v_bar, settled.mean_velocity_last_period, kOutputIndependence);
+
+  // Second method: fixed-step RK4, event by event (tests/oracles/stribeck_rk4.hpp), at
+  // h = 3e-5: its v̄ moved by 1.4e-11 and x(4 Δt) by 5e-11 to h = 1e-5; 1e-9 covers both.
+  // (The old unsampled path was 2.2e-5 off in v̄ and 3.7e-5 in x.)
+  constexpr double kRk4Agreement = 1e-9;
+  const std::vector<double> x = oracle::stribeck_rk4_positions(
+      {durations, accels, law.static_coefficient(), 1.0, 1e-3, 1.0}, 30, 3e-5);
+  EXPECT_NEAR(unsampled.final_state.x, x[3], kRk4Agreement);
+  EXPECT_NEAR(steady.v_bar, (x[29] - x[28]) / P, kRk4Agreement);
 }
 
 // D26 (issue 20): the integrator had no work limit: a stiff slip (a viscous rate far above the
