@@ -66,7 +66,9 @@ SimulateConfig read_config(const ConfigFlags& flags) {
   for (std::size_t i = 0; i < keys.size(); ++i)
     if (flags.options[i] && flags.options[i]->count() > 0)
       set_simulate_config_value(overrides, keys[i].name, flags.values[i]);
-  return merge(config, overrides);
+  const SimulateConfig merged = merge(config, overrides);
+  register_config_files(merged);  // the samples and field files it names: no output replaces them
+  return merged;
 }
 
 }  // namespace selfalign::cli

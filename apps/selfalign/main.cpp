@@ -10,6 +10,7 @@
 
 #include "commands.hpp"
 #include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/run_files.hpp"
 
 namespace {
 
@@ -52,12 +53,31 @@ const CLI::Validator kRepresentable(
     },
     "", "Representable");
 
+// Every FILE option registers its file in the run's registry (io/run_files.hpp) as it is
+// parsed, before any subcommand runs: an output (an option of the group "Output") may not be an
+// input nor another output's file, however spelled; an input (any other FILE option) may not be
+// an output's file. A new subcommand's FILE options are registered without a line of its own.
+CLI::Validator run_file(const CLI::Option& option) {
+  const bool output = option.get_group() == "Output";
+  const std::string name = option.get_lnames().empty() ? option.get_name() : option.get_lnames()[0];
+  return CLI::Validator(
+      [output, name](std::string& path) {
+        if (output) selfalign::require_output_path(name, path);
+        else selfalign::register_input_file(path, "--" + name);
+        return std::string();
+      },
+      "", "RunFile");
+}
+
 void guard_values(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     if (option->get_type_size() == 0) continue;  // a flag takes no value
     option->check(kNotEmpty);
     option->check(kRepresentable);
-    if (option->get_type_name() == "FILE") option->check(kNotAFlag);
+    if (option->get_type_name() == "FILE") {
+      option->check(kNotAFlag);
+      option->check(run_file(*option));  // after the checks above: only plausible paths
+    }
     if (option->get_type_name() == "INT" || option->get_type_name() == "UINT") {
       // CLI11's own refusal ("Could not convert") names no range: name it from the help text.
       const std::string help = option->get_description();

@@ -120,8 +120,8 @@ void write_sweep_outputs(const SweepPaths& paths, const std::string& csv, nlohma
   summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   const std::string summary_text = summary.dump(2) + "\n";
   AtomicFileSet files;
-  if (paths.csv) files.add(*paths.csv, csv);
-  if (paths.summary) files.add(*paths.summary, summary_text);
+  if (paths.csv) files.add(*paths.csv, csv, "out");
+  if (paths.summary) files.add(*paths.summary, summary_text, "summary");
   files.commit();
   if (!paths.csv) std::cout << csv << std::flush;
   if (paths.summary_to_stdout) std::cout << summary_text << std::flush;
