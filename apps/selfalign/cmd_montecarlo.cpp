@@ -3,17 +3,16 @@
 // worst case over the uncertainty box (robust/worst_case.hpp).
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "design_report.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
 #include "robust_flags.hpp"
@@ -45,55 +44,12 @@ struct MonteCarloFlags {
   std::set<std::string> given;  // request flags given on the command line
 };
 
-// The request keys of a design report and the flags that override them.
-struct RequestKey {
-  const char* key;
-  const char* flag;
-  double DesignRequest::*field;
-};
-constexpr RequestKey kRequestKeys[] = {
-    {"mass_kg", "--mass", &DesignRequest::mass},
-    {"width_m", "--width", &DesignRequest::width},
-    {"mu", "--mu", &DesignRequest::mu},
-    {"c_mu", "--c-mu", &DesignRequest::c_mu},
-    {"g_m_per_s2", "--g", &DesignRequest::gravity},
-    {"mu_static", "--mu-static", &DesignRequest::mu_static},
-    {"mu_backward", "--mu-backward", &DesignRequest::mu_backward},
-    {"distance_m", "--distance", &DesignRequest::distance},
-    {"tolerance_m", "--tolerance", &DesignRequest::tolerance},
-};
-
 // The process of a `design` report (its profile and x_mu) and the object and friction it was
 // designed for (its `request`); flags given explicitly win.
 Process read_design(const std::string& path, const Process& flags, DesignRequest& request,
                     const std::set<std::string>& given) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidParameter("design", path, "must be a readable design report (JSON)");
-  std::stringstream text;
-  text << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(text.str());
-  } catch (const json::parse_error&) {
-    throw InvalidParameter("design", path, "must be a JSON report of `selfalign design`");
-  }
-  const auto number = [&](const json& node, const char* key) {
-    if (!node.contains(key) || !node[key].is_number())
-      throw InvalidParameter("design", path, std::string("must hold a number ") + key);
-    return node[key].get<double>();
-  };
-  if (!j.contains("profile") || !j["profile"].is_object())
-    throw InvalidParameter("design", path, "must hold the profile of a `selfalign design` report");
-  const json& p = j["profile"];
-  Process r;
-  r.period = number(p, "period_s");
-  r.stroke = number(p, "stroke_m");
-  r.a2 = number(p, "a2_m_per_s2");
-  r.a3 = number(p, "a3_m_per_s2");
-  r.jerk = p.contains("jerk_m_per_s3") && p["jerk_m_per_s3"].is_number()
-               ? p["jerk_m_per_s3"].get<double>()
-               : std::numeric_limits<double>::infinity();
-  r.x_mu = number(j, "x_mu_m");
+  const DesignReport report = read_design_report(path);
+  Process r = report.process;
   const auto keep = [](double flag, double file) { return std::isnan(flag) ? file : flag; };
   r.period = keep(flags.period, r.period);
   r.stroke = keep(flags.stroke, r.stroke);
@@ -101,12 +57,8 @@ Process read_design(const std::string& path, const Process& flags, DesignRequest
   r.a3 = keep(flags.a3, r.a3);
   r.x_mu = keep(flags.x_mu, r.x_mu);
   if (!std::isinf(flags.jerk)) r.jerk = flags.jerk;
-  if (j.contains("request") && j["request"].is_object())
-    for (const RequestKey& k : kRequestKeys) {
-      const json& v = j["request"].value(k.key, json());
-      if (given.count(k.flag) || !(v.is_number() || v.is_null())) continue;
-      request.*k.field = v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
-    }
+  for (const RequestKey& k : design_request_keys())
+    if (!given.count(k.flag)) request.*k.field = report.request.*k.field;
   return r;
 }
 
@@ -226,7 +178,7 @@ void add_montecarlo_command(CLI::App& app) {
                   "write one row per run (its inputs, stop kind, end position, T_p) to FILE")
       ->type_name("FILE")->group("Output");
   sub->callback([f, sub] {
-    for (const RequestKey& k : kRequestKeys)
+    for (const RequestKey& k : design_request_keys())
       if (sub->count(k.flag) > 0) f->given.insert(k.flag);
     run_monte_carlo(*f);
   });

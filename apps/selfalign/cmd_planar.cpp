@@ -52,7 +52,6 @@ json pose_json(const PlanarPose& p, const Si& si) {
 }
 
 PlanarSetup load(const PlanarFlags& f) {
-  require_input_file("config", f.config, "--config", 1 << 24);
   require_report_paths(f.out, ExtraFile{"csv", f.csv});
   return load_planar_config(f.config);
 }

@@ -122,10 +122,11 @@ std::string_view config_type_name(const ConfigKey& key);
 /// The dimensionless defaults (Sect. 7.2). out, summary and samples stay unset; arrays empty.
 SimulateConfig simulate_config_defaults();
 
-/// Reads a .json (nlohmann) or .toml (toml++) file, chosen by extension. Throws
-/// InvalidParameter: ("config key", key, "unknown key in <file>; allowed: ...") for an unknown
-/// key, (key, value, "must be a <type> ...") for a wrong type, ("config file", path, <parser
-/// message>) for an unreadable or malformed file. Values are not range-checked here.
+/// Reads a .json or .toml file (read_document, io/document.hpp: one table of keys, at most 2
+/// levels deep) and registers it as the run's --config input. Throws InvalidParameter:
+/// ("config key", key, "unknown key ...") for an unknown key, (key, value, "must be a <type>
+/// ...") for a wrong type, ("config file", path, <what, with line and column>) for an
+/// unreadable, malformed or too deeply nested file. Values are not range-checked here.
 SimulateConfig load_simulate_config(const std::string& path);
 
 /// Sets one key from command-line text (numbers as C-locale text, "nan" allowed and rejected
