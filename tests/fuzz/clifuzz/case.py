@@ -24,6 +24,8 @@ class Case:
         self.inputs = set()    # candidate inputs: those the final command line reads never change
         self.config_inputs = {}  # config path -> samples path named inside it
         self.config_outputs = set()  # (path, key): out / summary named inside a config file
+        self.must_refuse = None  # (flag, path): an input the run must refuse while the command
+        #                          line still gives it (e.g. a wrong-typed design report)
 
     def argv(self):
         return self.sub + [t for u in self.units for t in u]
@@ -78,7 +80,7 @@ def clone(case):
     c = Case(case.index, case.seed)
     c.sub, c.units = list(case.sub), [list(u) for u in case.units]
     c.files = list(case.files)
-    c.tags, c.big = list(case.tags), case.big
+    c.tags, c.big, c.must_refuse = list(case.tags), case.big, case.must_refuse
     c.inputs, c.config_outputs = set(case.inputs), set(case.config_outputs)
     c.config_inputs = dict(case.config_inputs)
     return c
