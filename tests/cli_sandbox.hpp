@@ -95,6 +95,17 @@ inline void expect_clean_failure(const CliSandbox& box, const CliResult& r,
   EXPECT_TRUE(box.work_entries().empty()) << "left behind: " << box.work_entries().front();
 }
 
+/// The contract for bad input where the work folder may hold the run's inputs: exit code 2,
+/// exactly one line `selfalign: error: ...` containing every `expected` substring, nothing on
+/// stdout (the caller checks the folder).
+inline void expect_one_line_error(const CliResult& r, const std::vector<std::string>& expected) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
+  EXPECT_EQ(r.err.rfind("selfalign: error: ", 0), 0u) << r.err;
+  for (const std::string& s : expected) EXPECT_NE(r.err.find(s), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
 /// A parameterised misuse case: the command line and what its error line must contain.
 struct MisuseCase {
   std::string name;

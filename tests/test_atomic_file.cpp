@@ -12,6 +12,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/simulate_config.hpp"
 #include "temp_dir.hpp"
 
 using namespace selfalign;
@@ -28,6 +29,7 @@ std::vector<std::string> entries(const fs::path& dir) {
 }  // namespace
 
 TEST(AtomicFileSet, NeverReplacesARegisteredInput) {
+  forget_run_files();
   TempDir dir;
   write_text(dir.file("in.toml"), "periods = 2\n");
   register_input_file(dir.file("in.toml"), "--config");
@@ -46,15 +48,18 @@ TEST(AtomicFileSet, NeverReplacesARegisteredInput) {
     EXPECT_NE(e.allowed().find("--config"), std::string::npos);
   }
   EXPECT_EQ(read_text(dir.file("in.toml")), "periods = 2\n");
-  EXPECT_THROW(require_output_path("summary", dir.file("s.csv"), dir.file("s.csv"), "--samples"),
-               InvalidParameter);  // an input named but not read yet
+  SimulateConfig config;  // an input named in a config but not read yet
+  config.samples = dir.file("s.csv");
+  config.out = dir.file("./s.csv");
+  EXPECT_THROW(resolve_output_paths(config), InvalidParameter);
 }
 
 TEST(AtomicFileSet, FailedCommitRemovesTheFilesItCreated) {
+  forget_run_files();
   TempDir dir;
   AtomicFileSet files;
-  files.add(dir.file("a.csv"), "alpha");
-  files.add(dir.file("b.json"), "beta");
+  files.add(dir.file("a.csv"), "alpha", "out");
+  files.add(dir.file("b.json"), "beta", "summary");
   // Between add and commit the second target becomes a folder: its rename fails.
   fs::create_directory(dir.file("b.json"));
   fs::create_directory(dir.file("b.json/x"));  // not empty: rename(2) cannot replace it
@@ -71,7 +76,7 @@ TEST(AtomicFileSet, SignalRemovesTemporariesAndKeepsItsMeaning) {
   if (child == 0) {
     remove_temporaries_on_signals();
     AtomicFileSet files;
-    files.add(dir.file("big.csv"), std::string(1 << 20, 'x'));  // a temporary now exists
+    files.add(dir.file("big.csv"), std::string(1 << 20, 'x'), "out");  // a temporary now exists
     ::raise(SIGINT);
     ::_exit(0);  // not reached
   }

@@ -114,7 +114,7 @@ const ConfigMisuseCase kMisuseCases[] = {
      "{\"width\": " + std::string(60000, '[') + "1" + std::string(60000, ']') + "}",
      {"config file", "deep.json", "nests too deeply"}},
     {"malformed_json", {}, "bad.json", "{\"width\": 0.05,\n\"c_mu\": }\n",
-     {"config file", "bad.json", "parse error"}},
+     {"config file", "bad.json", "not valid JSON at line 2, column 9"}},
     {"malformed_toml", {}, "bad.toml", "width = 0.05\nc_mu = = 2\n",
      {"config file", "bad.toml", "line 2"}},
     {"wrong_type_json", {}, "c.json", R"({"width": "wide"})", {"width", "must be a number"}},

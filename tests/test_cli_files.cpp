@@ -23,15 +23,6 @@ using nlohmann::json;
 
 namespace {
 
-// One line on stderr naming `name`, exit 2, nothing on stdout.
-void expect_one_line_error(const CliResult& r, const std::vector<std::string>& expected) {
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(lines(r.err).size(), 1u) << r.err;
-  EXPECT_EQ(r.err.rfind("selfalign: error: ", 0), 0u) << r.err;
-  for (const std::string& s : expected) EXPECT_NE(r.err.find(s), std::string::npos) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-}
-
 const char kSamples[] = "t,ydd\n0,1\n0.5,-1\n1,0\n";  // y'' = +1 then -1: velocity returns
 
 }  // namespace

@@ -361,11 +361,12 @@ TEST(ConvertOneValue, ToSiAndBackByDimension) {
 }
 
 TEST(AtomicFileSet, CommitsAllOrNothing) {
+  forget_run_files();
   TempDir dir;
   {
     AtomicFileSet files;
-    files.add(dir.file("a.txt"), "alpha");
-    files.add(dir.file("b.txt"), "beta");
+    files.add(dir.file("a.txt"), "alpha", "out");
+    files.add(dir.file("b.txt"), "beta", "summary");
     EXPECT_FALSE(std::filesystem::exists(dir.file("a.txt")));  // not before commit
     files.commit();
   }
@@ -373,9 +374,9 @@ TEST(AtomicFileSet, CommitsAllOrNothing) {
   EXPECT_EQ(read_text(dir.file("b.txt")), "beta");
   {
     AtomicFileSet files;
-    files.add(dir.file("c.txt"), "gamma");
-    EXPECT_THROW(files.add(dir.file("no/such/dir/d.txt"), "delta"), InvalidParameter);
-    EXPECT_THROW(files.add(dir.file("c.txt"), "again"), InvalidParameter);
+    files.add(dir.file("c.txt"), "gamma", "out");
+    EXPECT_THROW(files.add(dir.file("no/such/dir/d.txt"), "delta", "summary"), InvalidParameter);
+    EXPECT_THROW(files.add(dir.file("c.txt"), "again", "out"), InvalidParameter);
   }  // destroyed without commit: the temporary of c.txt is removed
   std::size_t count = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir.path())) {
@@ -383,7 +384,7 @@ TEST(AtomicFileSet, CommitsAllOrNothing) {
     ++count;
   }
   EXPECT_EQ(count, 2u);  // a.txt, b.txt only
-  write_file_atomically(dir.file("a.txt"), "replaced");
+  write_file_atomically(dir.file("a.txt"), "replaced", "out");
   EXPECT_EQ(read_text(dir.file("a.txt")), "replaced");
 }
 

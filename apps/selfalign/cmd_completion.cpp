@@ -196,7 +196,9 @@ void add_completion_command(CLI::App& app) {
   auto shell = std::make_shared<std::string>();
   auto out = std::make_shared<std::optional<std::string>>();
   completion->add_option("shell", *shell, "bash or zsh")->required();
-  completion->add_option("--out", *out, "write the script to FILE")->type_name("FILE");
+  completion->add_option("--out", *out, "write the script to FILE")
+      ->type_name("FILE")
+      ->group("Output");  // an output (main.cpp registers FILE options by group)
   completion->callback([&app, shell, out] {
     std::vector<Node> nodes;
     walk(&app, "", nodes);
@@ -207,7 +209,7 @@ void add_completion_command(CLI::App& app) {
   CLI::App* man = app.add_subcommand("man", "print the man page (roff)");
   man->group("");
   auto man_out = std::make_shared<std::optional<std::string>>();
-  man->add_option("--out", *man_out, "write the page to FILE")->type_name("FILE");
+  man->add_option("--out", *man_out, "write the page to FILE")->type_name("FILE")->group("Output");
   man->callback([&app, man_out] {
     std::vector<Node> nodes;
     walk(&app, "", nodes);

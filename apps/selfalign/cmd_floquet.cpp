@@ -98,7 +98,7 @@ std::string floquet_table(const json& j, UnitSystem units) {
 
 void run_floquet(const ConfigFlags& flags, const FloquetFlags& f) {
   const SimulateConfig config = read_config(flags);
-  if (config.out) require_output_path("out", *config.out, config.samples.value_or(""), "--samples");
+  if (config.out) require_output_path("out", *config.out);
   const ProfileModel model = build_profile_model(config);  // case 0: InvalidParameter
   FloquetOptions options;
   options.fd_step = require_in_half_open("fd-step", f.fd_step, 0.0, 0.1);

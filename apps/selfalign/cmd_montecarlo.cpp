@@ -3,18 +3,17 @@
 // worst case over the uncertainty box (robust/worst_case.hpp).
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <string>
 #include <variant>
 
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "design_report.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
 #include "robust_flags.hpp"
@@ -47,25 +46,6 @@ struct MonteCarloFlags {
   std::set<std::string> given;  // request flags given on the command line
 };
 
-// The request keys of a design report and the flags that override them: a number, or an
-// optional coefficient (null in the report: equal to mu).
-struct RequestKey {
-  const char* key;
-  const char* flag;
-  std::variant<double DesignRequest::*, std::optional<double> DesignRequest::*> field;
-};
-const RequestKey kRequestKeys[] = {
-    {"mass_kg", "--mass", &DesignRequest::mass},
-    {"width_m", "--width", &DesignRequest::width},
-    {"mu", "--mu", &DesignRequest::mu},
-    {"c_mu", "--c-mu", &DesignRequest::c_mu},
-    {"g_m_per_s2", "--g", &DesignRequest::gravity},
-    {"mu_static", "--mu-static", &DesignRequest::mu_static},
-    {"mu_backward", "--mu-backward", &DesignRequest::mu_backward},
-    {"distance_m", "--distance", &DesignRequest::distance},
-    {"tolerance_m", "--tolerance", &DesignRequest::tolerance},
-};
-
 // The library's names of the process (validate(Process)) as the flags that set them.
 constexpr UserName kProcessFlagNames[] = {
     {"period", "period-s"}, {"stroke", "stroke-m"}, {"x_mu", "x-mu"}};
@@ -87,50 +67,17 @@ Process process_from_flags(const ProcessFlags& f) {
 // designed for (its `request`); flags given explicitly win.
 Process read_design(const std::string& path, const ProcessFlags& flags, DesignRequest& request,
                     const std::set<std::string>& given) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidParameter("design", path, "must be a readable design report (JSON)");
-  std::stringstream text;
-  text << in.rdbuf();
-  json j;
-  try {
-    j = json::parse(text.str());
-  } catch (const json::parse_error&) {
-    throw InvalidParameter("design", path, "must be a JSON report of `selfalign design`");
-  }
-  const auto number = [&](const json& node, const char* key) {
-    if (!node.contains(key) || !node[key].is_number())
-      throw InvalidParameter("design", path, std::string("must hold a number ") + key);
-    return node[key].get<double>();
-  };
-  if (!j.contains("profile") || !j["profile"].is_object())
-    throw InvalidParameter("design", path, "must hold the profile of a `selfalign design` report");
-  const json& p = j["profile"];
-  Process r;
-  r.period = number(p, "period_s");
-  r.stroke = number(p, "stroke_m");
-  r.a2 = number(p, "a2_m_per_s2");
-  r.a3 = number(p, "a3_m_per_s2");
-  r.jerk = p.contains("jerk_m_per_s3") && p["jerk_m_per_s3"].is_number()
-               ? p["jerk_m_per_s3"].get<double>()
-               : std::numeric_limits<double>::infinity();
-  r.x_mu = number(j, "x_mu_m");
+  const DesignReport report = read_design_report(path);
+  Process r = report.process;
   r.period = flags.period.value_or(r.period);
   r.stroke = flags.stroke.value_or(r.stroke);
   r.a2 = flags.a2.value_or(r.a2);
   r.a3 = flags.a3.value_or(r.a3);
   r.x_mu = flags.x_mu.value_or(r.x_mu);
   r.jerk = flags.jerk.value_or(r.jerk);
-  if (j.contains("request") && j["request"].is_object())
-    for (const RequestKey& k : kRequestKeys) {
-      const json& v = j["request"].value(k.key, json());
-      if (given.count(k.flag) || !(v.is_number() || v.is_null())) continue;
-      if (const auto* number = std::get_if<double DesignRequest::*>(&k.field)) {
-        if (v.is_number()) request.**number = v.get<double>();
-      } else {
-        request.*std::get<std::optional<double> DesignRequest::*>(k.field) =
-            v.is_null() ? std::nullopt : std::optional<double>(v.get<double>());
-      }
-    }
+  for (const RequestKey& k : design_request_keys())
+    if (!given.count(k.flag))
+      std::visit([&](auto field) { request.*field = report.request.*field; }, k.field);
   return r;
 }
 
@@ -257,7 +204,7 @@ void add_montecarlo_command(CLI::App& app) {
                   "write one row per run (its inputs, stop kind, end position, T_p) to FILE")
       ->type_name("FILE")->group("Output");
   sub->callback([f, sub] {
-    for (const RequestKey& k : kRequestKeys)
+    for (const RequestKey& k : design_request_keys())
       if (sub->count(k.flag) > 0) f->given.insert(k.flag);
     run_monte_carlo(*f);
   });

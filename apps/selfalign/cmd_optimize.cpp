@@ -136,9 +136,11 @@ void add_optimize_command(CLI::App& app) {
   sub->add_option("--threads", f->options.threads,
                   "worker threads of the Fourier optimiser's gradient stencils, >= 0 (0: all "
                   "cores; the result does not depend on it). Default: 0");
-  sub->add_flag("--json", f->as_json, "print the report as JSON");
-  sub->add_flag("--quiet", f->quiet, "no progress bar");
-  sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
+  sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");
+  sub->add_flag("--quiet", f->quiet, "no progress bar")->group("Output");
+  sub->add_option("--out", f->out, "write the JSON report to FILE")
+      ->type_name("FILE")
+      ->group("Output");
   sub->callback([f, sub] {
     f->mu_given = sub->count("--mu") > 0;
     run_optimize(*f);

@@ -53,8 +53,7 @@ json pose_json(const PlanarPose& p, const Si& si) {
 }
 
 PlanarSetup load(const PlanarFlags& f) {
-  require_input_file("config", f.config, "--config", 1 << 24);
-  require_report_paths(f.out, ExtraFile{"--csv", f.csv});
+  require_report_paths(f.out, ExtraFile{"csv", f.csv});
   return load_planar_config(f.config);
 }
 
@@ -123,7 +122,7 @@ void run_simulate(const PlanarFlags& f) {
   t.row("end pose x, y [" + si.u("m", "-") + "], angle [rad]",
         table_text(r["end_pose"]["x"]) + ", " + table_text(r["end_pose"]["y"]) + ", " + table_text(r["end_pose"]["angle_rad"]));
   t.row("steps stick / pivot / slip", std::to_string(csv.census.stick) + " / " + std::to_string(csv.census.pivot) + " / " + std::to_string(csv.census.slip));
-  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv.out.str());
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.out.str());
 }
 
 void run_steady(const PlanarFlags& f) {
@@ -157,7 +156,7 @@ void run_steady(const PlanarFlags& f) {
   t.row("level changed in window", table_text(r["level_changed_in_window"]));
   std::string csv;
   if (f.csv) csv = "drift_x,drift_y,rotation_rate\n" + csv_number(r["drift_x"]) + "," + csv_number(r["drift_y"]) + "," + csv_number(r["rotation_rate"]) + "\n";
-  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv);
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv);
 }
 
 void run_field(const PlanarFlags& f) {
@@ -186,7 +185,7 @@ void run_field(const PlanarFlags& f) {
   TextTable t;
   t.row("samples", std::to_string(samples.size()));
   t.row("largest drift [" + si.u("m/s", "-") + "]", table_text(r["largest_drift"]));
-  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv.str());
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.str());
 }
 
 void run_stop(const PlanarFlags& f) {
@@ -221,7 +220,7 @@ void run_stop(const PlanarFlags& f) {
   t.row("end region radius [" + si.u("m", "-") + "]", table_text(r["end_region"]["radius"]));
   t.row("orientation error [rad]", table_text(r["orientation_error_rad"]));
   t.row("largest T_p [" + si.u("s", "-") + "]", table_text(r["max_process_time"]));
-  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"--csv", f.csv}, csv.str());
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.str());
 }
 
 void add_planar_sub(CLI::App* parent, const char* name, const char* help, void (*run)(const PlanarFlags&),
@@ -230,10 +229,13 @@ void add_planar_sub(CLI::App* parent, const char* name, const char* help, void (
   auto f = std::make_shared<PlanarFlags>();
   sub->add_option("--config", f->config, "the planar configuration (.toml or .json; docs/planar.md)")
       ->required()->type_name("FILE");
-  sub->add_option("--csv", f->csv, csv_help)->type_name("FILE");
-  sub->add_option("--out", f->out, "write the JSON report to FILE")->type_name("FILE");
-  sub->add_flag("--json", f->as_json, "print the report as JSON");
-  sub->add_flag("--quiet", f->quiet, "no progress bar (drawn only when stderr is a terminal)");
+  sub->add_option("--csv", f->csv, csv_help)->type_name("FILE")->group("Output");
+  sub->add_option("--out", f->out, "write the JSON report to FILE")
+      ->type_name("FILE")
+      ->group("Output");
+  sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");
+  sub->add_flag("--quiet", f->quiet, "no progress bar (drawn only when stderr is a terminal)")
+      ->group("Output");
   sub->callback([f, run] { run(*f); });
 }
 

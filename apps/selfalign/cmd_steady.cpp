@@ -114,7 +114,7 @@ std::string steady_table(const json& j, UnitSystem units) {
 
 void run_steady(const ConfigFlags& flags, bool as_json) {
   const SimulateConfig config = read_config(flags);
-  if (config.out) require_output_path("out", *config.out, config.samples.value_or(""), "--samples");
+  if (config.out) require_output_path("out", *config.out);
   const ProfileModel model = build_profile_model(config, NonPhysicalProfile::allow);
   std::optional<SteadyState> steady;
   SteadyStateOptions options;

@@ -3,6 +3,12 @@
 // the app, with a callback that parses, calls the library and formats (no physics here).
 // A callback reports misuse by throwing (selfalign::InvalidParameter); main.cpp turns any
 // exception into one line on stderr and exit code 2.
+//
+// Files: an option naming a file has type_name("FILE"); one that the command writes is in
+// group("Output"), any other is an input. main.cpp registers every such value in the run's
+// file registry (io/run_files.hpp) while parsing, so an output naming an input or another
+// output's file is refused before the callback runs; files named inside a config are
+// registered by read_config (config_flags.hpp) and inside other documents by their readers.
 
 #include <CLI/CLI.hpp>
 

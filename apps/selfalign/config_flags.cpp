@@ -69,7 +69,8 @@ SimulateConfig read_config(const ConfigFlags& flags) {
     if (flags.options[i] && flags.options[i]->count() > 0)
       set_simulate_config_value(overrides, keys[i].name, flags.values[i]);
   const SimulateConfig given = merge(config, overrides);
-  warn_about_config(given);  // printed only if the run succeeds
+  register_config_files(given);  // the samples and field files it names: no output replaces them
+  warn_about_config(given);      // printed only if the run succeeds
   return given;
 }
 

@@ -34,7 +34,8 @@ struct KeyFlag {
 std::shared_ptr<ConfigFlags> add_config_flags(CLI::App& command,
                                               const std::vector<KeyFlag>& overrides = {});
 
-/// The config file (if any) with the given flags applied over it.
+/// The config file (if any) with the given flags applied over it; the files it names are
+/// registered as inputs of the run (register_config_files).
 SimulateConfig read_config(const ConfigFlags& flags);
 
 }  // namespace selfalign::cli

@@ -14,6 +14,7 @@
 #include "warnings.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/run_files.hpp"
 
 namespace {
 
@@ -74,6 +75,22 @@ CLI::Validator moderate_number(const std::string& flag) {
       "", "ModerateNumber");
 }
 
+// Every FILE option registers its file in the run's registry (io/run_files.hpp) as it is
+// parsed, before any subcommand runs: an output (an option of the group "Output") may not be an
+// input nor another output's file, however spelled; an input (any other FILE option) may not be
+// an output's file. A new subcommand's FILE options are registered without a line of its own.
+CLI::Validator run_file(const CLI::Option& option) {
+  const bool output = option.get_group() == "Output";
+  const std::string name = option.get_lnames().empty() ? option.get_name() : option.get_lnames()[0];
+  return CLI::Validator(
+      [output, name](std::string& path) {
+        if (output) selfalign::require_output_path(name, path);
+        else selfalign::register_input_file(path, "--" + name);
+        return std::string();
+      },
+      "", "RunFile");
+}
+
 void guard_values(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     if (option->get_type_size() == 0) continue;  // a flag takes no value
@@ -81,7 +98,10 @@ void guard_values(CLI::App& app) {
     option->check(kRepresentable);
     if (option->get_type_name() == "FLOAT" || option->get_type_name() == "NUMBER")
       option->check(moderate_number(option->get_name()));
-    if (option->get_type_name() == "FILE") option->check(kNotAFlag);
+    if (option->get_type_name() == "FILE") {
+      option->check(kNotAFlag);
+      option->check(run_file(*option));  // after the checks above: only plausible paths
+    }
     if (option->get_type_name() == "INT" || option->get_type_name() == "UINT") {
       // CLI11's own refusal ("Could not convert") names no range: name it from the help text.
       const std::string help = option->get_description();

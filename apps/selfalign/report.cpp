@@ -57,9 +57,7 @@ void deliver_report(const nlohmann::json& report, const std::string& table, bool
 
 void require_report_paths(const std::optional<std::string>& out, const ExtraFile& extra) {
   if (out) require_output_path("out", *out);
-  if (extra.path) require_output_path(extra.flag, *extra.path);
-  if (out && extra.path && *out == *extra.path)
-    throw InvalidParameter(extra.flag, *extra.path, "must differ from --out");
+  if (extra.path) require_output_path(extra.flag, *extra.path);  // also: not the file of --out
 }
 
 void deliver_report_with_file(const nlohmann::json& report, const std::string& table,

@@ -52,12 +52,13 @@ void deliver_report(const nlohmann::json& report, const std::string& table, bool
 /// An extra output file beside the JSON report (design's --profile-csv, montecarlo's
 /// --runs-csv): its flag, path and content.
 struct ExtraFile {
-  const char* flag;
+  const char* flag;  ///< without dashes, e.g. "runs-csv"
   std::optional<std::string> path;
 };
 
-/// Checks, before any work, that --out and the extra file are writable paths that differ.
-/// Throws InvalidParameter naming the flag.
+/// Checks, before any work, that --out and the extra file are writable paths of different
+/// files, neither an input (require_output_path, io/run_files.hpp). Throws InvalidParameter
+/// naming the flag.
 void require_report_paths(const std::optional<std::string>& out, const ExtraFile& extra);
 
 /// Writes the extra file (when extra.path) and the report to `out` together (AtomicFileSet);

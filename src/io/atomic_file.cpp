@@ -10,79 +10,19 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <iostream>
 #include <mutex>
 #include <random>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/run_files.hpp"
 
 namespace selfalign {
 namespace {
 
-namespace fs = std::filesystem;
-
 [[noreturn]] void fail(const std::string& name, const std::string& path, const std::string& what,
                        int error) {
   throw InvalidParameter(name, path, what + ": " + std::strerror(error));
-}
-
-// ---- the inputs this process has read ----------------------------------------------------
-
-struct InputFile {
-  std::string absolute;  // lexically normal absolute path (links resolved where they exist)
-  dev_t device = 0;
-  ino_t inode = 0;
-  bool exists = false;
-  std::string flag;
-};
-
-std::mutex& inputs_mutex() {
-  static std::mutex m;
-  return m;
-}
-std::vector<InputFile>& inputs() {
-  static std::vector<InputFile> v;
-  return v;
-}
-
-std::string absolute_path(const std::string& path) {
-  std::error_code ec;
-  fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
-  if (ec) p = fs::absolute(path).lexically_normal();
-  return p.string();
-}
-
-InputFile identify(const std::string& path) {
-  InputFile f;
-  f.absolute = absolute_path(path);
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) {
-    f.exists = true;
-    f.device = st.st_dev;
-    f.inode = st.st_ino;
-  }
-  return f;
-}
-
-bool same_file(const InputFile& a, const InputFile& b) {
-  if (a.exists && b.exists) return a.device == b.device && a.inode == b.inode;
-  return a.absolute == b.absolute;
-}
-
-// The file a path finally names: symbolic links followed (also dangling ones, whose target is
-// then created), at most 40 hops as the kernel allows.
-std::string resolve_links(std::string path) {
-  for (int hop = 0; hop < 40; ++hop) {
-    struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return path;
-    std::array<char, 4096> buffer{};
-    const ssize_t n = ::readlink(path.c_str(), buffer.data(), buffer.size() - 1);
-    if (n <= 0) return path;
-    const fs::path target(std::string(buffer.data(), static_cast<std::size_t>(n)));
-    path = target.is_absolute() ? target.string() : (fs::path(path).parent_path() / target).string();
-  }
-  return path;
 }
 
 // ---- temporaries, for removal on a signal ------------------------------------------------
@@ -168,52 +108,6 @@ bool is_stream(const struct stat& st) {
 
 }  // namespace
 
-void register_input_file(const std::string& path, const std::string& flag) {
-  InputFile f = identify(path);
-  f.flag = flag;
-  std::lock_guard lock(inputs_mutex());
-  inputs().push_back(std::move(f));
-}
-
-void require_input_file(const std::string& name, const std::string& path,
-                        const std::string& flag, std::uintmax_t max_bytes) {
-  if (path.empty()) throw InvalidParameter(name, "\"\"", "must name a file");
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw InvalidParameter(name, path, "is a directory; give a file");
-  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
-    throw InvalidParameter(name, path,
-                           "must be a regular file (a FIFO or device would block or never end)");
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (!ec && size > max_bytes)
-    throw InvalidParameter(name, path,
-                           "is larger than " + std::to_string(max_bytes >> 20) + " MB");
-  register_input_file(path, flag);  // no output may replace it
-}
-
-std::optional<std::string> input_file_flag(const std::string& path) {
-  const InputFile f = identify(path);
-  std::lock_guard lock(inputs_mutex());
-  for (const InputFile& in : inputs())
-    if (same_file(f, in)) return in.flag;
-  return std::nullopt;
-}
-
-void require_output_path(const std::string& name, const std::string& path,
-                         const std::string& other_input, const std::string& other_input_flag) {
-  if (path.empty()) throw InvalidParameter(name, "\"\"", "must be a file path");
-  if (path == "-") return;
-  const std::string target = resolve_links(path);
-  struct stat st {};
-  if (::stat(target.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-    throw InvalidParameter(name, path, "is a directory; give a file path");
-  std::optional<std::string> flag = input_file_flag(path);
-  if (!flag && !other_input.empty() && same_file(identify(path), identify(other_input)))
-    flag = other_input_flag;
-  if (flag)
-    throw InvalidParameter(name, path,
-                           "is the input file given as " + *flag + "; choose another path");
-}
-
 AtomicFileSet::~AtomicFileSet() {
   for (const Pending& p : pending_)
     if (!p.temporary.empty()) remove_temporary(p.temporary);
@@ -221,17 +115,19 @@ AtomicFileSet::~AtomicFileSet() {
 
 void AtomicFileSet::add(const std::string& path, std::string_view content,
                         const std::string& name) {
-  require_output_path(name, path);
+  require_output_path(name, path);  // registers it: not an input, not another output's file
   Pending p;
   p.name = name;
+  p.path = path;
   if (path == "-") {
     p.to_stdout = true;
     p.target = path;
   } else {
-    p.target = resolve_links(path);
+    p.target = final_target(path);
   }
   for (const Pending& q : pending_)
-    if (q.target == p.target || (q.to_stdout && p.to_stdout))
+    if ((q.to_stdout && p.to_stdout) ||
+        (!q.to_stdout && !p.to_stdout && same_file(q.path, p.path)))
       throw InvalidParameter(name, path, "must not be written twice in one run");
   struct stat st {};
   p.existed = !p.to_stdout && ::stat(p.target.c_str(), &st) == 0;

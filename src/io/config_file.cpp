@@ -1,18 +1,17 @@
-// load_simulate_config: read the file, pick the parser by extension.
+// load_simulate_config: one flat table of config keys from a JSON or TOML document
+// (io/document.hpp), each value checked against its key's type.
 
-#include <cerrno>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
-#include "config_reader.hpp"
 #include "selfalign/error.hpp"
-#include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/document.hpp"
 #include "selfalign/io/simulate_config.hpp"
 
 namespace selfalign {
-namespace detail {
+namespace {
+
+using nlohmann::json;
+
+// A config is one table of keys whose values are numbers, strings or arrays of numbers.
+const DocumentKind kConfigDocument{"config file", "--config", 2};
 
 const ConfigKey& require_config_key(std::string_view name, const std::string& file) {
   const ConfigKey* key = find_simulate_config_key(name);
@@ -22,39 +21,40 @@ const ConfigKey& require_config_key(std::string_view name, const std::string& fi
   return *key;
 }
 
-void throw_wrong_type(const ConfigKey& key, const std::string& value_text,
-                      const std::string& file) {
-  constexpr std::size_t kMaxShown = 60;  // keep the message one short line
-  std::string shown = value_text.size() > kMaxShown ? value_text.substr(0, kMaxShown) + "..."
-                                                    : value_text;
-  throw InvalidParameter(std::string(key.name), shown,
+[[noreturn]] void throw_wrong_type(const ConfigKey& key, const json& value,
+                                   const std::string& file) {
+  throw InvalidParameter(std::string(key.name), document_value_text(value),
                          std::string(key.field.index() == 2 ? "must be an " : "must be a ") +
                              std::string(config_type_name(key)) + " (in " + file + ")");
 }
 
-void throw_malformed(const std::string& file, const std::string& message) {
-  std::string line = message;
-  for (char& c : line)
-    if (c == '\n' || c == '\r') c = ' ';
-  throw InvalidParameter("config file", file, line);
-}
-
-}  // namespace detail
+}  // namespace
 
 SimulateConfig load_simulate_config(const std::string& path) {
-  if (path.empty()) throw InvalidParameter("config file", "\"\"", "must name a .json or .toml file");
-  const std::string extension = std::filesystem::path(path).extension().string();
-  if (extension != ".json" && extension != ".toml")
-    throw InvalidParameter("config file", path, "must end in .json or .toml");
-  constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;  // a config is a few hundred bytes
-  require_input_file("config file", path, "--config", kMaxConfigBytes);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) detail::throw_malformed(path, std::string("cannot be read: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) detail::throw_malformed(path, "cannot be read");
-  return extension == ".json" ? detail::parse_json_config(text.str(), path)
-                              : detail::parse_toml_config(text.str(), path);
+  const json doc = read_document(path, kConfigDocument);
+  if (!doc.is_object())
+    throw InvalidParameter("config file", path, "must contain one JSON object of keys");
+  SimulateConfig config;
+  for (const auto& [name, value] : doc.items()) {
+    const ConfigKey& key = require_config_key(name, path);
+    if (auto* text_field = std::get_if<TextField>(&key.field)) {
+      if (!value.is_string()) throw_wrong_type(key, value, path);
+      config.**text_field = value.get<std::string>();
+    } else if (auto* number_field = std::get_if<NumberField>(&key.field)) {
+      if (!value.is_number()) throw_wrong_type(key, value, path);
+      config.**number_field = value.get<double>();
+    } else {
+      const auto* list = std::get_if<NumberListField>(&key.field);
+      if (!value.is_array()) throw_wrong_type(key, value, path);
+      std::vector<double> numbers;
+      for (const auto& item : value) {
+        if (!item.is_number()) throw_wrong_type(key, value, path);
+        numbers.push_back(item.get<double>());
+      }
+      config.**list = std::move(numbers);
+    }
+  }
+  return config;
 }
 
 }  // namespace selfalign

@@ -4,12 +4,11 @@
 #include <fstream>
 #include <initializer_list>
 #include <set>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/document.hpp"
 #include "selfalign/io/simulate_config.hpp"  // Dimension, to_dimensionless
 #include "selfalign/io/spelling.hpp"
 #include "selfalign/profiles/fourier.hpp"
@@ -21,16 +20,12 @@ namespace {
 
 using nlohmann::json;
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 // One table of the file with its allowed keys: every read is checked, every key must be known.
 class Section {
  public:
   Section(const json& node, std::string name, std::set<std::string> allowed)
       : node_(node), name_(std::move(name)) {
-    if (!node_.is_object()) throw InvalidParameter(name_, node_.dump(), "must be a table");
+    if (!node_.is_object()) throw InvalidParameter(name_, document_value_text(node_), "must be a table");
     for (const auto& [k, v] : node_.items())
       if (!allowed.count(k)) {
         const std::string best =
@@ -60,13 +55,13 @@ class Section {
   }
   std::string text(const std::string& k, const std::string& fallback) const {
     if (!has(k)) return fallback;
-    if (!node_.at(k).is_string()) throw InvalidParameter(key(k), node_.at(k).dump(), "must be a string");
+    if (!node_.at(k).is_string()) throw InvalidParameter(key(k), document_value_text(node_.at(k)), "must be a string");
     return node_.at(k).get<std::string>();
   }
   std::vector<double> list(const std::string& k, std::vector<double> fallback = {}) const {
     if (!has(k)) return fallback;
     const json& a = node_.at(k);
-    if (!a.is_array()) throw InvalidParameter(key(k), a.dump(), "must be an array of numbers");
+    if (!a.is_array()) throw InvalidParameter(key(k), document_value_text(a), "must be an array of numbers");
     std::vector<double> out;
     for (const auto& v : a) out.push_back(as_number(v, k));
     return out;
@@ -75,65 +70,16 @@ class Section {
 
  private:
   double as_number(const json& v, const std::string& k) const {
-    if (v.is_number()) return v.get<double>();
-    if (v.is_string()) {  // TOML nan / inf arrive as strings through our conversion
-      const std::string s = v.get<std::string>();
-      if (s == "nan") return NAN;
-      if (s == "inf") return INFINITY;
-      if (s == "-inf") return -INFINITY;
-    }
-    throw InvalidParameter(key(k), v.dump(), "must be a number");
+    if (v.is_number()) return v.get<double>();  // TOML nan and inf included
+    throw InvalidParameter(key(k), document_value_text(v), "must be a number");
   }
   const json& node_;
   std::string name_;
 };
 
-json from_toml_node(const toml::node& n) {
-  if (const auto* t = n.as_table()) {
-    json o = json::object();
-    for (const auto& [k, v] : *t) o[std::string(k.str())] = from_toml_node(v);
-    return o;
-  }
-  if (const auto* a = n.as_array()) {
-    json o = json::array();
-    for (const auto& v : *a) o.push_back(from_toml_node(v));
-    return o;
-  }
-  if (const auto* v = n.as_floating_point()) {
-    const double d = v->get();
-    if (std::isnan(d)) return "nan";
-    if (std::isinf(d)) return d > 0 ? "inf" : "-inf";
-    return d;
-  }
-  if (const auto* v = n.as_integer()) return static_cast<double>(v->get());
-  if (const auto* v = n.as_string()) return v->get();
-  if (const auto* v = n.as_boolean()) return v->get();
-  return nullptr;
-}
-
-json read_document(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidParameter("config", path, "must be a readable file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  if (ends_with(path, ".json")) {
-    try {
-      return json::parse(text);
-    } catch (const json::parse_error& e) {
-      throw InvalidParameter("config", path, "must be valid JSON (" + std::string(e.what()) + ")");
-    }
-  }
-  if (ends_with(path, ".toml")) {
-    try {
-      return from_toml_node(toml::parse(text, path));
-    } catch (const toml::parse_error& e) {
-      throw InvalidParameter("config", path,
-                             "must be valid TOML (" + std::string(e.description()) + ")");
-    }
-  }
-  throw InvalidParameter("config", path, "must end in .toml or .json");
-}
+// Sections ([table.x], [part], ...) hold numbers, strings and arrays; [stop] entries are an
+// array of [x, y, angle] arrays: 4 levels.
+const DocumentKind kPlanarDocument{"config", "--config", 4};
 
 struct Units {
   bool si;
@@ -275,7 +221,7 @@ const SectionNames kRunNames{{"step", "run.step"}, {"theta", "run.theta"},
 }  // namespace
 
 PlanarSetup load_planar_config(const std::string& path) {
-  const json doc = read_document(path);
+  const json doc = read_document(path, kPlanarDocument);
   if (!doc.is_object()) throw InvalidParameter("config", path, "must be a table of sections");
   const Section top(doc, "", {"units", "scales", "table", "part", "friction", "field", "run",
                               "field_map", "stop"});
@@ -359,12 +305,12 @@ PlanarSetup load_planar_config(const std::string& path) {
   st.max_periods = stop.integer("max_periods", 2000, 1, 1000000);
   if (stop.has("entries")) {
     const json& e = stop.raw("entries");
-    if (!e.is_array()) throw InvalidParameter("stop.entries", e.dump(), "must be an array of [x, y, angle]");
+    if (!e.is_array()) throw InvalidParameter("stop.entries", document_value_text(e), "must be an array of [x, y, angle]");
     for (const auto& row : e) {
-      if (!row.is_array()) throw InvalidParameter("stop.entries", row.dump(), "must be [x, y, angle]");
+      if (!row.is_array()) throw InvalidParameter("stop.entries", document_value_text(row), "must be [x, y, angle]");
       std::vector<double> v;
       for (const auto& x : row) {
-        if (!x.is_number()) throw InvalidParameter("stop.entries", x.dump(), "must be numbers");
+        if (!x.is_number()) throw InvalidParameter("stop.entries", document_value_text(x), "must be numbers");
         v.push_back(x.get<double>());
       }
       st.entries.push_back(pose_from(v, "stop.entries", u));

@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "selfalign/error.hpp"
-#include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/run_files.hpp"
 #include "selfalign/io/unit_system.hpp"
 #include "selfalign/units.hpp"
 
@@ -192,11 +192,17 @@ SimulateConfig resolve_simulate_config(const SimulateConfig& config) {
   return merge(to_si(defaults, scales), config);
 }
 
+void register_config_files(const SimulateConfig& config) {
+  if (config.samples && !config.samples->empty()) register_input_file(*config.samples, "--samples");
+  if (config.field_file && !config.field_file->empty())
+    register_input_file(*config.field_file, "--field-file");
+}
+
 OutputPaths resolve_output_paths(const SimulateConfig& config) {
+  register_config_files(config);
   OutputPaths paths;
-  const std::string samples = config.samples.value_or("");
   if (config.out) {
-    require_output_path("out", *config.out, samples, "--samples");
+    require_output_path("out", *config.out);
     paths.trajectory = *config.out;
   }
   if (config.summary) {
@@ -209,15 +215,10 @@ OutputPaths resolve_output_paths(const SimulateConfig& config) {
     paths.summary = std::filesystem::path(*config.out).replace_extension(".summary.json").string();
   }  // out = "-": the CSV takes standard output; no summary unless one is named
   if (!paths.summary) return paths;
-  require_output_path("summary", *paths.summary, samples, "--samples");
   if (paths.trajectory && *paths.trajectory == kStdout && paths.summary_to_stdout())
     throw InvalidParameter("summary", kStdout,
                            "cannot share standard output with out = -; give --summary FILE");
-  namespace fs = std::filesystem;
-  if (paths.trajectory && !paths.summary_to_stdout() &&
-      fs::absolute(*paths.summary).lexically_normal() ==
-          fs::absolute(*paths.trajectory).lexically_normal())
-    throw InvalidParameter("summary", *paths.summary, "must differ from out");
+  require_output_path("summary", *paths.summary);  // also: not the file of out
   return paths;
 }
 

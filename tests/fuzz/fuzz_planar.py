@@ -2,10 +2,13 @@
 """Seeded fuzz of `selfalign planar` configs (standard library only): each case mutates one or
 two keys of a small valid TOML config (numbers to 0, negatives, NaN, inf, huge, tiny, wrong
 types, wrong array lengths; unknown keys; removed keys; other shapes and field types) and runs
-one of simulate/steady/field/stop with --csv and --out. A case fails on a signal, an exit code
-other than 0 or 2, an exit 2 whose stderr is not one "selfalign: error: " line or that leaves a
-file behind, or an exit 0 with anything on stderr. Runs slower than --timeout seconds are
-counted (long valid runs exist) but not failures.
+one of simulate/steady/field/stop with --csv and --out. A few cases instead name the config as
+an output, or one file by both outputs (./o.csv and o.csv, a parent path, a link: issue 20, D24,
+D25), or nest the config 1e5 deep (D23): these must be refused. A case fails on a signal, an
+exit code other than 0 or 2, an exit 2 whose stderr is not one "selfalign: error: " line or that
+leaves a file behind, an exit 0 with anything on stderr or for a case that must be refused, or a
+changed config. Runs slower than --timeout seconds are counted (long valid runs exist) but not
+failures.
 
     /usr/bin/python3 tests/fuzz/fuzz_planar.py --binary build/release/apps/selfalign/selfalign \\
         --seed 1 --cases 200
@@ -96,13 +99,30 @@ def main():
     for case in range(a.cases):
         cfg = mutate(rng)
         command = rng.choice(["simulate", "steady", "field", "stop"])
+        special = rng.choice(["aliased outputs", "output over config", "deep config"]) \
+            if rng.random() < 0.08 else None
         with tempfile.TemporaryDirectory() as root:
             path = os.path.join(root, "p.toml")
+            text = render(cfg)
+            outputs = ["--csv", "o.csv", "--out", "r.json"]
+            if special == "aliased outputs":
+                outputs = rng.choice([["--csv", "./o.csv", "--out", "o.csv"],
+                                      ["--csv", "o.csv", "--out", "../work/o.csv"]])
+            elif special == "output over config":
+                os.symlink("p.toml", os.path.join(root, "lnk"))
+                outputs = ["--csv", rng.choice(["../p.toml", "../work/../p.toml", "../lnk"]),
+                           "--out", "r.json"]
+            elif special == "deep config":
+                deep = 100000
+                if rng.random() < 0.5:
+                    path, text = os.path.join(root, "p.json"), "{\"table\": " + "[" * deep + "]" * deep + "}"
+                else:
+                    text = "table" + ".x" * deep + " = 1\n"
             with open(path, "w") as f:
-                f.write(render(cfg))
+                f.write(text)
             work = os.path.join(root, "work")
             os.mkdir(work)
-            args = [a.binary, "planar", command, "--config", path, "--csv", "o.csv", "--out", "r.json"]
+            args = [a.binary, "planar", command, "--config", path] + outputs
             try:
                 r = subprocess.run(args, cwd=work, capture_output=True, text=True, timeout=a.timeout)
             except subprocess.TimeoutExpired:
@@ -126,8 +146,13 @@ def main():
                 noise = [ln for ln in r.stderr.splitlines() if not ln.startswith("selfalign: warning: ")]
                 if noise:
                     why = "stderr on success: " + "\n".join(noise)[:300]
+                elif special:
+                    why = f"{special}: exit 0, must be refused ({' '.join(outputs)})"
+            with open(path) as f:
+                if f.read() != text:
+                    why = f"the config was changed ({' '.join(outputs)})"
             if why:
-                failures.append((case, command, why, render(cfg)))
+                failures.append((case, command, why, text[:2000]))
     print(f"planar fuzz seed {a.seed}: {a.cases} cases, {ok} ran, {refused} refused, {slow} slow, "
           f"{len(failures)} failed")
     for case, command, why, text in failures[:10]:

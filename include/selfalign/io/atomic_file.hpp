@@ -15,40 +15,17 @@
 ///  - a FIFO, character device or socket (e.g. /dev/null, a named pipe): written directly at
 ///    commit, never replaced;
 ///  - "-": standard output, written at commit after the files;
-///  - not a directory, and not a file this process read as an input (register_input_file):
-///    both throw InvalidParameter before anything is written.
+///  - not a directory, not an input of the run and not the file of another output of the run
+///    (require_output_path, run_files.hpp): these throw InvalidParameter before anything is
+///    written.
 
-#include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "selfalign/io/run_files.hpp"  // require_output_path, register_input_file
+
 namespace selfalign {
-
-/// Records that this process read `path` as an input given by `flag` (e.g. "--config"); no
-/// AtomicFileSet will write over it. Thread-safe.
-void register_input_file(const std::string& path, const std::string& flag);
-
-/// Checks that `path` can be read as the input `name`: a non-empty path that, where it exists,
-/// is a regular file (a folder is refused, and a FIFO or device, whose read would block or
-/// never end) of at most `max_bytes` bytes; then registers it under `flag`
-/// (register_input_file). Throws InvalidParameter(name, path, ...). A missing file is left to
-/// the reader, which names it.
-void require_input_file(const std::string& name, const std::string& path,
-                        const std::string& flag, std::uintmax_t max_bytes);
-
-/// The flag of the registered input that `path` names (the same file, also through a link,
-/// or the same absolute path), or none.
-std::optional<std::string> input_file_flag(const std::string& path);
-
-/// Throws InvalidParameter(name, path, ...) when `path` cannot be an output: empty, a
-/// directory, a registered input, or `other_input` (an input not read yet, e.g. the samples
-/// file named in a config; may be empty). Called before a run's work so that misuse costs
-/// nothing; AtomicFileSet::add checks the same again.
-void require_output_path(const std::string& name, const std::string& path,
-                         const std::string& other_input = {},
-                         const std::string& other_input_flag = {});
 
 /// A group of files committed together. Temporaries not committed are removed by the
 /// destructor (and by the signal handlers of remove_temporaries_on_signals). Not copyable.
@@ -62,8 +39,9 @@ class AtomicFileSet {
   /// Writes content to a fresh temporary beside path (or keeps it for a FIFO/device or "-").
   /// `name` is the parameter that chose the path (e.g. "out"), used in messages. Throws
   /// InvalidParameter(name, path, <reason>) when path is not a valid output (see
-  /// require_output_path), was already added, or cannot be created or written.
-  void add(const std::string& path, std::string_view content, const std::string& name = "out");
+  /// require_output_path, which registers it), was already added (under any spelling), or
+  /// cannot be created or written.
+  void add(const std::string& path, std::string_view content, const std::string& name);
 
   /// Renames every temporary onto its target, in the order added, then writes the FIFOs,
   /// devices and standard output. When a rename fails, the temporaries left are removed and
@@ -74,6 +52,7 @@ class AtomicFileSet {
  private:
   struct Pending {
     std::string name;       // the parameter, for messages
+    std::string path;       // as given
     std::string target;     // the file to replace (links resolved), or the FIFO/device
     std::string temporary;  // empty: written directly at commit (FIFO, device, stdout)
     std::string content;    // FIFO, device or stdout only
@@ -86,7 +65,7 @@ class AtomicFileSet {
 
 /// Writes one file atomically (an AtomicFileSet of one).
 void write_file_atomically(const std::string& path, std::string_view content,
-                           const std::string& name = "out");
+                           const std::string& name);
 
 /// Installs handlers for SIGINT, SIGTERM, SIGHUP and SIGPIPE that remove every temporary of
 /// every live AtomicFileSet, then end the process with the signal's default action (so the

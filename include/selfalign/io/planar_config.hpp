@@ -3,8 +3,10 @@
 /// The configuration of a planar run (`selfalign planar ...`, issue 13) from a TOML or JSON
 /// file, in SI units (units = "si", the default) or dimensionless (units = "dimensionless"),
 /// converted to the dimensionless model with the scales L, mu, g (units.hpp). docs/planar.md
-/// lists every table and key; examples/planar.toml is a complete example. Unknown keys and
-/// values out of range are refused with InvalidParameter naming the key.
+/// lists every table and key; examples/planar.toml is a complete example. The file is read by
+/// read_document (document.hpp: registered as the --config input, at most 4 levels deep, errors
+/// with line and column). Unknown keys and values out of range are refused with
+/// InvalidParameter naming the key.
 
 #include <memory>
 #include <string>

@@ -122,10 +122,11 @@ std::string_view config_type_name(const ConfigKey& key);
 /// The dimensionless defaults (Sect. 7.2). out, summary and samples stay unset; arrays empty.
 SimulateConfig simulate_config_defaults();
 
-/// Reads a .json (nlohmann) or .toml (toml++) file, chosen by extension. Throws
-/// InvalidParameter: ("config key", key, "unknown key in <file>; allowed: ...") for an unknown
-/// key, (key, value, "must be a <type> ...") for a wrong type, ("config file", path, <parser
-/// message>) for an unreadable or malformed file. Values are not range-checked here.
+/// Reads a .json or .toml file (read_document, io/document.hpp: one table of keys, at most 2
+/// levels deep) and registers it as the run's --config input. Throws InvalidParameter:
+/// ("config key", key, "unknown key ...") for an unknown key, (key, value, "must be a <type>
+/// ...") for a wrong type, ("config file", path, <what, with line and column>) for an
+/// unreadable, malformed or too deeply nested file. Values are not range-checked here.
 SimulateConfig load_simulate_config(const std::string& path);
 
 /// Sets one key from command-line text (numbers as C-locale text, "nan" parsed and refused by
@@ -162,11 +163,18 @@ struct OutputPaths {
 
   bool summary_to_stdout() const noexcept { return summary && *summary == "-"; }
 };
+/// Registers the files a config names as inputs of the run (`samples`, `field_file`;
+/// register_input_file, run_files.hpp), so that no output replaces them. Called when a config
+/// is complete (file and flags merged), before any work, and by resolve_output_paths.
+void register_config_files(const SimulateConfig& config);
+
 /// out as given; summary as given, else "<out without extension>.summary.json" when out is a
-/// file, none when out is "-" (the CSV takes standard output), else "-". Throws
-/// InvalidParameter (require_output_path, atomic_file.hpp) when a path is empty, a directory,
-/// an input read so far (--config) or the samples file, when both name the same file, or when
-/// both would go to standard output. Call it before the run's work.
+/// file, none when out is "-" (the CSV takes standard output), else "-". Registers the config's
+/// inputs (register_config_files) and both outputs (require_output_path, run_files.hpp), which
+/// throws InvalidParameter when a path is empty, a directory, an input of the run (--config,
+/// the samples or field file, ...) or the file of another output (out and summary naming one
+/// file, however spelled); throws too when both would go to standard output. Call it before
+/// the run's work.
 OutputPaths resolve_output_paths(const SimulateConfig& config);
 
 }  // namespace selfalign

@@ -6,8 +6,10 @@
 ///   c_mu = "normal:2.5,0.125,2,3"
 ///   width = "samples:0.00298,0.00301,0.00303"
 ///   x_mu_offset = "interval:-2e-4,2e-4"
-/// Throws InvalidParameter naming the file or the key on unreadable files, unknown keys and
-/// invalid distributions.
+/// The file is read by read_document (io/document.hpp: registered as the --uncertainty-file
+/// input, at most 2 levels deep). Throws InvalidParameter naming the file (and the line and
+/// column) or the key on unreadable or malformed files, unknown keys and invalid
+/// distributions.
 
 #include <string>
 

@@ -28,6 +28,8 @@ class Case:
         # ("refused", flag): exit 2 naming the flag; ("runs",): exit 0; ("hint",): exit 2 with
         # a "did you mean" suggestion. None: only the general contract.
         self.expect = None
+        self.must_refuse = None  # (flag, path): an input the run must refuse while the command
+        #                          line still gives it (e.g. a wrong-typed design report)
 
     def argv(self):
         return self.sub + [t for u in self.units for t in u]
@@ -82,7 +84,7 @@ def clone(case):
     c = Case(case.index, case.seed)
     c.sub, c.units = list(case.sub), [list(u) for u in case.units]
     c.files = list(case.files)
-    c.tags, c.big = list(case.tags), case.big
+    c.tags, c.big, c.must_refuse = list(case.tags), case.big, case.must_refuse
     c.inputs, c.config_outputs = set(case.inputs), set(case.config_outputs)
     c.config_inputs = dict(case.config_inputs)
     c.expect = case.expect

@@ -8,8 +8,8 @@ import re
 import signal
 
 from .content import check_csv, check_json
-from .contract import (DOCUMENTED_INTERNALS, GENERIC_NAMES, HELP_FLAGS, INTERNALS, PARAM_NAMES,
-                       PREFIX, SANITIZER_MARKERS, WARNING_PREFIX)
+from .contract import (DOCUMENT_ERRORS, DOCUMENTED_INTERNALS, GENERIC_NAMES, HELP_FLAGS,
+                       INTERNALS, PARAM_NAMES, PREFIX, SANITIZER_MARKERS, WARNING_PREFIX)
 from .folder import describe, read_head
 from .vocabulary import CSV_SUMMARY_SUBS
 
@@ -20,7 +20,7 @@ def designated_outputs(case):
     outs = set(case.config_outputs)
     argv = case.argv()
     for i, a in enumerate(argv):
-        for flag in ("out", "summary", "profile-csv", "runs-csv"):
+        for flag in OUTPUT_FLAGS:
             if a == "--" + flag and i + 1 < len(argv):
                 outs.add((argv[i + 1], flag))
             elif a.startswith("--" + flag + "="):
@@ -34,13 +34,17 @@ def designated_outputs(case):
     return {os.path.normpath(o) for o, flag in outs if o and not (o == "-" and flag == "summary")}
 
 
+INPUT_FLAGS = ("config", "samples", "uncertainty-file", "design")
+OUTPUT_FLAGS = ("out", "summary", "profile-csv", "runs-csv")
+
+
 def read_inputs(case):
-    """The candidate inputs the final command line reads: values of --config / --samples, and
-    the samples file a given config names."""
+    """The candidate inputs the final command line reads: values of the input flags, and the
+    samples file a given config names."""
     argv = case.argv()
     named = set()
     for i, a in enumerate(argv):
-        for flag in ("config", "samples"):
+        for flag in INPUT_FLAGS:
             if a == "--" + flag and i + 1 < len(argv):
                 named.add(argv[i + 1])
             elif a.startswith("--" + flag + "="):
@@ -59,6 +63,20 @@ def resolve_in(before, path):
         path = os.path.normpath(os.path.join(os.path.dirname(path), before[path][1]))
         seen += 1
     return path
+
+
+def aliased_outputs(case, before):
+    """Two output flags of the command line naming one file (./x and x, sub/../x, a link): the
+    run must refuse them (docs/cli.md, "Outputs and inputs"; D25)."""
+    argv = case.argv()
+    files = {}
+    for i, a in enumerate(argv):
+        for flag in OUTPUT_FLAGS:
+            path = argv[i + 1] if a == "--" + flag and i + 1 < len(argv) else \
+                a.split("=", 1)[1] if a.startswith("--" + flag + "=") else None
+            if path and path != "-":
+                files.setdefault(resolve_in(before, os.path.normpath(path)), set()).add(flag)
+    return sorted(f"{p} ({', '.join(sorted(flags))})" for p, flags in files.items() if len(flags) > 1)
 
 
 def names_parameter(msg):
@@ -136,6 +154,9 @@ def check(case, o, max_line):
             marker = internals_in(msg)
             if marker:
                 f.append(("error-internals", f"{marker!r} in {first[:200]!r}"))
+            if any(w in msg for w in DOCUMENT_ERRORS) and not (
+                    "line " in msg and any(fs.path in msg for fs in case.files)):
+                f.append(("error-no-place", f"a document error without its file and line: {first[:200]!r}"))
             if not names_parameter(msg):
                 f.append(("error-no-parameter", repr(first[:200])))
         if stdout_b.strip():
@@ -155,6 +176,10 @@ def check(case, o, max_line):
     noise = [ln for ln in stderr.strip().splitlines() if not ln.startswith(WARNING_PREFIX)]
     if noise:
         f.append(("stderr-on-success", repr(noise[0][:160])))
+    if case.must_refuse and case.value(case.must_refuse[0]) == case.must_refuse[1]:
+        f.append(("invalid-accepted", f"exit 0 for an input that must be refused ({'; '.join(case.tags)})"))
+    for alias in aliased_outputs(case, before):
+        f.append(("outputs-aliased", f"exit 0 with two outputs naming {alias}"))
     for p in changed:
         if p in inputs or p.endswith(".tmp") or p in tmp:
             continue

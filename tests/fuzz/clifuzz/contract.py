@@ -111,7 +111,11 @@ NULLABLE = {
 INTERNALS = ["std::", "vector::", "CLI::", "toml::", "nlohmann::", "tbb::", "bad_alloc", "bad_array_new_length", "basic_string", "_M_",
              "Unable to cast", "terminate called", "what()", "stoi", "stod", "nlohmann", "tbb",
              "TBB", "Eigen", "__cxa", "Assertion", "vector", "out_of_range", "invalid_argument",
-             "length_error", "nlopt", "NLopt", "json.exception"]
+             "length_error", "nlopt", "NLopt", "json.exception", "TOML_"]
+# Errors about a JSON / TOML document: they name the file, the line and the column
+# (docs/cli.md, "Errors"; D31: "number overflow" named neither).
+DOCUMENT_ERRORS = ["parse error", "syntax error", "number overflow", "not valid JSON",
+                   "not valid TOML", "nests too deeply"]
 DOCUMENTED_INTERNALS = []  # docs/config.md no longer shows a parser id in any message
 
 SANITIZER_MARKERS = ["ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "runtime error:",

@@ -1,8 +1,11 @@
 """The fixed corpus: cases 0 .. len(CORPUS)-1, one per item of the contract and per known defect
 class, so that a short run (the sanitizer build) covers them all; random cases follow."""
 
+import json
+
 from .case import Case
 from .config_files import deep_expr, huge_string_expr
+from .mutate_documents import REPORT, deep_document_expr
 from .values import LONG_GARBAGE, VALID_SAMPLES_CONSTANT
 
 
@@ -17,8 +20,22 @@ def _f(path, payload=None, kind="file"):
     return (path, kind, payload)
 
 
+def _report(*changes):
+    """A design report (mutate_documents.REPORT) with (section, key, value) changes."""
+    report = json.loads(json.dumps(REPORT))
+    for section, key, value in changes:
+        report[section][key] = value
+    return repr(json.dumps(report).encode())
+
+
+U_TOML = repr(b'mu = "normal:0.3,3%"\n')
+DESIGN = ["design", "--acceleration-grid", "4", "--period-grid", "2", "--stroke-grid", "1", "--entries", "3"]
+MC = ["montecarlo", "--period-s", "0.05", "--stroke-m", "0.0005", "--a2", "5", "--a3", "4", "--x-mu", "0.05",
+      "--distance", "0.055", "--tolerance", "0.001", "--uncertain", "mu=normal:0.3,3%", "--runs", "20"]
+
+
 CORPUS = [
-    # (tag, argv, files, inputs, big[, expect]): expect as Case.expect
+    # (tag, argv, files, inputs, big[, expect[, must_refuse]]): as Case.expect, Case.must_refuse
     ("no subcommand", [], [], [], False),
     ("--help", ["--help"], [], [], False),
     ("--version", ["--version"], [], [], False),
@@ -165,6 +182,33 @@ CORPUS = [
      [_f("cfg.toml", CFG_TOML), _f("clink.csv", "cfg.toml", "symlink")], ["cfg.toml"], False),
     ("profile-csv = out", ["design", "--acceleration-grid", "4", "--period-grid", "2", "--stroke-grid", "1",
                            "--entries", "3", "--out", "r.json", "--profile-csv", "r.json"], [], [], False),
+    # the robust commands' documents and outputs (issue 20)
+    ("deep uncertainty JSON (D23)", MC + ["--uncertainty-file", "u.json"],
+     [_f("u.json", deep_document_expr("json", 100000, "array"))], ["u.json"], False),
+    ("deep uncertainty dotted TOML (D23)", DESIGN + ["--uncertainty-file", "u.toml"],
+     [_f("u.toml", deep_document_expr("toml", 100000, "dotted"))], ["u.toml"], False),
+    ("deep design report (D23)", ["montecarlo", "--design", "d.json", "--runs", "20"],
+     [_f("d.json", 'b"{\\"profile\\": " + b"[" * 100000 + b"]" * 100000 + b"}"')], ["d.json"], False),
+    ("report jerk [1] (D30)", ["montecarlo", "--design", "d.json", "--uncertain", "mu=normal:0.3,3%", "--runs", "20"],
+     [_f("d.json", _report(("profile", "jerk_m_per_s3", [1])))], ["d.json"], False, None, ("design", "d.json")),
+    ("report distance true (D30)", ["montecarlo", "--design", "d.json", "--uncertain", "mu=normal:0.3,3%", "--runs", "20"],
+     [_f("d.json", _report(("request", "distance_m", True)))], ["d.json"], False, None, ("design", "d.json")),
+    ("report 1e999 (D31)", ["montecarlo", "--design", "d.json", "--uncertain", "mu=normal:0.3,3%"],
+     [_f("d.json", repr(b'{"profile": {"period_s": 1e999}}'))], ["d.json"], False),
+    ("uncertainty invalid byte (D31)", MC + ["--uncertainty-file", "u.json"], [_f("u.json", repr(b"\xff\xfe{"))], ["u.json"], False),
+    ("out = design report (D24)", ["montecarlo", "--design", "d.json", "--uncertain", "mu=normal:0.3,3%", "--runs", "20",
+                                   "--out", "d.json"], [_f("d.json", _report())], ["d.json"], False),
+    ("runs-csv = uncertainty file (D24)", MC + ["--uncertainty-file", "u.toml", "--runs-csv", "./u.toml"],
+     [_f("u.toml", U_TOML)], ["u.toml"], False),
+    ("profile-csv -> link to uncertainty (D24)", DESIGN + ["--uncertainty-file", "u.toml", "--monte-carlo", "20",
+                                                          "--tolerance", "0.001", "--profile-csv", "lnk"],
+     [_f("u.toml", U_TOML), _f("lnk", "u.toml", "symlink")], ["u.toml"], False),
+    ("out = sub/../uncertainty (D24)", DESIGN + ["--uncertainty-file", "u.toml", "--out", "sub/../u.toml"],
+     [_f("u.toml", U_TOML), _f("sub", kind="dir")], ["u.toml"], False),
+    ("design ./x and x (D25)", DESIGN + ["--out", "./same.out", "--profile-csv", "same.out"], [], [], False),
+    ("montecarlo x and sub/../x (D25)", MC + ["--out", "same.out", "--runs-csv", "sub/../same.out"],
+     [_f("sub", kind="dir")], [], False),
+    ("simulate ./x and x", ["simulate", "--periods", "1", "--out", "./o.csv", "--summary", "o.csv"], [], [], False),
     # big requests: refused (or done) quickly
     ("periods 1e9 --out (D11)", ["simulate", "--periods", "1e9", "--out", "p.csv"], [], [], True),
     ("output-step 1e-12 (D11)", ["simulate", "--output-step", "1e-12"], [], [], True),
@@ -186,6 +230,7 @@ CORPUS = [
 
 def corpus_case(index, seed):
     tag, argv, files, inputs, big = CORPUS[index][:5]
+    extra = CORPUS[index][5:]
     c = Case(index, seed)
     n = 2 if argv[:1] == ["sweep"] and len(argv) > 1 and not argv[1].startswith("-") else min(1, len(argv))
     if argv[:1] and argv[0].startswith("-"):
@@ -205,6 +250,7 @@ def corpus_case(index, seed):
         c.add_file(path, kind, payload)
     c.inputs = set(inputs)
     c.big = big
-    c.expect = CORPUS[index][5] if len(CORPUS[index]) > 5 else None
+    c.expect = extra[0] if extra else None
+    c.must_refuse = extra[1] if len(extra) > 1 else None
     c.tags = ["corpus: " + tag]
     return c

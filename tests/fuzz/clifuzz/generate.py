@@ -7,6 +7,7 @@ from .corpus import CORPUS, corpus_case
 from .mutate_flags import (EXPECTING, mutate_big, mutate_drop, mutate_equals, mutate_help,
                            mutate_list, mutate_number, mutate_range, mutate_repeat, mutate_text,
                            mutate_unknown, pool, time_stepping_for_simulate)
+from .mutate_documents import mutate_design_report, mutate_uncertainty_file
 from .mutate_inputs import mutate_config, mutate_samples
 from .mutate_outputs import ensure_samples, mutate_collision, output_flags
 from .values import BASE
@@ -71,7 +72,7 @@ def choose_profile(c, sub):
 MUTATIONS = [(mutate_number, 30), (mutate_text, 6), (mutate_list, 6), (mutate_range, 5),
              (mutate_repeat, 4), (mutate_unknown, 5), (mutate_equals, 5), (mutate_drop, 3),
              (mutate_help, 1), (mutate_big, 3), (mutate_config, 14), (mutate_samples, 8),
-             (mutate_collision, 14)]
+             (mutate_collision, 14), (mutate_uncertainty_file, 4), (mutate_design_report, 4)]
 
 
 def generate(index, seed):

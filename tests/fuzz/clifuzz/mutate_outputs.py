@@ -1,10 +1,12 @@
-"""Mutations of the run's outputs: outputs that collide with inputs or with each other, and
-outputs that are folders, FIFOs, symbolic links, existing files or odd names."""
+"""Mutations of the run's outputs: outputs that collide with inputs or with each other (also
+spelled differently: ./x, sub/../x, a symbolic link), and outputs that are folders, FIFOs,
+symbolic links, existing files or odd names."""
 
 from .config_files import render_config
+from .mutate_documents import ensure_report, ensure_uncertainty
 from .mutate_flags import mutate_unknown
 from .values import VALID_SAMPLES_CONSTANT
-from .vocabulary import FLAGS, KIND
+from .vocabulary import CSV_SUMMARY_SUBS, FLAGS, KIND
 
 
 def output_flags(sub):
@@ -32,6 +34,42 @@ def ensure_samples(c):
     return "s.csv"
 
 
+def alias_of(c, target):
+    """`target` (a path in the case folder) as written, or spelled another way (D24, D25)."""
+    how = c.rng.choice(["same", "dot", "parent", "link"])
+    c.tags.append(f"alias {how}")
+    if how == "dot":
+        return "./" + target
+    if how == "parent":
+        c.add_file("sub", "dir")
+        return "sub/../" + target
+    if how == "link":
+        c.add_file("lnk", "symlink", target)
+        return "lnk"
+    return target
+
+
+def an_input(c, sub):
+    """An input file the command reads, created when the case has none; its path or None."""
+    makers = []
+    if "config" in FLAGS[sub]:
+        makers.append(lambda: ensure_config(c, sub))
+    if "samples" in FLAGS[sub]:
+        makers.append(lambda: ensure_samples(c))
+    if "uncertainty-file" in FLAGS[sub]:
+        makers.append(lambda: ensure_uncertainty(c))
+    if "design" in FLAGS[sub]:
+        makers.append(lambda: ensure_report(c))
+    return c.rng.choice(makers)() if makers else None
+
+
+def two_outputs(sub):
+    """Two output flags of one run, or None."""
+    if sub in CSV_SUMMARY_SUBS:
+        return ("out", "summary")
+    return {"design": ("out", "profile-csv"), "montecarlo": ("out", "runs-csv")}.get(sub)
+
+
 def mutate_collision(c, sub):
     rng = c.rng
     outs = output_flags(sub)
@@ -48,9 +86,20 @@ def mutate_collision(c, sub):
                     "derived=symlink-config"]
     if "profile-csv" in outs:
         choices += ["csv=out", "csv=dir", "csv=fifo"]
+    choices += ["input-alias"] * 3 + (["outputs-alias"] * 3 if two_outputs(sub) else [])
     kind = rng.choice(choices)
     c.tags.append(kind)
-    if kind == "out=config":
+    if kind == "input-alias":  # any output over any input, however spelled (D24)
+        target = an_input(c, sub)
+        if target is None:
+            return mutate_unknown(c, sub)
+        c.set(rng.choice(outs), alias_of(c, target))
+    elif kind == "outputs-alias":  # two outputs naming one file (D25)
+        first, second = two_outputs(sub)
+        name = rng.choice(["o.csv", "same.out"])
+        c.set(first, name)
+        c.set(second, alias_of(c, name))
+    elif kind == "out=config":
         c.set("out", ensure_config(c, sub))
     elif kind == "out=samples":
         if "samples" in FLAGS[sub]:
