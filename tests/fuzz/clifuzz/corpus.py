@@ -12,8 +12,8 @@ from .values import LONG_GARBAGE, VALID_SAMPLES_CONSTANT
 S_OK = repr(VALID_SAMPLES_CONSTANT.encode())
 CFG_TOML = repr(b"periods = 2.0\n")
 CFG_JSON = repr(b'{"periods": 2.0}\n')
-MC = ["montecarlo", "--period-s", "0.05", "--stroke-m", "0.0005", "--a2", "5", "--a3", "4", "--x-mu",
-      "0.05", "--distance", "0.055", "--tolerance", "0.001", "--runs", "20"]
+MC_NO_UNCERTAIN = ["montecarlo", "--period-s", "0.05", "--stroke-m", "0.0005", "--a2", "5", "--a3", "4",
+                   "--x-mu", "0.05", "--distance", "0.055", "--tolerance", "0.001", "--runs", "20"]
 
 
 def _f(path, payload=None, kind="file"):
@@ -110,11 +110,11 @@ CORPUS = [
     ("design --mu-static nan (D29)", ["design", "--acceleration-grid", "4", "--period-grid", "2",
                                       "--stroke-grid", "1", "--entries", "3", "--mu-static", "nan"],
      [], [], False, ("refused", "mu-static")),
-    ("montecarlo --x-mu nan (D29)", MC + ["--uncertain", "mu=normal:0.3,3%", "--x-mu", "nan"], [], [],
+    ("montecarlo --x-mu nan (D29)", MC_NO_UNCERTAIN + ["--uncertain", "mu=normal:0.3,3%", "--x-mu", "nan"], [], [],
      False, ("refused", "x-mu")),
     ("unused --width nan (D35)", ["steady", "--width", "nan"], [], [], False, ("refused", "width")),
     ("unused --x0 1e60 (D35)", ["steady", "--x0", "1e60"], [], [], False, ("refused", "x0")),
-    ("unused --stroke-max nan", MC + ["--uncertain", "mu=normal:0.3,3%", "--stroke-max", "nan"], [],
+    ("unused --stroke-max nan", MC_NO_UNCERTAIN + ["--uncertain", "mu=normal:0.3,3%", "--stroke-max", "nan"], [],
      [], False, ("refused", "stroke-max")),
     ("--mu-backward 1e-300 (D32)", ["steady", "--mu-backward", "1e-300"], [], [], False,
      ("refused", "mu-backward")),
@@ -126,7 +126,7 @@ CORPUS = [
      [_f("f.csv", repr(b"0,1\n1,2\n"))], ["f.csv"], False, ("refused", "field-interpolation")),
     ("subcommand typo", ["desing"], [], [], False, ("hint",)),
     ("flag typo --c_mu", ["steady", "--c_mu", "2"], [], [], False, ("hint",)),
-    ("montecarlo nothing uncertain", MC, [], [], False, ("refused", "uncertain")),
+    ("montecarlo nothing uncertain", MC_NO_UNCERTAIN, [], [], False, ("refused", "uncertain")),
     ("--mu-static without --mu (F07)", ["steady", "--mu-static", "0.36", "--json"], [], [], False,
      ("runs",)),
     ("law on converge (D22)", ["converge", "--periods", "2", "--mu", "0.3", "--mu-static", "0.36",

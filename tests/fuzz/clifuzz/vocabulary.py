@@ -38,7 +38,9 @@ FLAGS = {  # as `selfalign SUBCOMMAND --help` lists them (fuzz_cli.py checks it 
     "stop": _SECT7 + ["x-mu", "t0", "x0", "v0", "output-step", "fractions", "max-periods", "out",
                       "summary", "json"],
     "accuracy": _SECT7 + ["out", "summary", "json", "entries", "max-periods"],
-    "accumulation": _SECT7 + ["x-mu", "out", "summary", "json", "x1", "from", "to", "n"],
+    # accumulation: eq. (59) is the paper's law's, so no law flags (issue 20, D28)
+    "accumulation": [f for f in _SECT7 if f not in LAW] + ["x-mu", "out", "summary", "json", "x1",
+                                                          "from", "to", "n"],
     "sweep accelerations": _MODEL + _SWEEP + ["a2-range", "a3-range"],
     "sweep period": _MODEL + _SWEEP + ["range", "family"],
     "sweep stroke": _MODEL + _SWEEP + ["range", "family"],
