@@ -243,6 +243,25 @@ TEST(Fragility, TheNominalDesignOfTheIssueIsFlagged) {
   EXPECT_LT(f.stop_margin, 0.05);
   EXPECT_FALSE(f.warnings.empty());
   EXPECT_TRUE(std::isnan(f.end_mu[0]));  // mu 5% low: never stops
+  // mu_static: the request gave none, so the design assumed mu_static = mu; a plain warning
+  // says what 5% more does. Ratio max(1, 0.95) = 1 is the nominal run itself; at 1.05 the part
+  // sticks for good where 1.05 m(x) >= peak, at or beyond x_mu + w (peak/(1.05 mu g) - 1)/(c_mu
+  // - 1) (eqs. 40, 41 with the static coefficient).
+  EXPECT_TRUE(f.assumes_equal_static);
+  EXPECT_EQ(f.end_static[0], f.end_nominal);
+  const double peak = 2.5 * 0.2 * 9.81 / (0.2 * 9.81);  // [mu g]
+  EXPECT_GE(f.end_static[1], 0.037 + 0.003 * (peak / 1.05 - 1) / (2.5 - 1) - 1e-12);
+  EXPECT_GT(f.end_shift_static, 0);
+  const auto plain = std::find_if(f.warnings.begin(), f.warnings.end(), [](const std::string& w) {
+    return w.find("assumes mu_static = mu") != std::string::npos;
+  });
+  EXPECT_NE(plain, f.warnings.end());
+  // Given mu_static, the design no longer assumes it.
+  DesignRequest with_static = q;
+  with_static.mu_static = 0.24;
+  const Fragility s = fragility(with_static, nominal);
+  EXPECT_FALSE(s.assumes_equal_static);
+  for (const std::string& w : s.warnings) EXPECT_EQ(w.find("assumes mu_static"), std::string::npos) << w;
   // A design with a 15% margin and a wide tolerance is not fragile in stopping.
   DesignRequest wide = q;
   wide.tolerance = 1e-3;

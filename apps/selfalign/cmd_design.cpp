@@ -243,7 +243,8 @@ void add_design_command(CLI::App& app) {
                   "runs under the --uncertain inputs. Default: 0 (none)")
       ->group("Robust");
   sub->add_option("--fragility-level", f->fragility_level,
-                  "relative error of mu and c_mu the fragility check applies, in (0, 1). "
+                  "relative error of mu, c_mu and mu_static the fragility check applies, in "
+                  "(0, 1). "
                   "Default: 0.05")
       ->group("Robust");
   sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");

@@ -392,11 +392,13 @@ Nelder-Mead from the `starts` worst points (local_evaluations runs each). Determ
 independent of threads.)doc");
 
   py::class_<Fragility> f(m, "Fragility", R"doc(
-How fragile a process is to mu and c_mu at relative error `level`: stop_margin (the relative
-drop of mu_static c_mu after which it never stops, eq. 40), motion_margin, the end positions
-with mu and c_mu off by -/+level (NaN: never stops), the largest shifts (inf: a run never
-stops) and one warning line per finding.)doc");
-  f.def_readonly("level", &Fragility::level, "the relative error of mu and c_mu examined [-]")
+How fragile a process is to mu, c_mu and mu_static at relative error `level`: stop_margin (the
+relative drop of mu_static c_mu after which it never stops, eq. 40), motion_margin, the end
+positions with mu and c_mu off by -/+level and the static ratio mu_static/mu at max(1, (1 -
+level) s) and (1 + level) s (NaN: never stops), the largest shifts (inf: a run never stops),
+assumes_equal_static (the request gave no mu_static above mu) and one warning line per finding
+(a plain one whenever the design assumed mu_static = mu).)doc");
+  f.def_readonly("level", &Fragility::level, "the relative error of mu, c_mu and mu_static examined [-]")
       .def_readonly("stop_margin", &Fragility::stop_margin, "1 - max(a2, a3)/(mu_static c_mu g): relative drop of mu_static c_mu before it never stops [-]")
       .def_readonly("motion_margin", &Fragility::motion_margin, "a2/(mu_static g) - 1: relative rise of mu_static before it never moves [-]")
       .def_readonly("end_nominal", &Fragility::end_nominal, "end position at the nominal inputs [m]")
@@ -404,6 +406,9 @@ stops) and one warning line per finding.)doc");
       .def_readonly("end_c_mu", &Fragility::end_c_mu, "end positions with c_mu at (1 - level), (1 + level) x nominal [m]; NaN: never stops")
       .def_readonly("end_shift_mu", &Fragility::end_shift_mu, "largest |end - end_nominal| over the mu runs [m]; inf: one never stops")
       .def_readonly("end_shift_c_mu", &Fragility::end_shift_c_mu, "largest |end - end_nominal| over the c_mu runs [m]; inf: one never stops")
+      .def_readonly("end_static", &Fragility::end_static, "end positions with the static ratio s = mu_static/mu at max(1, (1 - level) s), (1 + level) s [m]; NaN: never stops")
+      .def_readonly("end_shift_static", &Fragility::end_shift_static, "largest |end - end_nominal| over the static-ratio runs [m]; inf: one never stops")
+      .def_readonly("assumes_equal_static", &Fragility::assumes_equal_static, "the request left mu_static unset or equal to mu")
       .def_readonly("warnings", &Fragility::warnings, "one line per finding; empty when not fragile at this level")
       .def_property_readonly(
           "fragile", [](const Fragility& x) { return !x.warnings.empty(); },
@@ -419,6 +424,9 @@ stops) and one warning line per finding.)doc");
              field("end_c_mu", &Fragility::end_c_mu),
              field("end_shift_mu", &Fragility::end_shift_mu),
              field("end_shift_c_mu", &Fragility::end_shift_c_mu),
+             field("end_static", &Fragility::end_static),
+             field("end_shift_static", &Fragility::end_shift_static),
+             field("assumes_equal_static", &Fragility::assumes_equal_static),
              field("warnings", &Fragility::warnings));
   m.def(
       "fragility",
@@ -428,7 +436,7 @@ stops) and one warning line per finding.)doc");
       },
       py::arg("request"), py::arg("process"), py::kw_only(), py::arg("level") = 0.05,
       py::arg("max_periods") = 3000,
-      "Fragility of the process to mu and c_mu off by `level` (relative, in (0, 1)).");
+      "Fragility of the process to mu, c_mu and mu_static off by `level` (relative, in (0, 1)).");
 }
 
 void bind_robust_design(py::module_& m) {

@@ -39,6 +39,9 @@ def test_the_issue_task_is_answered_and_checked_independently():
     f = sa.fragility(TASK, sa.process_of(nominal))
     assert f.fragile and f.stop_margin < 0.05
     assert math.isnan(f.end_mu[0]) and math.isinf(f.end_shift_mu)
+    # It was made without mu_static: a plain warning says what 5% more static friction does.
+    assert f.assumes_equal_static and f.end_static[0] == f.end_nominal
+    assert any("assumes mu_static = mu" in w for w in f.warnings)
 
 
 def test_absent_values_are_nan_not_zero():
