@@ -34,6 +34,12 @@ def test_the_issue_task_is_answered_and_checked_independently():
         assert abs(check.p_within - best) <= 4 * se
         assert check.p_within_high < 0.99
         assert r.binding == "end-position spread"
+        # What is achievable: the tolerance this profile holds at P >= 0.99.
+        assert r.achievable_tolerance > TASK.tolerance and "this design holds +-" in r.message
+    # The claim comes from draws that selected nothing; the screen's rungs are 25 ... 200.
+    assert r.selection.seed != r.verification.seed
+    assert r.rungs == [25, 50, 100, 200]
+    assert isinstance(r.limits, list) and r.to_dict()["limits"] == r.limits
     # The nominal design of the same task is flagged fragile (the issue: a2 = c_mu mu g).
     nominal = sa.design_process(TASK)
     f = sa.fragility(TASK, sa.process_of(nominal))
