@@ -302,7 +302,7 @@ TEST(RobustDesign, TheIssueTaskIsInfeasibleAndSaysWithWhatProbability) {
   u.mu = Normal{0.2, 0.01};
   u.c_mu = Normal{2.5, 0.125};
   RobustOptions o;
-  o.screening_runs = 100;
+  o.screening_runs = 100, o.finalists = 3;
   o.verification_runs = 2000;
   const RobustDesignResult r = design_robust(q, u, o);
   ASSERT_FALSE(r.meets_target);
@@ -333,6 +333,7 @@ TEST(RobustDesign, JerkLimitedProfilesAndStaticAboveKinetic) {
   u.mu = Normal{0.2, 0.006};
   u.static_ratio = Uniform{1.05, 1.15};
   RobustOptions o;
+  o.screening_runs = 100, o.finalists = 3;
   o.verification_runs = 2000;
   const RobustDesignResult r = design_robust(q, u, o);
   ASSERT_GT(r.verified, 0) << r.message;
