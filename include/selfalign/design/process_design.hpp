@@ -4,7 +4,8 @@
 /// profile that minimises the process time T_p (Sect. 2's first objective) subject to a
 /// positioning requirement (Sect. 7): accumulation (Δx_d = 0) or a given tolerance.
 ///
-/// The search (deterministic, parallel over candidates): periods from 1/f_max to 1/f_min,
+/// The search (deterministic, parallel over chunks of the grid, streamed: it keeps each chunk's
+/// best candidate, not the grid; DesignGrid): periods from 1/f_max to 1/f_min,
 /// strokes up to the actuator stroke, and (y2'', y3'') in (1, min(c_mu, a_max)] x
 /// (0, min(c_mu, a_max)] (y2'' > 1 moves the object; <= c_mu lets it stop for good, eq. 41),
 /// keeping profiles whose exact velocity extrema y'_ini and y'_ini - D respect v_max. Each
@@ -114,8 +115,9 @@ class DesignGrid {
   std::string empty_message(std::size_t non_physical, std::size_t too_fast) const;
   /// The limits the profile at a grid point sits on, e.g. "frequency at frequency_min = 5 Hz
   /// (the default)": grid edges that are request limits (frequency_min, frequency_max,
-  /// stroke_max, acceleration_max) and the top of the acceleration axis c_mu mu g. A design
-  /// pinned there might do better with that limit relaxed.
+  /// stroke_max, acceleration_max) and the top of the acceleration axis c_mu mu g; "(the
+  /// default)" marks a value equal to DesignRequest's default. A design pinned there might do
+  /// better with that limit relaxed.
   std::vector<std::string> pinned_limits(const ThreePhaseParameters& profile) const;
 
  private:
