@@ -22,6 +22,15 @@ namespace {
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
+// The sanitizer build (a Debug build, ~20x slower here) screens some robust searches on fewer
+// draws (50 instead of 100) and checks a claim on fewer independent runs.
+#ifdef SELFALIGN_SANITIZED_TESTS
+constexpr bool kSanitized = true;
+#else
+constexpr bool kSanitized = false;
+#endif
+constexpr int kScreeningRuns = kSanitized ? 50 : 100;
+
 // The issue's task: a 20 g part, mu 0.2, c_mu 2.5 over a 3 mm transition, 2 mm stroke,
 // 50 m/s^2, 30 Hz, 40 mm to go, +-0.1 mm.
 DesignRequest issue_task() {
@@ -280,7 +289,7 @@ TEST(RobustDesign, MeetsTheTargetUnderAnIndependentMonteCarlo) {
   u.mu = Normal{0.2, 0.01};
   u.c_mu = Normal{2.5, 0.125};
   RobustOptions o;
-  o.screening_runs = 100;
+  o.screening_runs = 100;  // (50 do not find a design that meets the target)
   o.verification_runs = 2000;
   const RobustDesignResult r = design_robust(q, u, o);
   ASSERT_TRUE(r.meets_target) << r.message;
@@ -302,7 +311,7 @@ TEST(RobustDesign, TheIssueTaskIsInfeasibleAndSaysWithWhatProbability) {
   u.mu = Normal{0.2, 0.01};
   u.c_mu = Normal{2.5, 0.125};
   RobustOptions o;
-  o.screening_runs = 100, o.finalists = 3;
+  o.screening_runs = kScreeningRuns, o.finalists = 3;
   o.verification_runs = 2000;
   const RobustDesignResult r = design_robust(q, u, o);
   ASSERT_FALSE(r.meets_target);
@@ -333,8 +342,8 @@ TEST(RobustDesign, JerkLimitedProfilesAndStaticAboveKinetic) {
   u.mu = Normal{0.2, 0.006};
   u.static_ratio = Uniform{1.05, 1.15};
   RobustOptions o;
-  o.screening_runs = 100, o.finalists = 3;
-  o.verification_runs = 2000;
+  o.screening_runs = kScreeningRuns, o.finalists = 3;
+  o.verification_runs = kSanitized ? 1000 : 2000;
   const RobustDesignResult r = design_robust(q, u, o);
   ASSERT_GT(r.verified, 0) << r.message;
   EXPECT_EQ(r.process.jerk, 3000);
@@ -399,11 +408,10 @@ TEST(RobustDesign, MoreEffortNeverSelectsAWorseDesign) {
   // Rungs of 25, 50, ... draws, each independent of the effort after it, and the same
   // selection draws: (25, 1) -> (50, 2) repeats the first rung and verifies a superset of the
   // finalists (the old screen, sliding x_mu rigidly, gave P = 0.941 at 25 runs and 0.939 at 50).
-#ifdef SELFALIGN_SANITIZED_TESTS
-  const std::vector<std::pair<int, int>> efforts{{25, 1}, {25, 2}};
-#else
-  const std::vector<std::pair<int, int>> efforts{{25, 1}, {50, 2}};
-#endif
+  // (The sanitizer build: one rung of 10 draws, 1 then 2 finalists.)
+  const std::vector<std::pair<int, int>> efforts =
+      kSanitized ? std::vector<std::pair<int, int>>{{10, 1}, {10, 2}}
+                 : std::vector<std::pair<int, int>>{{25, 1}, {50, 2}};
   RobustOptions o;
   const RobustDesignResult* previous = nullptr;
   for (const auto& [runs, finalists] : efforts) {
@@ -423,16 +431,12 @@ TEST(RobustDesign, MoreEffortNeverSelectsAWorseDesign) {
 TEST(RobustDesign, TheClaimAgreesWithAnIndependentMonteCarlo) {
   // The claim is the verification's, on draws that selected nothing: a Monte Carlo of 10^4 runs
   // with another seed lands within its 95% interval.
-#ifdef SELFALIGN_SANITIZED_TESTS
-  const RobustDesignResult& r = permanent_stick_design(25, 2);
-#else
-  const RobustDesignResult& r = permanent_stick_design(50, 2);
-#endif
+  const RobustDesignResult& r = permanent_stick_design(kSanitized ? 10 : 50, 2);
   ASSERT_GT(r.verified, 0) << r.message;
   EXPECT_NE(r.selection.seed, r.verification.seed);
   MonteCarloOptions check;
   check.seed = 20261202;
-  check.runs = 10'000;
+  check.runs = kSanitized ? 2000 : 10'000;
   const MonteCarloResult mc = monte_carlo(permanent_stick_task(), r.process, one_percent(), check);
   EXPECT_GE(mc.p_within, r.verification.p_within_low);
   EXPECT_LE(mc.p_within, r.verification.p_within_high);
