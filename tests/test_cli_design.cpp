@@ -70,6 +70,15 @@ TEST(CliDesign, NominalDesignOfTheIssueCarriesAFragilityWarning) {
   ASSERT_FALSE(j["warnings"].empty());
   EXPECT_NE(j["warnings"][0].get<std::string>().find("never stops"), std::string::npos);
   EXPECT_TRUE(j["fragility"]["end_shift_mu_m"].is_null());  // mu 5% low: no end position
+  // No --mu-static: the design assumed mu_static = mu, and a plain warning says so.
+  EXPECT_TRUE(j["fragility"]["assumes_equal_static"].get<bool>());
+  EXPECT_EQ(j["fragility"]["end_m_with_mu_static_low_high"].size(), 2u);
+  bool plain = false;
+  for (const json& w : j["warnings"])
+    plain = plain || w.get<std::string>().find("assumes mu_static = mu") != std::string::npos;
+  EXPECT_TRUE(plain);
+  // The profile sits on the grid's top acceleration and the full stroke, and says so.
+  EXPECT_FALSE(j["limits"].empty());
 }
 
 TEST(CliDesign, RobustDesignReportsVerificationAndActuatorCsv) {
@@ -85,8 +94,16 @@ TEST(CliDesign, RobustDesignReportsVerificationAndActuatorCsv) {
   ASSERT_TRUE(j.contains("robust"));
   EXPECT_EQ(j["robust"]["verification"]["runs"].get<int>(), 400);
   const double p = j["robust"]["verification"]["p_within"].get<double>();
+  // Met: the selection's lower 95% bound and the independent verification reach the target.
+  const json& selection = j["robust"]["selection"];
   EXPECT_EQ(j["robust"]["meets_target"].get<bool>(),
-            j["robust"]["verification"]["p_within_95ci"][0].get<double>() >= 0.99);
+            selection["p_within_95ci"][0].get<double>() >= 0.99 && p >= 0.99);
+  EXPECT_EQ(selection["runs"].get<int>(), 400);
+  EXPECT_NE(selection["seed"], j["robust"]["verification"]["seed"]);
+  EXPECT_EQ(j["robust"]["rungs"], json::array({25, 50}));
+  EXPECT_TRUE(j["robust"]["limits"].is_array());
+  EXPECT_TRUE(j["robust"]["achievable_tolerance_m"].is_number() ||
+              j["robust"]["achievable_tolerance_m"].is_null());
   EXPECT_GE(p, 0);
   // Actuator-ready: n = round(period x rate) rows, no repeated endpoint, the rate adjusted so
   // the period is n samples: t_i = i period / n, and force = mass x y''.
@@ -109,6 +126,31 @@ TEST(CliDesign, RobustDesignReportsVerificationAndActuatorCsv) {
   for (std::size_t i = 1; i < rows.size(); i += 7) {
     const std::vector<double> v = fields(rows[i]);
     EXPECT_DOUBLE_EQ(v[5], 2 * v[3]);
+  }
+}
+
+TEST(CliDesign, TheLargestGridIsRefusedUpFrontWithinAMemoryLimit) {
+  // D36: the flags' largest grid (200^2 x 100 x 20 x 1000 = 8e10 steady entries) ended in
+  // std::bad_alloc under 4 GiB; it is refused at once, naming the grid, without allocating it.
+  CliSandbox box;
+  const std::string flags = " design --acceleration-grid 200 --period-grid 100 --stroke-grid 20"
+                            " --entries 1000 --threads 1 --out d.json";
+#ifdef SELFALIGN_SANITIZED_TESTS
+  const std::string limit;  // AddressSanitizer reserves far more address space than 4 GiB
+#else
+  const std::string limit = "ulimit -v 4194304 && ";
+#endif
+  for (const std::string extra : {"", " --robust --tolerance 0.001 --uncertain mu=normal:0.3,5%"}) {
+    const std::string command = "cd " + testing::quote(box.work().string()) + " && " + limit +
+                                testing::quote(SELFALIGN_CLI_PATH) + flags + extra + " >" +
+                                testing::quote(box.file("stdout.txt")) + " 2>" +
+                                testing::quote(box.file("stderr.txt"));
+    const int status = std::system(command.c_str());
+    testing::CliResult r;
+    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = read_text(box.file("stdout.txt"));
+    r.err = read_text(box.file("stderr.txt"));
+    expect_clean_failure(box, r, {"invalid grid", "acceleration_grid^2 x period_grid x stroke_grid"});
   }
 }
 

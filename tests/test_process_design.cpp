@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/error.hpp"
@@ -105,4 +108,53 @@ TEST(ProcessDesign, AbsentCoefficientsAreNoneAndNanIsRefused) {
   EXPECT_THROW(validate(q), InvalidParameter);
   q.mu_backward = 0.9 * q.mu;
   EXPECT_EQ(friction_law(q).kinetic_backward(), 0.9 * q.mu / q.mu);
+}
+
+TEST(ProcessDesign, PinnedLimitsNameTheGridEdgesAndTheDefaults) {
+  // The grid point of the lowest frequency, the full stroke and the top accelerations sits on
+  // frequency_min (5 Hz, the default), stroke_max (the default) and the top of the
+  // acceleration axis: c_mu mu g = 7.3575 m/s^2 below acceleration_max = 10, else
+  // acceleration_max. Indices: periods outermost, then strokes (largest first), y2'', y3''.
+  DesignRequest q = small_request();
+  q.frequency_min = 10, q.frequency_max = 12;  // slow enough to reach the stroke at the top
+  for (double a_max : {10.0, 5.0}) {
+    q.acceleration_max = a_max;
+    const DesignGrid grid(q);
+    const std::size_t a = static_cast<std::size_t>(q.acceleration_grid);
+    const std::size_t top = (static_cast<std::size_t>(q.period_grid) - 1) *
+                                static_cast<std::size_t>(q.stroke_grid) * a * a +
+                            a * a - 1;
+    ASSERT_EQ(grid.size(), top + static_cast<std::size_t>(q.stroke_grid - 1) * a * a + 1);
+    const std::optional<ThreePhaseParameters> p = grid.at(top);
+    ASSERT_TRUE(p.has_value());
+    const std::vector<std::string> limits = grid.pinned_limits(*p);
+    ASSERT_EQ(limits.size(), 3u);
+    EXPECT_EQ(limits[0], "frequency at frequency_min = 10 Hz");
+    EXPECT_EQ(limits[1], "stroke at stroke_max = 0.002 m (the default)");
+    if (a_max == 10)
+      EXPECT_EQ(limits[2].rfind("peak acceleration at the grid's top c_mu mu g = 7.3575 m/s^2", 0), 0u)
+          << limits[2];
+    else
+      EXPECT_EQ(limits[2], "peak acceleration at acceleration_max = 5 m/s^2");
+    // The highest frequency (period index 0), full stroke, top accelerations.
+    const std::optional<ThreePhaseParameters> fast = grid.at(a * a - 1);
+    ASSERT_TRUE(fast.has_value());
+    EXPECT_EQ(grid.pinned_limits(*fast)[0], "frequency at frequency_max = 12 Hz");
+  }
+}
+
+TEST(ProcessDesign, RefusesAGridBeyondItsWorkLimit) {
+  // D36: the flags' largest grid, 200^2 x 100 x 20 x 1000 = 8e10 steady entries (more than 6.5 GB
+  // as a list), is refused up front; 1e9 entries is the limit.
+  DesignRequest q = small_request();
+  q.acceleration_grid = 200, q.period_grid = 100, q.stroke_grid = 20, q.entries = 1000;
+  try {
+    design_process(q);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidParameter& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("8e+10"), std::string::npos) << what;
+    EXPECT_NE(what.find("acceleration_grid^2 x period_grid x stroke_grid x entries"),
+              std::string::npos) << what;
+  }
 }

@@ -100,6 +100,7 @@ json design_json(const DesignRequest& q, const DesignResult& d) {
   j["law"] = law_json(friction_law(q), OutputUnits{}, q.mu);
   j["candidates"] = d.candidates;
   j["feasible_candidates"] = d.feasible_candidates;
+  j["limits"] = d.limits;
   return j;
 }
 
@@ -111,11 +112,15 @@ std::string design_table(const json& j) {
   for (const char* key : {"case_name", "v_bar_m_per_s", "x_mu_m", "end_position_m",
                           "error_band_m", "process_time_s", "stop"})
     t.row(key, table_text(j[key]));
+  for (const json& l : j["limits"]) t.row("at limit", l.get<std::string>());
   if (j.contains("robust")) {
     const json& r = j["robust"];
     t.row("robust meets_target", table_text(r["meets_target"]));
     t.row("robust p_within", table_text(r["verification"]["p_within"]));
+    t.row("robust p_within_95ci", table_text(r["verification"]["p_within_95ci"]));
+    t.row("robust selection p_within", table_text(r["selection"]["p_within"]));
     t.row("robust time_quantile_s", table_text(r["time_quantile_value_s"]));
+    t.row("robust achievable_tolerance_m", table_text(r["achievable_tolerance_m"]));
     t.row("robust binding", table_text(r["binding"]));
     t.row("robust message", table_text(r["message"]));
   }
@@ -165,9 +170,19 @@ void run_design(const DesignFlags& f) {
         {"time_quantile_value_s", number_or_null(r.time_quantile_value)},
         {"failures", {{"no_motion", r.failures.no_motion}, {"no_stop", r.failures.no_stop},
                       {"outside", r.failures.outside}}},
+        {"achievable_tolerance_m", number_or_null(r.achievable_tolerance)},
+        {"limits", r.limits},
         {"candidates", r.candidates},
         {"screened", r.screened},
+        {"rungs", r.rungs},
         {"verified", r.verified},
+        {"selection",
+         {{"runs", r.selection.runs},
+          {"seed", r.selection.seed},
+          {"p_within", r.selection.p_within},
+          {"p_within_95ci", {r.selection.p_within_low, r.selection.p_within_high}},
+          {"process_time_at_quantile_s",
+           number_or_null(process_time_quantile(r.selection, o.time_quantile))}}},
         {"verification", monte_carlo_json(r.verification, o.time_quantile, 20)}};
   } else {
     d = design_process(q);
@@ -204,17 +219,20 @@ void add_design_command(CLI::App& app) {
       "design",
       "Recommend a three-phase table profile from SI actuator limits: minimise the process "
       "time T_p subject to accumulation (Δx_d = 0) or --tolerance. Reports the profile, v̄, "
-      "T_p [s], the end position and its band, the motion case, and its fragility to mu and "
-      "c_mu (warnings when a few per cent error stops it from stopping or moves the end "
-      "beyond the tolerance). --robust: the fastest profile (a T_p quantile) with "
-      "P(within --tolerance) >= --probability-target under the --uncertain inputs, "
-      "verified by Monte Carlo. --profile-csv writes one period for a motion controller. An "
+      "T_p [s], the end position and its band, the motion case, the limits it sits on, and its "
+      "fragility to mu, c_mu and mu_static (warnings when a few per cent error stops it from "
+      "stopping or moves the end beyond the tolerance, and whenever it assumed mu_static = "
+      "mu). --robust: the fastest profile (a T_p quantile) with P(within --tolerance) >= "
+      "--probability-target under the --uncertain inputs, selected and verified by Monte Carlo "
+      "on independent draws; when none reaches it, the best found and the tolerance it holds. --profile-csv writes one period for a motion controller. An "
       "infeasible request is an error naming the binding limit.");
   auto f = std::make_shared<DesignFlags>();
   DesignRequest& q = f->request;
   add_request_flags(sub, q);
   sub->add_option("--acceleration-grid", q.acceleration_grid,
-                  "candidates per acceleration axis, in [2, 200]")->group("Search");
+                  "candidates per acceleration axis, in [2, 200]; the grid (acceleration-grid^2 x "
+                  "period-grid x stroke-grid) at most 1e7 under --robust, and x entries at "
+                  "most 1e9 without")->group("Search");
   sub->add_option("--period-grid", q.period_grid, "candidate periods, in [1, 100]")
       ->group("Search");
   sub->add_option("--stroke-grid", q.stroke_grid, "candidate strokes, in [1, 20]")
@@ -234,12 +252,17 @@ void add_design_command(CLI::App& app) {
   sub->add_option("--time-quantile", ro.time_quantile,
                   "the quantile of T_p minimised, in (0, 1). Default: 0.99")->group("Robust");
   sub->add_option("--screening-runs", ro.screening_runs,
-                  "Monte-Carlo draws per candidate in the screen, in [10, 1e5]. Default: 200")
+                  "Monte-Carlo draws per candidate in the screen, in rungs of 25, 50, 100, ... up "
+                  "to it, in [10, 1e5]; on that ladder a larger value never selects a worse "
+                  "design. Default: 200")
       ->group("Robust");
   sub->add_option("--verification-runs", ro.verification_runs,
-                  "Monte-Carlo runs verifying each finalist, in [100, 1e7]. Default: 4000")
+                  "Monte-Carlo runs selecting among the finalists (each), and verifying the "
+                  "chosen design on independent draws, in [100, 1e7]. Default: 4000")
       ->group("Robust");
-  sub->add_option("--finalists", ro.finalists, "candidates verified, in [1, 1000]. Default: 6")
+  sub->add_option("--finalists", ro.finalists,
+                  "finalists per rung of the screen (the fastest and the surest each), in [1, "
+                  "1000]. Default: 6")
       ->group("Robust");
   sub->add_option("--seed", ro.seed, "seed of the Monte-Carlo draws. Default: 1")->group("Robust");
   sub->add_option("--threads", ro.threads, "worker threads, >= 0 (0: all cores). Default: 0")
@@ -249,7 +272,8 @@ void add_design_command(CLI::App& app) {
                   "runs under the --uncertain inputs. Default: 0 (none)")
       ->group("Robust");
   sub->add_option("--fragility-level", f->fragility_level,
-                  "relative error of mu and c_mu the fragility check applies, in (0, 1). "
+                  "relative error of mu, c_mu and mu_static the fragility check applies, in "
+                  "(0, 1). "
                   "Default: 0.05")
       ->group("Robust");
   sub->add_flag("--json", f->as_json, "print the report as JSON")->group("Output");

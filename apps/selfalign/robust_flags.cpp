@@ -106,8 +106,11 @@ json fragility_json(const Fragility& f) {
           {"end_nominal_m", number_or_null(f.end_nominal)},
           {"end_m_with_mu_low_high", ends(f.end_mu)},
           {"end_m_with_c_mu_low_high", ends(f.end_c_mu)},
+          {"end_m_with_mu_static_low_high", ends(f.end_static)},
           {"end_shift_mu_m", number_or_null(f.end_shift_mu)},
           {"end_shift_c_mu_m", number_or_null(f.end_shift_c_mu)},
+          {"end_shift_mu_static_m", number_or_null(f.end_shift_static)},
+          {"assumes_equal_static", f.assumes_equal_static},
           {"fragile", !f.warnings.empty()},
           {"warnings", f.warnings}};
 }

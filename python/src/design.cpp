@@ -1,6 +1,8 @@
 // selfalign design: from SI actuator limits to a recommended three-phase profile.
 #include "selfalign/design/process_design.hpp"
 
+#include <pybind11/stl.h>
+
 #include <limits>
 #include <optional>
 
@@ -99,7 +101,8 @@ resolution (acceleration_grid, period_grid, stroke_grid, entries).)doc");
 The recommended three-phase profile (SI: period [s], stroke [m], a2/a3 [m/s^2], t1..t3 [s],
 y_ini [m], y_dot_ini and velocity_peak [m/s]), its motion case, and the predictions: v_bar
 [m/s], x_mu (where the high-friction region starts) [m], end_position and error_band [m],
-process_time T_p [s], stop kind. feasible = False with a message naming the binding limit;
+process_time T_p [s], stop kind, and the limits it sits on. feasible = False with a message
+naming the binding limit;
 its numbers are then NaN (absent, never 0).)doc");
   result.def_readonly("feasible", &DesignResult::feasible, "a design was found")
       .def_readonly("message", &DesignResult::message, "why not, naming the binding limit")
@@ -123,6 +126,9 @@ its numbers are then NaN (absent, never 0).)doc");
       .def_readonly("candidates", &DesignResult::candidates, "profiles examined")
       .def_readonly("feasible_candidates", &DesignResult::feasible_candidates,
                     "profiles meeting the requirement")
+      .def_readonly("limits", &DesignResult::limits,
+                    "the request limits the profile sits on, e.g. 'frequency at frequency_min "
+                    "= 5 Hz (the default)'; empty inside the grid")
       .def_readonly("dimensionless", &DesignResult::dimensionless,
                     "the profile in model units (L = width)")
       .def_readonly("x_mu_dimensionless", &DesignResult::x_mu_dimensionless, "x_mu [-]")
@@ -139,7 +145,7 @@ its numbers are then NaN (absent, never 0).)doc");
              field("process_time", &R::process_time), field("stop", &R::stop),
              field("candidates", &R::candidates),
              field("feasible_candidates", &R::feasible_candidates),
-             field("dimensionless", &R::dimensionless), field("jerk", &R::jerk),
+             field("limits", &R::limits), field("dimensionless", &R::dimensionless), field("jerk", &R::jerk),
              field("jerk_dimensionless", &R::jerk_dimensionless),
              field("x_mu_dimensionless", &R::x_mu_dimensionless));
   result.def("__repr__", [](const DesignResult& r) {

@@ -392,11 +392,13 @@ Nelder-Mead from the `starts` worst points (local_evaluations runs each). Determ
 independent of threads.)doc");
 
   py::class_<Fragility> f(m, "Fragility", R"doc(
-How fragile a process is to mu and c_mu at relative error `level`: stop_margin (the relative
-drop of mu_static c_mu after which it never stops, eq. 40), motion_margin, the end positions
-with mu and c_mu off by -/+level (NaN: never stops), the largest shifts (inf: a run never
-stops) and one warning line per finding.)doc");
-  f.def_readonly("level", &Fragility::level, "the relative error of mu and c_mu examined [-]")
+How fragile a process is to mu, c_mu and mu_static at relative error `level`: stop_margin (the
+relative drop of mu_static c_mu after which it never stops, eq. 40), motion_margin, the end
+positions with mu and c_mu off by -/+level and the static ratio mu_static/mu at max(1, (1 -
+level) s) and (1 + level) s (NaN: never stops), the largest shifts (inf: a run never stops),
+assumes_equal_static (the request gave no mu_static above mu) and one warning line per finding
+(a plain one whenever the design assumed mu_static = mu).)doc");
+  f.def_readonly("level", &Fragility::level, "the relative error of mu, c_mu and mu_static examined [-]")
       .def_readonly("stop_margin", &Fragility::stop_margin, "1 - max(a2, a3)/(mu_static c_mu g): relative drop of mu_static c_mu before it never stops [-]")
       .def_readonly("motion_margin", &Fragility::motion_margin, "a2/(mu_static g) - 1: relative rise of mu_static before it never moves [-]")
       .def_readonly("end_nominal", &Fragility::end_nominal, "end position at the nominal inputs [m]")
@@ -404,6 +406,9 @@ stops) and one warning line per finding.)doc");
       .def_readonly("end_c_mu", &Fragility::end_c_mu, "end positions with c_mu at (1 - level), (1 + level) x nominal [m]; NaN: never stops")
       .def_readonly("end_shift_mu", &Fragility::end_shift_mu, "largest |end - end_nominal| over the mu runs [m]; inf: one never stops")
       .def_readonly("end_shift_c_mu", &Fragility::end_shift_c_mu, "largest |end - end_nominal| over the c_mu runs [m]; inf: one never stops")
+      .def_readonly("end_static", &Fragility::end_static, "end positions with the static ratio s = mu_static/mu at max(1, (1 - level) s), (1 + level) s [m]; NaN: never stops")
+      .def_readonly("end_shift_static", &Fragility::end_shift_static, "largest |end - end_nominal| over the static-ratio runs [m]; inf: one never stops")
+      .def_readonly("assumes_equal_static", &Fragility::assumes_equal_static, "the request left mu_static unset or equal to mu")
       .def_readonly("warnings", &Fragility::warnings, "one line per finding; empty when not fragile at this level")
       .def_property_readonly(
           "fragile", [](const Fragility& x) { return !x.warnings.empty(); },
@@ -419,6 +424,9 @@ stops) and one warning line per finding.)doc");
              field("end_c_mu", &Fragility::end_c_mu),
              field("end_shift_mu", &Fragility::end_shift_mu),
              field("end_shift_c_mu", &Fragility::end_shift_c_mu),
+             field("end_static", &Fragility::end_static),
+             field("end_shift_static", &Fragility::end_shift_static),
+             field("assumes_equal_static", &Fragility::assumes_equal_static),
              field("warnings", &Fragility::warnings));
   m.def(
       "fragility",
@@ -428,7 +436,7 @@ stops) and one warning line per finding.)doc");
       },
       py::arg("request"), py::arg("process"), py::kw_only(), py::arg("level") = 0.05,
       py::arg("max_periods") = 3000,
-      "Fragility of the process to mu and c_mu off by `level` (relative, in (0, 1)).");
+      "Fragility of the process to mu, c_mu and mu_static off by `level` (relative, in (0, 1)).");
 }
 
 void bind_robust_design(py::module_& m) {
@@ -448,22 +456,27 @@ void bind_robust_design(py::module_& m) {
 
   using R = RobustDesignResult;
   py::class_<R> r(m, "RobustDesignResult", R"doc(
-design_robust's answer: meets_target (the verification's 95% Wilson lower bound of P(within)
-reaches the target), message, binding (the failure mode that limits: "end-position spread",
-"stopping", "motion", "actuator limits"), the design (DesignResult, SI) and its process
-(x_mu placed), its verification (MonteCarloResult), failures, the T_p quantile [s], and the
-candidate counts.)doc");
-  r.def_readonly("meets_target", &R::meets_target, "the verification reaches the target (95% Wilson lower bound)")
+design_robust's answer: meets_target (the selection's 95% Wilson lower bound of P(within) and
+the independent verification's P(within) reach the target), message, binding (the failure mode
+that limits: "end-position spread", "stopping", "motion", "actuator limits"), the design
+(DesignResult, SI) and its process (x_mu placed), its selection and its independent
+verification (MonteCarloResult), failures, the T_p quantile [s], the tolerance it holds at the
+target probability, the limits it sits on, the screen's rungs and the candidate counts.)doc");
+  r.def_readonly("meets_target", &R::meets_target, "the selection (95% Wilson lower bound) and the independent verification reach the target")
       .def_readonly("message", &R::message, "what was found, or why no design reaches the target")
       .def_readonly("binding", &R::binding, "the failure mode that limits the design")
       .def_readonly("design", &R::design, "the chosen profile (the best found when not meets_target), SI")
       .def_readonly("process", &R::process, "the chosen Process, x_mu placed")
-      .def_readonly("verification", &R::verification, "MonteCarloResult of its verification runs")
+      .def_readonly("selection", &R::selection, "MonteCarloResult of the runs that selected it (selection stream)")
+      .def_readonly("verification", &R::verification, "MonteCarloResult of its verification runs, independent of every draw that chose it: the claim")
       .def_readonly("failures", &R::failures, "FailureCounts over the verification")
       .def_readonly("time_quantile_value", &R::time_quantile_value, "the T_p quantile of the verification [s] (inf: too many runs never stop)")
+      .def_readonly("achievable_tolerance", &R::achievable_tolerance, "the smallest tolerance [m] a fraction probability_target of its verification runs end within (inf: too many never stop)")
+      .def_readonly("limits", &R::limits, "the request limits the chosen profile sits on")
+      .def_readonly("rungs", &R::rungs, "screening draws of each rung of the screen")
       .def_readonly("candidates", &R::candidates, "candidates in the grid")
       .def_readonly("screened", &R::screened, "candidates screened by Monte Carlo")
-      .def_readonly("verified", &R::verified, "candidates verified")
+      .def_readonly("verified", &R::verified, "finalists run through the selection Monte Carlo")
       .def("__repr__", [](const R& x) {
         return Repr("RobustDesignResult")("meets_target", x.meets_target)(
                    "p_within", x.verification.p_within)("time_quantile_value", x.time_quantile_value)
@@ -472,8 +485,11 @@ candidate counts.)doc");
       });
   def_record(r, field("meets_target", &R::meets_target), field("message", &R::message),
              field("binding", &R::binding), field("design", &R::design),
-             field("process", &R::process), field("verification", &R::verification),
-             field("failures", &R::failures), field("time_quantile_value", &R::time_quantile_value),
+             field("process", &R::process), field("selection", &R::selection),
+             field("verification", &R::verification), field("failures", &R::failures),
+             field("time_quantile_value", &R::time_quantile_value),
+             field("achievable_tolerance", &R::achievable_tolerance),
+             field("limits", &R::limits), field("rungs", &R::rungs),
              field("candidates", &R::candidates), field("screened", &R::screened),
              field("verified", &R::verified));
   m.def(
@@ -499,9 +515,13 @@ candidate counts.)doc");
       R"doc(
 The fastest process (minimum time_quantile of T_p) with P(|end - distance| <= tolerance) >=
 probability_target under the uncertainty, over design_process's candidate grid: a closed-form
-screen (eq. 40), a Monte-Carlo screen placing x_mu, then a verification Monte Carlo (another
-seed) of the finalists (docs/robust-design.md). When no candidate reaches the target,
-meets_target is False and the result holds the best probability found. Runs without the GIL.)doc");
+prune (eq. 40), a Monte-Carlo screen in rungs of 25, 50, 100, ... screening_runs draws placing
+x_mu by exact runs (any stop kind), a selection Monte Carlo of the finalists (`finalists` per
+rung), then a verification Monte Carlo of the chosen design on draws independent of all the
+others (docs/robust-design.md). With screening_runs on the ladder 25 x 2^j, more screening
+runs or finalists never select a worse design. When no candidate reaches the target,
+meets_target is False and the result holds the best probability found and the tolerance it
+holds (achievable_tolerance). Runs without the GIL.)doc");
 }
 
 }  // namespace

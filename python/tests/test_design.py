@@ -2,6 +2,9 @@
 the band at the predicted time (within one table period); infeasible requests explain why."""
 
 import pickle
+import subprocess
+import sys
+import textwrap
 
 import numpy as np
 import pytest
@@ -61,3 +64,27 @@ def test_absent_coefficients_are_none_and_nan_is_refused():
     req.mu_static = 0.36
     req.mu_static = None
     assert req.mu_static is None
+
+
+def test_the_largest_grid_is_refused_within_a_memory_limit():
+    """D36: the flags' largest grid (200^2 x 100 x 20 x 1000 = 8e10 steady entries) ended in
+    MemoryError (std::bad_alloc) under 4 GiB; it is refused up front, naming the grid."""
+    code = textwrap.dedent("""
+        import resource
+        resource.setrlimit(resource.RLIMIT_AS, (4 << 30, 4 << 30))
+        import selfalign as sa
+        try:
+            sa.design_process(sa.DesignRequest(acceleration_grid=200, period_grid=100,
+                                               stroke_grid=20, entries=1000), threads=1)
+        except sa.InvalidParameter as e:
+            print("refused", e.name)
+        """)
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert out.stdout.strip() == "refused grid", out.stderr
+
+
+def test_a_design_says_which_limits_it_sits_on():
+    d = sa.design_process(small(), threads=1)
+    assert d.feasible
+    assert isinstance(d.limits, list) and all(isinstance(x, str) for x in d.limits)
+    assert d.to_dict()["limits"] == d.limits

@@ -34,11 +34,20 @@ def test_the_issue_task_is_answered_and_checked_independently():
         assert abs(check.p_within - best) <= 4 * se
         assert check.p_within_high < 0.99
         assert r.binding == "end-position spread"
+        # What is achievable: the tolerance this profile holds at P >= 0.99.
+        assert r.achievable_tolerance > TASK.tolerance and "this design holds +-" in r.message
+    # The claim comes from draws that selected nothing; the screen's rungs are 25 ... 200.
+    assert r.selection.seed != r.verification.seed
+    assert r.rungs == [25, 50, 100, 200]
+    assert isinstance(r.limits, list) and r.to_dict()["limits"] == r.limits
     # The nominal design of the same task is flagged fragile (the issue: a2 = c_mu mu g).
     nominal = sa.design_process(TASK)
     f = sa.fragility(TASK, sa.process_of(nominal))
     assert f.fragile and f.stop_margin < 0.05
     assert math.isnan(f.end_mu[0]) and math.isinf(f.end_shift_mu)
+    # It was made without mu_static: a plain warning says what 5% more static friction does.
+    assert f.assumes_equal_static and f.end_static[0] == f.end_nominal
+    assert any("assumes mu_static = mu" in w for w in f.warnings)
 
 
 def test_absent_values_are_nan_not_zero():

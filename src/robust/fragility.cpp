@@ -25,19 +25,22 @@ Fragility fragility(const DesignRequest& q, const Process& p, double level, int 
   f.stop_margin = 1 - peak / (ratio * c_mu * mu * q.gravity);
   f.motion_margin = p.a2 / (ratio * mu * q.gravity) - 1;
   f.end_nominal = run_process(q, p, nominal, max_periods).end_position;
-  const auto shifted = [&](std::size_t k, std::array<double, 2>& ends) {
+  // Input k at its two examined values (factors on the nominal).
+  const auto shifted = [&](std::size_t k, std::array<double, 2>& ends, double low, double high) {
     double shift = 0;
     for (int side = 0; side < 2; ++side) {
       InputValues v = nominal;
-      v[k] *= side == 0 ? 1 - level : 1 + level;
+      v[k] *= side == 0 ? low : high;
       ends[side] = run_process(q, p, v, max_periods).end_position;
       shift = std::isnan(ends[side]) ? std::numeric_limits<double>::infinity()
                                      : std::max(shift, std::abs(ends[side] - f.end_nominal));
     }
     return shift;
   };
-  f.end_shift_mu = shifted(0, f.end_mu);
-  f.end_shift_c_mu = shifted(1, f.end_c_mu);
+  f.end_shift_mu = shifted(0, f.end_mu, 1 - level, 1 + level);
+  f.end_shift_c_mu = shifted(1, f.end_c_mu, 1 - level, 1 + level);
+  f.end_shift_static = shifted(2, f.end_static, std::max(1 / ratio, 1 - level), 1 + level);
+  f.assumes_equal_static = !q.mu_static || *q.mu_static == q.mu;
 
   const std::string at = percent(level);
   if (f.stop_margin < level)
@@ -62,6 +65,22 @@ Fragility fragility(const DesignRequest& q, const Process& p, double level, int 
   };
   end_warning("mu", f.end_shift_mu, f.end_mu);
   end_warning("c_mu", f.end_shift_c_mu, f.end_c_mu);
+  if (!f.assumes_equal_static) end_warning("mu_static", f.end_shift_static, f.end_static);
+  else {  // a plain warning: the design never considered a static coefficient
+    const std::string effect =
+        std::isinf(f.end_shift_static)
+            ? "the part never stops"
+            : "the end moves by " + millimetres(f.end_shift_static) +
+                  (f.end_shift_static > band ? std::string(", beyond the ") +
+                                                   (q.tolerance > 0 ? "tolerance " : "band ") +
+                                                   millimetres(band)
+                                             : std::string());
+    f.warnings.push_back(
+        "static friction: the design assumes mu_static = mu (no mu_static given); with "
+        "mu_static only " + at + " above mu " + effect +
+        ". Measure mu_static and give it, or design for its uncertainty (design --robust with "
+        "--uncertain static_ratio=...)");
+  }
   return f;
 }
 

@@ -1,5 +1,6 @@
 #include "selfalign/robust/process_uncertainty.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -126,27 +127,19 @@ void validate(const Process& p) {
                            "(case 0: the table cannot reach the stroke)");
 }
 
-namespace {
-
-// One draw's model, dimensionless with L = the drawn width (so w = 1).
-struct ProcessModel {
-  Scales scales;
-  std::unique_ptr<TableProfile> profile;
-  FrictionLaw law;
-  TwoRegionFriction friction;
-};
-
-ProcessModel process_model(const DesignRequest& q, const Process& p, const InputValues& v) {
-  const double mu = v[0], c_mu = v[1], ratio = v[2], width = v[3], offset = v[4];
+ProcessModel::ProcessModel(const DesignRequest& q, const Process& p, const InputValues& v)
+    : scales(v[3], v[0], q.gravity),
+      law(v[2], 1.0, std::min(q.mu_backward.value_or(q.mu) / q.mu, v[2])),
+      c_mu(v[1]),
+      x_mu(scales.length_from_si(p.x_mu + v[4])) {
   const double amplitude = v[5], period_factor = v[6];
-  const Scales sc(width, mu, q.gravity);
+  const Scales& sc = scales;
   // y~(t) -> a y~(t / p): stroke x a, accelerations x a / p^2, jerk x a / p^3.
   const double acc = amplitude / (period_factor * period_factor);
   const ThreePhaseParameters tp{sc.time_from_si(p.period * period_factor),
                                 sc.length_from_si(p.stroke * amplitude),
                                 sc.acceleration_from_si(p.a2 * acc),
                                 sc.acceleration_from_si(p.a3 * acc)};
-  std::unique_ptr<TableProfile> profile;
   if (std::isinf(p.jerk)) {
     profile = std::make_unique<ThreePhaseProfile>(tp);
   } else {
@@ -154,16 +147,16 @@ ProcessModel process_model(const DesignRequest& q, const Process& p, const Input
     profile = std::make_unique<JerkLimitedThreePhaseProfile>(
         JerkLimitedThreePhaseParameters{tp.period, tp.stroke, tp.a2, tp.a3, jerk});
   }
-  const double backward = q.mu_backward.value_or(q.mu) / q.mu;
-  return {sc, std::move(profile), FrictionLaw(ratio, 1.0, std::min(backward, ratio)),
-          TwoRegionFriction(sc.length_from_si(p.x_mu + offset), 1.0, c_mu)};
 }
+
+namespace {
 
 // Whether the model takes the draw `v`; else what it refused, in its own (model) terms.
 std::optional<InvalidParameter> refusal(const DesignRequest& q, const Process& p,
                                         const InputValues& v) {
   try {
-    process_model(q, p, v);
+    const ProcessModel m(q, p, v);
+    TwoRegionFriction(m.x_mu, 1.0, m.c_mu);  // the rough region it would stop on
   } catch (const InvalidParameter& e) {
     return e;
   }
@@ -214,27 +207,30 @@ void validate_draws(const DesignRequest& q, const Process& p, const ProcessUncer
   }
 }
 
-ProcessOutcome run_process(const DesignRequest& q, const Process& p, const InputValues& v,
-                           int max_periods) {
-  const ProcessModel m = process_model(q, p, v);
-  const Scales& sc = m.scales;
-  const TableProfile* profile = m.profile.get();
-  const FrictionLaw& law = m.law;
-  const TwoRegionFriction& friction = m.friction;
+StoppingOptions ProcessModel::stopping(int max_periods) {
   StoppingOptions so;
   so.max_periods = max_periods;
   so.fractions = {0.999};  // accumulation "arrives" 0.999 of the way (as design_process)
-  const StoppingRun run = law.is_unit()
-                              ? stopping_run(*profile, friction, {0, 0, 0}, so)
-                              : stopping_run(*profile, friction, law, {0, 0, 0}, so);
+  return so;
+}
+
+ProcessOutcome ProcessModel::outcome(const StoppingRun& run) const {
   ProcessOutcome o;
   o.kind = run.kind;
-  o.entry_time = sc.time_to_si(run.entry_time);
+  o.entry_time = scales.time_to_si(run.entry_time);
   if (run.kind == StopKind::not_stopped) return o;
-  o.end_position = sc.length_to_si(run.end_position);
-  o.process_time = sc.time_to_si(run.kind == StopKind::accumulation ? run.time_to_fraction[0]
-                                                                    : run.process_time);
+  o.end_position = scales.length_to_si(run.end_position);
+  o.process_time = scales.time_to_si(run.kind == StopKind::accumulation ? run.time_to_fraction[0]
+                                                                        : run.process_time);
   return o;
+}
+
+ProcessOutcome run_process(const DesignRequest& q, const Process& p, const InputValues& v,
+                           int max_periods) {
+  const ProcessModel m(q, p, v);
+  const TwoRegionFriction friction(m.x_mu, 1.0, m.c_mu);
+  const StoppingOptions so = ProcessModel::stopping(max_periods);
+  return m.outcome(stopping_run(*m.profile, friction, m.law, {0, 0, 0}, so));
 }
 
 }  // namespace selfalign

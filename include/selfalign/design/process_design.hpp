@@ -4,7 +4,8 @@
 /// profile that minimises the process time T_p (Sect. 2's first objective) subject to a
 /// positioning requirement (Sect. 7): accumulation (Δx_d = 0) or a given tolerance.
 ///
-/// The search (deterministic, parallel over candidates): periods from 1/f_max to 1/f_min,
+/// The search (deterministic, parallel over chunks of the grid, streamed: it keeps each chunk's
+/// best candidate, not the grid; DesignGrid): periods from 1/f_max to 1/f_min,
 /// strokes up to the actuator stroke, and (y2'', y3'') in (1, min(c_mu, a_max)] x
 /// (0, min(c_mu, a_max)] (y2'' > 1 moves the object; <= c_mu lets it stop for good, eq. 41),
 /// keeping profiles whose exact velocity extrema y'_ini and y'_ini - D respect v_max. Each
@@ -84,6 +85,9 @@ struct DesignResult {
   double process_time = kNaN;      ///< T_p~: time to come within the band for good [s]
   StopKind stop = StopKind::not_stopped;
   int candidates = 0, feasible_candidates = 0;
+  /// The request limits the profile sits on (DesignGrid::pinned_limits), e.g. "frequency at
+  /// frequency_min = 5 Hz (the default)"; empty when it is inside the grid.
+  std::vector<std::string> limits;
   ThreePhaseParameters dimensionless{};  ///< the same profile in model units (L = width)
   /// Its jerk limit in model units (+inf: jump accelerations) and in SI [m/s^3].
   double jerk_dimensionless = std::numeric_limits<double>::infinity();
@@ -94,13 +98,35 @@ struct DesignResult {
 /// The candidate grid of design_process, in model units (L = width, accelerations in mu g):
 /// periods log-spaced from 1/frequency_max to 1/frequency_min, strokes k/stroke_grid of
 /// stroke_max, (y2'', y3'') in (1, min(c_mu, a_max)] x (0, min(c_mu, a_max)], keeping the
-/// physical profiles within velocity_max. `message` says which limits bind when it is empty.
-struct DesignCandidates {
-  std::vector<ThreePhaseParameters> profiles;
-  double jerk = std::numeric_limits<double>::infinity();  ///< the jerk limit [-]
-  std::string message;
+/// physical profiles within velocity_max. Enumerated lazily, one index at a time, so that a
+/// search over it needs memory for what it keeps, not for the grid (size() reaches 8e7).
+class DesignGrid {
+ public:
+  /// Validates the request.
+  explicit DesignGrid(const DesignRequest& request);
+  /// acceleration_grid^2 x period_grid x stroke_grid (0 when acceleration_max <= mu g).
+  std::size_t size() const noexcept { return size_; }
+  /// Why an index is not a candidate.
+  enum class Skip { none, non_physical, too_fast };
+  /// The profile at index i < size(), or nullopt with `why` (non-physical: case 0; too fast:
+  /// its velocity extrema exceed velocity_max).
+  std::optional<ThreePhaseParameters> at(std::size_t i, Skip* why = nullptr) const;
+  double jerk() const noexcept { return jerk_; }  ///< the jerk limit [-] (+inf: jumps)
+  /// Which limits bind when no index is a candidate, given the counts of the skipped ones.
+  std::string empty_message(std::size_t non_physical, std::size_t too_fast) const;
+  /// The limits the profile at a grid point sits on, e.g. "frequency at frequency_min = 5 Hz
+  /// (the default)": grid edges that are request limits (frequency_min, frequency_max,
+  /// stroke_max, acceleration_max) and the top of the acceleration axis c_mu mu g; "(the
+  /// default)" marks a value equal to DesignRequest's default. A design pinned there might do
+  /// better with that limit relaxed.
+  std::vector<std::string> pinned_limits(const ThreePhaseParameters& profile) const;
+
+ private:
+  DesignRequest request_;
+  double jerk_ = std::numeric_limits<double>::infinity(), v_max_ = 0, a_hi_ = 0;
+  std::vector<double> periods_, strokes_, a2s_, a3s_;
+  std::size_t size_ = 0;
 };
-DesignCandidates design_candidates(const DesignRequest& request);
 
 /// A DesignResult for one profile (model units) and rough-region start x_mu [-]: its SI
 /// description, nominal steady state (motion case, v̄) and the exact stopping run from rest
@@ -108,7 +134,13 @@ DesignCandidates design_candidates(const DesignRequest& request);
 DesignResult describe_design(const DesignRequest& request, const ThreePhaseParameters& profile,
                              double x_mu, double dx_d);
 
-/// Runs the search. Infeasible requests return feasible = false with a message.
+/// The most steady entries design_process evaluates: acceleration_grid^2 x period_grid x
+/// stroke_grid x entries <= 1e9 (about 30 us each on one core: some 8 hours).
+inline constexpr double kMaxDesignEntries = 1e9;
+
+/// Runs the search. Infeasible requests return feasible = false with a message. Streams over
+/// the grid (memory independent of its size); throws InvalidParameter("grid", ...) for a grid
+/// beyond kMaxDesignEntries.
 DesignResult design_process(const DesignRequest& request, const SweepOptions& sweep = {});
 
 /// The recommended profile of a feasible result, in model units: a ThreePhaseProfile, or the

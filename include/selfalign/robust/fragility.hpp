@@ -2,8 +2,9 @@
 /// \file fragility.hpp
 /// How fragile a designed process is to its friction data: the margins by which mu and c_mu
 /// may err before the part no longer moves or no longer stops (closed form), and how far the
-/// end position moves when mu or c_mu is off by a given relative amount (exact stopping runs).
-/// `selfalign design` prints its warnings beside every nominal design.
+/// end position moves when mu, c_mu or the static/kinetic ratio mu_static/mu is off by a given
+/// relative amount (exact stopping runs). `selfalign design` prints its warnings beside every
+/// nominal design, and a plain one when the design assumed mu_static = mu.
 
 #include <array>
 #include <limits>
@@ -26,13 +27,21 @@ struct Fragility {
   /// End positions [m] with mu, then c_mu, at (1 - level) and (1 + level) times nominal; NaN
   /// where that run does not stop.
   std::array<double, 2> end_mu{}, end_c_mu{};
+  /// End positions [m] with the static ratio s = mu_static/mu at max(1, (1 - level) s) and
+  /// (1 + level) s (a static coefficient is never below the kinetic one); NaN where that run
+  /// does not stop.
+  std::array<double, 2> end_static{};
   /// The largest |end - end_nominal| over those runs [m]; +inf when one does not stop.
-  double end_shift_mu = 0, end_shift_c_mu = 0;
+  double end_shift_mu = 0, end_shift_c_mu = 0, end_shift_static = 0;
+  /// The request left mu_static unset or equal to mu: the design assumed that the part sticks
+  /// no harder than it slides.
+  bool assumes_equal_static = false;
   /// One line per finding; empty when the design is not fragile at this level.
   std::vector<std::string> warnings;
 };
 
-/// Evaluates `process` for the request's nominal inputs at relative error `level` in (0, 1).
+/// Evaluates `process` for the request's nominal inputs at relative error `level` in (0, 1):
+/// mu, c_mu and the static ratio (one at a time).
 /// The tolerance compared with the end shifts is request.tolerance (accumulation designs,
 /// tolerance 0: any shift above 1e-3 x width is reported).
 Fragility fragility(const DesignRequest& request, const Process& process, double level = 0.05,

@@ -16,11 +16,13 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "selfalign/analysis/stopping.hpp"
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/robust/distribution.hpp"
+#include "selfalign/units.hpp"
 
 namespace selfalign {
 
@@ -113,6 +115,23 @@ struct ProcessOutcome {
   double process_time = std::numeric_limits<double>::quiet_NaN();
   /// When the object first reaches the rough region [s]; NaN if never.
   double entry_time = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// One draw of a process in model units (Sect. 3.2 with L = the drawn width and the drawn mu):
+/// the table motion y~(t) -> a y~(t / p), the law (drawn static ratio, kinetic 1, the request's
+/// backward ratio capped by the static one) and where the rough region starts, x_mu + offset.
+struct ProcessModel {
+  ProcessModel(const DesignRequest& request, const Process& process, const InputValues& inputs);
+  Scales scales;
+  std::unique_ptr<TableProfile> profile;
+  FrictionLaw law;
+  double c_mu;  ///< the drawn mu_2/mu_1 [-]
+  double x_mu;  ///< start of the rough region, x_mu + offset [-]
+  /// Options of its stopping runs: `max_periods`, and the 0.999 fraction that times an
+  /// accumulation (as design_process).
+  static StoppingOptions stopping(int max_periods);
+  /// A stopping run's outcome in SI.
+  ProcessOutcome outcome(const StoppingRun& run) const;
 };
 
 /// One exact stopping run of `process` with these input values (the request supplies g and

@@ -5,25 +5,36 @@
 /// process time T_p (e.g. the 99th percentile) subject to P(|end - target| <= tolerance) >=
 /// a target probability, under a ProcessUncertainty.
 ///
-/// The search, over design_process's candidate grid (nominal mu and width):
-///  1. a closed-form screen: with the same `screening_runs` draws for every candidate, the
-///     fraction of draws in which the part can both slip forward (y2'' > mu_static g) and stop
-///     for good (max(y2'', y3'') <= mu_static c_mu g, eq. 40) bounds P(within) from above;
-///     candidates whose bound is below the target are dropped (if every one is, the best
-///     bounds are kept to find the best achievable probability);
-///  2. one run per candidate at the nominal inputs (candidates that do not stop are dropped),
-///     then a Monte-Carlo screen on those draws in the order of the nominal T_p, in batches; a
-///     screening run may take slow_factor x the nominal T_p. The rough region's start x_mu is
-///     placed to put the most end positions within the tolerance (a window of width 2 x
-///     tolerance slid over the sorted ends). Once a candidate qualifies with screened T_p
-///     quantile T*, later batches skip candidates whose nominal T_p exceeds T*;
-///  3. a verification Monte Carlo (another seed, `verification_runs` runs) of the best
-///     `finalists`: the fastest whose 95% Wilson lower bound of P(within) reaches the target
-///     is the design; if none does, the result says so and gives the best probability found.
+/// The search, over design_process's candidate grid (DesignGrid: nominal mu and width), uses
+/// three independent sets of draws: screening (seed), selection and verification (streams
+/// derived from it):
+///  1. a closed-form prune: on 2048 screening draws, the fraction in which the part can both
+///     slip forward (y2'' > mu_static g) and stop for good (max(y2'', y3'') <= mu_static c_mu
+///     g, eq. 40) bounds P(within) from above; candidates whose 95% Wilson upper bound of it is
+///     below the target are dropped (if every one is, the 256 best bounds are kept to find the
+///     best achievable probability); then one run at the nominal inputs (candidates that do
+///     not stop are dropped), whose T_p orders the screen and bounds a screening run's periods
+///     (slow_factor);
+///  2. the Monte-Carlo screen (src/robust/robust_screen.hpp, docs/robust-design.md): in rungs
+///     of 25, 50, 100, ... screening draws up to `screening_runs`, each candidate at a lattice
+///     of trial x_mu values, every outcome an exact stopping run (ProcessWalk), for every stop
+///     kind; each rung contributes its `finalists` fastest candidates among those that qualify
+///     (screened P(within) high enough for the selection to pass) and its `finalists` surest;
+///  3. selection: a Monte Carlo of `verification_runs` runs of every finalist on the selection
+///     stream; the design is the fastest (T_p quantile) whose 95% Wilson lower bound of
+///     P(within) reaches the target, else the most probable;
+///  4. verification: a Monte Carlo of `verification_runs` runs of the chosen design on the
+///     verification stream, independent of every draw that chose it: its P(within), interval
+///     and T_p quantile are the result's claim.
+/// With screening_runs on the ladder 25 x 2^j (25, 50, 100, 200 = the default, ...) a search
+/// with more screening runs and as many or more finalists repeats every rung of the smaller
+/// one and selects from a superset of its finalists on the same selection draws: its selection
+/// is never worse (met and no slower, or a P at least as high).
 
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "selfalign/robust/monte_carlo.hpp"
 
@@ -33,9 +44,12 @@ struct RobustOptions {
   double probability_target = 0.99;  ///< required P(within tolerance), in (0, 1)
   double time_quantile = 0.99;       ///< the quantile of T_p minimised, in (0, 1)
   int screening_runs = 200;          ///< draws per candidate in the screen, in [10, 1e5]
-  int verification_runs = 4000;      ///< runs of each finalist's verification, in [100, 1e7]
-  int finalists = 6;                 ///< candidates verified, in [1, 1000]
-  std::uint64_t seed = 1;            ///< screening seed (verification: a stream derived from it)
+  /// Runs of each finalist's selection Monte Carlo and of the chosen design's verification,
+  /// in [100, 1e7].
+  int verification_runs = 4000;
+  int finalists = 6;                 ///< finalists per rung of the screen, in [1, 1000]
+  /// Screening seed; the selection and verification draw from streams derived from it.
+  std::uint64_t seed = 1;
   int max_periods = 3000;            ///< per run
   /// A screening run not stopped after slow_factor x the candidate's nominal T_p counts as
   /// failed (too slow; verification runs get max_periods), >= 1.
@@ -58,27 +72,47 @@ struct FailureCounts {
 };
 
 struct RobustDesignResult {
-  /// A design whose verification reaches the target (Wilson 95% lower bound >= target).
+  /// The design met the target: its selection runs' 95% Wilson lower bound of P(within) and
+  /// its independent verification's P(within) both reach it.
   bool meets_target = false;
   std::string message;  ///< what was found, or why no design reaches the target
-  /// The failure mode limiting the design: "end-position spread", "stopping", "motion" (or
-  /// "none" when no run failed).
+  /// The failure mode limiting the design: "end-position spread", "stopping", "motion",
+  /// "actuator limits" (the fastest of the grid), or "none" when no run failed.
   std::string binding;
   DesignResult design;    ///< the chosen profile (the best found when !meets_target), SI
   Process process;        ///< the same as a Process (with the placed x_mu)
-  MonteCarloResult verification;  ///< its verification runs
+  MonteCarloResult selection;     ///< the runs that chose it (selection stream)
+  MonteCarloResult verification;  ///< its independent verification runs: the claim
   FailureCounts failures;         ///< over the verification
-  double time_quantile_value = 0; ///< the T_p quantile of the verification [s] (inf: > 1 - q fail)
+  /// The T_p quantile of the verification [s] (inf: more than 1 - q runs do not stop).
+  double time_quantile_value = 0;
+  /// What this design achieves at the target probability: the smallest tolerance [m] within
+  /// which a fraction probability_target of its verification runs end (the target-quantile
+  /// of |end - distance|; inf when more than 1 - target of them do not stop).
+  double achievable_tolerance = 0;
+  /// The request limits the chosen profile sits on (DesignGrid::pinned_limits; the same as
+  /// design.limits), e.g. "frequency at frequency_min = 5 Hz (the default)".
+  std::vector<std::string> limits;
+  std::vector<int> rungs;  ///< screening draws of each rung of the screen
+  /// Grid candidates; those screened; finalists verified by a selection Monte Carlo.
   int candidates = 0, screened = 0, verified = 0;
 };
 
+/// The most grid points design_robust takes: acceleration_grid^2 x period_grid x stroke_grid
+/// <= 1e7 (the prune runs 2048 closed-form draws on each, and keeps the candidates it passes).
+inline constexpr double kMaxRobustCandidates = 1e7;
+
 /// Throws InvalidParameter on bad input (target or quantile outside (0, 1), a tolerance <= 0,
-/// runs out of range, an invalid uncertainty).
+/// runs out of range, an invalid uncertainty, a grid beyond kMaxRobustCandidates).
 RobustDesignResult design_robust(const DesignRequest& request,
                                  const ProcessUncertainty& uncertainty,
                                  const RobustOptions& options = {});
 
 /// The failure counts of a Monte-Carlo result.
 FailureCounts failure_counts(const MonteCarloResult& result);
+
+/// The smallest tolerance [m] within which a fraction `probability` of the runs end: the
+/// probability-quantile of |end - target|, a run that did not stop counting as +inf.
+double tolerance_at_probability(const MonteCarloResult& result, double probability);
 
 }  // namespace selfalign
