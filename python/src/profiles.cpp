@@ -287,7 +287,6 @@ void bind_sampled(py::module_& m) {
       .value("linear", Interpolation::linear, "y'' linear between samples (piecewise-cubic y)")
       .def(py::init(&parse_interpolation), py::arg("text"));
   refuse_unknown_values(interpolation, "Interpolation", 2);
-  def_enum_pickle(interpolation);
   py::implicitly_convertible<py::str, Interpolation>();
 
   py::class_<AccelerationSamples> samples(m, "AccelerationSamples",

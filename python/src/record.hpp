@@ -3,8 +3,8 @@
 // results), declared once per class as a list of named fields:
 //   pickling   __getstate__/__setstate__: the state is the tuple of the fields' C++ values
 //              (vectors of numbers as NumPy arrays, nested value types as their Python
-//              objects, which pickle themselves), so a round trip restores the same object;
-//              __reduce_ex__ makes every protocol (0 and 1 too) use them, copy/deepcopy too;
+//              objects, which pickle themselves), so a round trip restores the same object
+//              under every protocol (0 and 1 too: classes.cpp), copy/deepcopy too;
 //   __eq__     field-wise on those values: floats bit-equal except that NaN equals NaN,
 //   __ne__     arrays element-wise the same way, nested value types by their own __eq__;
 //              NotImplemented for another type (defining __eq__ makes the class unhashable);
@@ -204,15 +204,6 @@ void define(py::class_<T, Options...>& cls, Restore restore_all, const Fields&..
                             std::to_string(s.size()));
     return restore_all(s);
   }));
-  // Protocol 2's reduction for every protocol (object's own for 0 and 1 would call
-  // object.__new__ on a pybind11 class, which aborts the interpreter).
-  cls.def(
-      "__reduce_ex__",
-      [](const py::object& self, int) {
-        return py::make_tuple(py::module_::import("copyreg").attr("__newobj__"),
-                              py::make_tuple(py::type::of(self)), self.attr("__getstate__")());
-      },
-      py::arg("protocol"));
   const auto equal = [state](const T& self, const py::object& other) -> py::object {
     if (!py::isinstance<T>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
     return py::bool_(values_equal(state(self), state(other.cast<const T&>())));
@@ -294,18 +285,6 @@ void def_record(py::class_<T, Options...>& cls, Factory factory, Fields... field
         }(std::make_index_sequence<sizeof...(Fields)>{});
       },
       fields...);
-}
-
-/// Pickling of a pybind11 enum under every protocol, as Enum(int) (pybind11's own works for
-/// protocols >= 2 only; 0 and 1 abort the interpreter), e.g. a record's enum field.
-template <class E>
-void def_enum_pickle(py::enum_<E>& e) {
-  e.def(
-      "__reduce_ex__",
-      [](const py::object& self, int) {
-        return py::make_tuple(py::type::of(self), py::make_tuple(py::int_(self)));
-      },
-      py::arg("protocol"));
 }
 
 /// A double that a result does not always have: its value where present(s), else NaN (the
