@@ -360,8 +360,8 @@ nearest edge value outside. Levels finite and > 0, nx, ny >= 2, nx ny levels.)do
           return py::float_(planar_level(f, xv, yv));
         }
         const py::module_ numpy = py::module_::import("numpy");
-        const py::tuple both = numpy.attr("broadcast_arrays")(
-            numpy.attr("asarray")(x, "float64"), numpy.attr("asarray")(y, "float64"));
+        const py::tuple both =
+            numpy.attr("broadcast_arrays")(float_array(x, "x"), float_array(y, "y"));
         const auto xa = DoubleArray::ensure(both[0]), ya = DoubleArray::ensure(both[1]);
         py::array_t<double> out(std::vector<py::ssize_t>(xa.shape(), xa.shape() + xa.ndim()));
         double* dst = out.mutable_data();

@@ -41,6 +41,7 @@
 #include <utility>
 #include <vector>
 
+#include "arguments.hpp"
 #include "arrays.hpp"
 
 namespace selfalign::python {
@@ -83,6 +84,26 @@ struct Codec<std::vector<T, A>> {
   }
 };
 
+/// A field's state value as a V; TypeError naming the field when it has the wrong type (a
+/// hand-made or corrupted pickle state).
+template <class V>
+V load_field(const py::handle& h, const char* name) {
+  const auto wrong = [&] {
+    return py::type_error(std::string("pickle state: field '") + name + "' has the wrong type (" +
+                          python_type_name(h) + ")");
+  };
+  try {
+    return Codec<V>::load(h);
+  } catch (const py::cast_error&) {
+    throw wrong();
+  } catch (const py::type_error&) {
+    throw wrong();
+  } catch (py::error_already_set& e) {  // e.g. iterating a number
+    if (!e.matches(PyExc_TypeError)) throw;
+    throw wrong();
+  }
+}
+
 struct NoSetter {};
 
 template <class Get, class Set>
@@ -119,8 +140,8 @@ py::object dump(const Field<Get, Set>& f, const T& obj) {
 }
 
 template <class T, class Member>
-void assign(Member member, T& obj, const py::handle& h) {
-  obj.*member = Codec<decltype(member_type(member))>::load(h);
+void assign(Member member, T& obj, const py::handle& h, const char* name) {
+  obj.*member = load_field<decltype(member_type(member))>(h, name);
 }
 
 template <class T, class Get, class Set>
@@ -128,12 +149,12 @@ void restore(const Field<Get, Set>& f, T& obj, const py::handle& h) {
   if constexpr (std::is_same_v<Set, NoSetter>) {
     static_assert(std::is_member_object_pointer_v<Get>,
                   "a field read by a getter needs a setter, or the class a factory");
-    assign(f.get, obj, h);
+    assign(f.get, obj, h, f.name);
   } else if constexpr (std::is_member_object_pointer_v<Set>) {
-    assign(f.set, obj, h);
+    assign(f.set, obj, h, f.name);
   } else {
     using V = std::tuple_element_t<1, typename parameters<Set>::type>;
-    f.set(obj, Codec<V>::load(h));
+    f.set(obj, load_field<V>(h, f.name));
   }
 }
 
@@ -279,9 +300,10 @@ void def_record(py::class_<T, Options...>& cls, Factory factory, Fields... field
                 "the factory takes one parameter per field");
   record::define(
       cls,
-      [factory](const py::tuple& s) {
+      [factory, names = std::array<const char*, sizeof...(Fields)>{fields.name...}](
+          const py::tuple& s) {
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-          return factory(record::Codec<std::tuple_element_t<I, Args>>::load(s[I])...);
+          return factory(record::load_field<std::tuple_element_t<I, Args>>(s[I], names[I])...);
         }(std::make_index_sequence<sizeof...(Fields)>{});
       },
       fields...);
