@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "progress.hpp"
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/design/fourier_design.hpp"
@@ -20,6 +21,19 @@ namespace {
 // The numbers of a result without an optimum (no parameters: the search found no point to
 // evaluate) do not exist: NaN (the library leaves them 0, and max_jerk inf).
 constexpr auto has_optimum = [](const OptimizationResult& r) { return !r.parameters.empty(); };
+
+// Runs optimize(options) without the GIL, interruptible by Ctrl-C (progress.hpp): the
+// library's progress callback checks for cancellation, then calls the options' own callable.
+template <class Optimize>
+auto interruptible(const OptimizeOptions& o, const Optimize& optimize) {
+  const PythonProgress progress{py::none()};
+  OptimizeOptions run = o;
+  run.progress = [check = progress.callback(), user = o.progress](int done, int total) {
+    check(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+    if (user) user(done, total);
+  };
+  return progress.run([&] { return optimize(run); });
+}
 
 }  // namespace
 
@@ -59,7 +73,9 @@ bounded over the whole period.)doc");
   py::class_<O> options(m, "OptimizeOptions", R"doc(
 Options of the optimisers: Fourier order, K segments, multi-starts, evaluations per local run,
 three-phase scan grid and polish count, seed, finite-difference step, and an optional
-progress(done, total) callable.)doc");
+progress(done, total) callable (called after each local run, and with the same `done` about
+every 50 ms while one is under way, from a helper thread holding the GIL). The optimisers run
+without the GIL; Ctrl-C stops them with KeyboardInterrupt.)doc");
   options
       .def(py::init([](int order, int segments, int starts, int max_evaluations, int grid,
                        int polish, unsigned seed, double fd_step,
@@ -145,13 +161,18 @@ the optimum are NaN when the search found none (parameters empty).)doc");
              field("evaluations", &R::evaluations), field("starts", &R::starts),
              field("message", &R::message));
 
-  m.def("optimize_three_phase", &optimize_three_phase, py::arg("limits"),
-        py::arg("options") = OptimizeOptions{},
-        "Global optimum of the three-phase family (scan, then polish) within the limits.");
+  m.def(
+      "optimize_three_phase",
+      [](const ActuatorLimits& l, const OptimizeOptions& o) {
+        return interruptible(o, [&](const OptimizeOptions& q) { return optimize_three_phase(l, q); });
+      },
+      py::arg("limits"), py::arg("options") = OptimizeOptions{},
+      "Global optimum of the three-phase family (scan, then polish) within the limits.");
   m.def(
       "optimize_piecewise_constant",
       [](const ActuatorLimits& l, const OptimizeOptions& o) {
-        return optimize_piecewise_constant(l, o);
+        return interruptible(
+            o, [&](const OptimizeOptions& q) { return optimize_piecewise_constant(l, q); });
       },
       py::arg("limits"), py::arg("options") = OptimizeOptions{},
       "Optimum of the K-segment piecewise-constant family (K = options.segments), searched after "
@@ -159,12 +180,18 @@ the optimum are NaN when the search found none (parameters empty).)doc");
       "so v_bar never falls as K grows.");
   m.def(
       "optimize_fourier",
-      [](const ActuatorLimits& l, const OptimizeOptions& o) { return optimize_fourier(l, o); },
+      [](const ActuatorLimits& l, const OptimizeOptions& o) {
+        return interruptible(o, [&](const OptimizeOptions& q) { return optimize_fourier(l, q); });
+      },
       py::arg("limits"), py::arg("options") = OptimizeOptions{},
       "Optimum of the Fourier family of order options.order (Sect. 4.4.2).");
-  m.def("compare_families", &compare_families, py::arg("limits"),
-        py::arg("options") = OptimizeOptions{},
-        "One optimum per family: three-phase, piecewise-constant, Fourier.");
+  m.def(
+      "compare_families",
+      [](const ActuatorLimits& l, const OptimizeOptions& o) {
+        return interruptible(o, [&](const OptimizeOptions& q) { return compare_families(l, q); });
+      },
+      py::arg("limits"), py::arg("options") = OptimizeOptions{},
+      "One optimum per family: three-phase, piecewise-constant, Fourier.");
   m.def("rebuild_profile", &rebuild_profile, py::arg("result"),
         "The optimal profile of a feasible result, as a TableProfile.");
 }
