@@ -22,17 +22,23 @@ namespace {
 // evaluate) do not exist: NaN (the library leaves them 0, and max_jerk inf).
 constexpr auto has_optimum = [](const OptimizationResult& r) { return !r.parameters.empty(); };
 
-// Runs optimize(options) without the GIL, interruptible by Ctrl-C (progress.hpp): the
-// library's progress callback checks for cancellation, then calls the options' own callable.
+// Binds name(limits, options): optimize(limits, options) without the GIL, interruptible by
+// Ctrl-C (progress.hpp): the library's progress callback checks for cancellation, then calls
+// the options' own callable.
 template <class Optimize>
-auto interruptible(const OptimizeOptions& o, const Optimize& optimize) {
-  const PythonProgress progress{py::none()};
-  OptimizeOptions run = o;
-  run.progress = [check = progress.callback(), user = o.progress](int done, int total) {
-    check(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
-    if (user) user(done, total);
-  };
-  return progress.run([&] { return optimize(run); });
+void def_optimizer(py::module_& m, const char* name, Optimize optimize, const char* doc) {
+  m.def(
+      name,
+      [optimize](const ActuatorLimits& l, const OptimizeOptions& o) {
+        const PythonProgress progress{py::none()};
+        OptimizeOptions run = o;
+        run.progress = [check = progress.callback(), user = o.progress](int done, int total) {
+          check(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+          if (user) user(done, total);
+        };
+        return progress.run([&] { return optimize(l, run); });
+      },
+      py::arg("limits"), py::arg("options") = OptimizeOptions{}, doc);
 }
 
 }  // namespace
@@ -161,37 +167,23 @@ the optimum are NaN when the search found none (parameters empty).)doc");
              field("evaluations", &R::evaluations), field("starts", &R::starts),
              field("message", &R::message));
 
-  m.def(
-      "optimize_three_phase",
+  def_optimizer(m, "optimize_three_phase", [](const ActuatorLimits& l, const OptimizeOptions& o) {
+    return optimize_three_phase(l, o);
+  }, "Global optimum of the three-phase family (scan, then polish) within the limits.");
+  def_optimizer(
+      m, "optimize_piecewise_constant",
       [](const ActuatorLimits& l, const OptimizeOptions& o) {
-        return interruptible(o, [&](const OptimizeOptions& q) { return optimize_three_phase(l, q); });
+        return optimize_piecewise_constant(l, o);
       },
-      py::arg("limits"), py::arg("options") = OptimizeOptions{},
-      "Global optimum of the three-phase family (scan, then polish) within the limits.");
-  m.def(
-      "optimize_piecewise_constant",
-      [](const ActuatorLimits& l, const OptimizeOptions& o) {
-        return interruptible(
-            o, [&](const OptimizeOptions& q) { return optimize_piecewise_constant(l, q); });
-      },
-      py::arg("limits"), py::arg("options") = OptimizeOptions{},
       "Optimum of the K-segment piecewise-constant family (K = options.segments), searched after "
       "K - 1, ..., 2 and started from the (K-1) optimum (and, for K = 3, the three-phase one), "
       "so v_bar never falls as K grows.");
-  m.def(
-      "optimize_fourier",
-      [](const ActuatorLimits& l, const OptimizeOptions& o) {
-        return interruptible(o, [&](const OptimizeOptions& q) { return optimize_fourier(l, q); });
-      },
-      py::arg("limits"), py::arg("options") = OptimizeOptions{},
-      "Optimum of the Fourier family of order options.order (Sect. 4.4.2).");
-  m.def(
-      "compare_families",
-      [](const ActuatorLimits& l, const OptimizeOptions& o) {
-        return interruptible(o, [&](const OptimizeOptions& q) { return compare_families(l, q); });
-      },
-      py::arg("limits"), py::arg("options") = OptimizeOptions{},
-      "One optimum per family: three-phase, piecewise-constant, Fourier.");
+  def_optimizer(m, "optimize_fourier", [](const ActuatorLimits& l, const OptimizeOptions& o) {
+    return optimize_fourier(l, o);
+  }, "Optimum of the Fourier family of order options.order (Sect. 4.4.2).");
+  def_optimizer(m, "compare_families", [](const ActuatorLimits& l, const OptimizeOptions& o) {
+    return compare_families(l, o);
+  }, "One optimum per family: three-phase, piecewise-constant, Fourier.");
   m.def("rebuild_profile", &rebuild_profile, py::arg("result"),
         "The optimal profile of a feasible result, as a TableProfile.");
 }
