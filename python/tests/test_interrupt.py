@@ -10,6 +10,7 @@ import select
 import signal
 import subprocess
 import sys
+import tempfile
 import textwrap
 import time
 
@@ -68,38 +69,66 @@ CHILD = textwrap.dedent("""
 """)
 
 
-def test_ctrl_c_interrupts_every_long_call_promptly():
-    p = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, bufsize=1)
-    latencies, problems = {}, []
-    try:
-        while True:
-            line = p.stdout.readline()
-            if not line:
-                break
-            word, name = line.strip().split(" ", 1)
-            if word != "go":
-                problems.append(f"{name}: {word} before SIGINT (not long enough to test)")
-                continue
-            time.sleep(SIGNAL_AFTER_S)
-            sent = time.monotonic()
-            p.send_signal(signal.SIGINT)
-            ready, _, _ = select.select([p.stdout], [], [], CALL_TIMEOUT_S)
+class Lines:
+    """The child's stdout line by line, read from the pipe itself (select() does not see what a
+    buffered reader already holds)."""
+
+    def __init__(self, fd):
+        self.fd, self.buffer = fd, b""
+
+    def next(self, timeout):
+        """The next line; None when none came within timeout; '' at the end."""
+        deadline = time.monotonic() + timeout
+        while b"\n" not in self.buffer:
+            ready, _, _ = select.select([self.fd], [], [], max(0.0, deadline - time.monotonic()))
             if not ready:
-                problems.append(f"{name}: no KeyboardInterrupt within {CALL_TIMEOUT_S} s")
-                break
-            answer = p.stdout.readline().strip()
-            latencies[name] = time.monotonic() - sent
-            if not answer:
-                problems.append(f"{name}: the child ended")
-                break
-            word = answer.split(" ", 1)[0]
-            if word != "interrupted":
-                problems.append(f"{name}: {word} after SIGINT")
-    finally:
-        if p.poll() is None:
-            os.kill(p.pid, signal.SIGKILL)
-        _, err = p.communicate()
+                return None
+            chunk = os.read(self.fd, 4096)
+            if not chunk:
+                return ""
+            self.buffer += chunk
+        line, self.buffer = self.buffer.split(b"\n", 1)
+        return line.decode()
+
+
+def test_ctrl_c_interrupts_every_long_call_promptly():
+    with tempfile.TemporaryFile() as err_file:  # a file: a chatty child never blocks on it
+        p = subprocess.Popen([sys.executable, "-X", "faulthandler", "-c", CHILD],
+                             stdout=subprocess.PIPE, stderr=err_file)
+        lines = Lines(p.stdout.fileno())
+        latencies, problems = {}, []
+        try:
+            while True:
+                line = lines.next(CALL_TIMEOUT_S)
+                if not line:
+                    break
+                word, name = line.split(" ", 1)
+                if word != "go":
+                    problems.append(f"{name}: {word} before SIGINT (not long enough to test)")
+                    continue
+                time.sleep(SIGNAL_AFTER_S)
+                sent = time.monotonic()
+                p.send_signal(signal.SIGINT)
+                answer = lines.next(CALL_TIMEOUT_S)
+                latencies[name] = time.monotonic() - sent
+                if answer is None:
+                    problems.append(f"{name}: no KeyboardInterrupt within {CALL_TIMEOUT_S} s")
+                    p.send_signal(signal.SIGABRT)  # faulthandler: every thread's stack
+                    break
+                if not answer:
+                    problems.append(f"{name}: the child ended")
+                    break
+                if answer.split(" ", 1)[0] != "interrupted":
+                    problems.append(f"{name}: {answer} after SIGINT")
+        finally:
+            try:
+                p.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait()
+            p.stdout.close()
+            err_file.seek(0)
+            err = err_file.read().decode("utf-8", "replace")
     slow = {k: round(v, 2) for k, v in latencies.items() if v > MAX_LATENCY_S}
-    assert not problems and not slow and p.returncode == 0, (problems, slow, latencies, err[-2000:])
+    assert not problems and not slow and p.returncode == 0, (problems, slow, latencies, err[-3000:])
     assert len(latencies) == 12, latencies
