@@ -21,7 +21,10 @@ SIGNAL_AFTER_S = 0.2   # into each call
 CALL_TIMEOUT_S = 30    # a call that ignores Ctrl-C runs for this long before the test gives up
 
 CHILD = textwrap.dedent("""
-    import sys, numpy as np, selfalign as sa
+    import signal, sys, numpy as np, selfalign as sa
+    # Python's Ctrl-C handler, also where the suite runs in the background (a shell starts
+    # background jobs with SIGINT ignored, and Python then keeps it ignored)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
     req = sa.DesignRequest(acceleration_grid=4, period_grid=2, stroke_grid=1, entries=3,
                            tolerance=0.001)
