@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "selfalign/error.hpp"
 #include "selfalign/units.hpp"
@@ -29,6 +30,30 @@ TEST(Scales, RoundTripsEveryQuantity) {
   EXPECT_NEAR(s.time_to_si(s.time_from_si(v)), v, 4e-16);  // two roundings of a 0.1-sized number
   EXPECT_NEAR(s.velocity_to_si(s.velocity_from_si(v)), v, 4e-16);  // two roundings of a 0.1-sized number
   EXPECT_NEAR(s.acceleration_to_si(s.acceleration_from_si(v)), v, 4e-16);
+}
+
+TEST(Scales, JerkScalesWithMuGOverT) {
+  // L/T^3 = mu g / T (hand derivation from eq. 4), the Dimension::jerk of config files.
+  const Scales s(2e-3, 0.25, 9.81);
+  const double T = std::sqrt(0.002 / 2.4525);
+  EXPECT_NEAR(s.jerk(), 2.4525 / T, 1e-12);  // ~86, a few roundings
+  EXPECT_NEAR(s.jerk_to_si(2.0), 2 * 2.4525 / T, 1e-12);
+  EXPECT_NEAR(s.jerk_from_si(s.jerk_to_si(0.123)), 0.123, 4e-16);  // two roundings
+}
+
+TEST(Scales, AbsentAndUnboundedValuesPassThrough) {
+  // NaN (absent) stays NaN, +-inf (no jerk limit, accumulation) stays +-inf.
+  const Scales s(1e-3, 0.3);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double (Scales::*f)(double) const noexcept :
+       {&Scales::length_to_si, &Scales::time_to_si, &Scales::velocity_to_si,
+        &Scales::acceleration_to_si, &Scales::jerk_to_si, &Scales::length_from_si,
+        &Scales::time_from_si, &Scales::velocity_from_si, &Scales::acceleration_from_si,
+        &Scales::jerk_from_si}) {
+    EXPECT_TRUE(std::isnan((s.*f)(std::nan(""))));
+    EXPECT_EQ((s.*f)(inf), inf);
+    EXPECT_EQ((s.*f)(-inf), -inf);
+  }
 }
 
 TEST(Scales, RejectsNonPositiveOrNaNInputsByName) {

@@ -8,7 +8,9 @@
 /// Accelerations scale with L/T^2 = mu g, velocities with L/T = sqrt(L mu g).
 ///
 /// Everything inside selfalign is dimensionless ([-]); SI appears only at the edges
-/// (CLI, config files, Python), through the functions below.
+/// (CLI, config files, Python), through the functions below. They are plain products and
+/// quotients: NaN (a value that is absent) stays NaN and +-inf (e.g. "no jerk limit") stays
+/// +-inf.
 
 namespace selfalign {
 
@@ -27,17 +29,22 @@ class Scales {
   double time() const noexcept { return time_; }              ///< T~ = sqrt(L~/(mu g~)) [s]
   double velocity() const noexcept { return length_ / time_; }       ///< L~/T~ [m/s]
   double acceleration() const noexcept { return mu_ * gravity_; }    ///< L~/T~^2 = mu g~ [m/s^2]
+  double jerk() const noexcept { return acceleration() / time_; }    ///< L~/T~^3 = mu g~/T~ [m/s^3]
 
   // SI -> dimensionless
   double length_from_si(double metres) const noexcept { return metres / length_; }
   double time_from_si(double seconds) const noexcept { return seconds / time_; }
   double velocity_from_si(double m_per_s) const noexcept { return m_per_s / velocity(); }
   double acceleration_from_si(double m_per_s2) const noexcept { return m_per_s2 / acceleration(); }
+  double jerk_from_si(double m_per_s3) const noexcept {
+    return acceleration_from_si(m_per_s3) * time_;
+  }
   // dimensionless -> SI
   double length_to_si(double x) const noexcept { return x * length_; }
   double time_to_si(double t) const noexcept { return t * time_; }
   double velocity_to_si(double v) const noexcept { return v * velocity(); }
   double acceleration_to_si(double a) const noexcept { return a * acceleration(); }
+  double jerk_to_si(double j) const noexcept { return acceleration_to_si(j) / time_; }
 
  private:
   double length_, mu_, gravity_, time_;

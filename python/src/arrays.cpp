@@ -2,13 +2,22 @@
 
 #include <string>
 
+#include "arguments.hpp"
 #include "selfalign/error.hpp"
 
 namespace selfalign::python {
 
+DoubleArray float_array(const py::handle& values, const char* name) {
+  DoubleArray a;
+  if (!values.is_none()) a = DoubleArray::ensure(values);  // None would become NaN
+  if (values.is_none() || !a)
+    throw py::type_error(std::string(name) + ": expected a float or an array-like of floats, got " +
+                         python_type_name(values));
+  return a;
+}
+
 std::vector<double> to_vector(const py::handle& values, const char* name) {
-  const auto a = DoubleArray::ensure(values);
-  if (!a) throw py::type_error(std::string(name) + ": expected an array-like of floats");
+  const DoubleArray a = float_array(values, name);
   if (a.ndim() != 1)
     throw InvalidParameter(name, "an array with " + std::to_string(a.ndim()) + " dimensions",
                            "must be one-dimensional");

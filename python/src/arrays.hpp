@@ -19,6 +19,10 @@ namespace py = pybind11;
 /// A C-contiguous float64 array converted from any array-like (copies only when needed).
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
+/// values as a C-contiguous float64 array (copied only when needed); TypeError naming `name`
+/// and the type it got unless values is a number or an array-like of numbers.
+DoubleArray float_array(const py::handle& values, const char* name);
+
 /// Copies a 1-D array-like of floats. Throws InvalidParameter(name) unless it is 1-D.
 std::vector<double> to_vector(const py::handle& values, const char* name);
 
@@ -71,18 +75,24 @@ inline bool is_scalar(const py::handle& x) {
 /// A Python int/float as a double; InvalidParameter(name) for an int too large for a float.
 double scalar_value(const py::handle& x, const char* name);
 
+/// What map_elementwise does with NaN and inf: refuse them (most inputs: NaN in, NaN out
+/// would hide a mistake upstream), or pass them to f (unit conversions of values where NaN
+/// means absent and inf unbounded).
+enum class NonFinite { refuse, pass };
+
 /// f(x) elementwise: a Python scalar for a Python int/float, else an ndarray of x's shape
-/// with element type R. Every element must be finite: NaN or inf raises InvalidParameter
-/// naming `name` (NaN in, NaN out would hide a mistake upstream).
+/// with element type R. With NonFinite::refuse, NaN or inf raises InvalidParameter naming
+/// `name`.
 template <class R, class F>
-py::object map_elementwise(const py::handle& x, const F& f, const char* name = "x") {
+py::object map_elementwise(const py::handle& x, const F& f, const char* name = "x",
+                           NonFinite non_finite = NonFinite::refuse) {
   auto checked = [&](double v) {
-    if (!std::isfinite(v)) throw InvalidParameter(name, v, "must be a finite number");
+    if (non_finite == NonFinite::refuse && !std::isfinite(v))
+      throw InvalidParameter(name, v, "must be a finite number");
     return static_cast<R>(f(v));
   };
   if (is_scalar(x)) return py::cast(checked(scalar_value(x, name)));
-  const auto in = DoubleArray::ensure(x);
-  if (!in) throw py::type_error(std::string(name) + ": expected a float or an array-like of floats");
+  const DoubleArray in = float_array(x, name);
   py::array_t<R> out(std::vector<py::ssize_t>(in.shape(), in.shape() + in.ndim()));
   const double* src = in.data();
   R* dst = out.mutable_data();

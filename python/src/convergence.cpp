@@ -3,6 +3,7 @@
 
 #include <optional>
 
+#include "arguments.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "record.hpp"
@@ -74,7 +75,8 @@ float64 views: samples on a uniform grid plus every event of either trajectory.)
              field("lyapunov", &C::lyapunov), field("intervals", &C::intervals),
              field("t_coincide", t_coincide, [](C& c, const py::object& t) {
                c.t_coincide =
-                   t.is_none() ? std::optional<double>() : std::optional(t.cast<double>());
+                   t.is_none() ? std::optional<double>()
+                               : std::optional(argument<double>(t, "t_coincide", "a float or None"));
              }));
 
   const ConvergenceOptions d;

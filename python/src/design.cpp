@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "selfalign/design/actuator_samples.hpp"
 
+#include "arguments.hpp"
 #include "bindings.hpp"
 #include "progress.hpp"
 #include "record.hpp"
@@ -161,8 +162,9 @@ its numbers are then NaN (absent, never 0).)doc");
          const py::object& moving_mass) {
         ActuatorSamples s = actuator_samples(
             q, d, sample_rate,
-            moving_mass.is_none() ? std::numeric_limits<double>::quiet_NaN()
-                                  : moving_mass.cast<double>());
+            moving_mass.is_none()
+                ? std::numeric_limits<double>::quiet_NaN()
+                : argument<double>(moving_mass, "moving_mass", "a float [kg] or None"));
         py::dict out;
         out["t_s"] = to_array(std::move(s.t));
         out["y_m"] = to_array(std::move(s.y));

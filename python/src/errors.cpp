@@ -1,5 +1,7 @@
 // selfalign::InvalidParameter -> selfalign.InvalidParameter, a ValueError carrying the
-// parameter's name, its value and the allowed range as attributes.
+// parameter's name, its value and the allowed range as attributes. pybind11's cast_error (a
+// conversion a binding did not name: arguments.hpp's argument() names the parameter) ->
+// TypeError, not pybind11's RuntimeError "Unable to cast Python instance to C++ type".
 #include "bindings.hpp"
 #include "selfalign/error.hpp"
 
@@ -31,6 +33,8 @@ void bind_errors(py::module_& m) {
       error.attr("value") = e.value();
       error.attr("allowed") = e.allowed();
       PyErr_SetObject(invalid_parameter_type, error.ptr());
+    } catch (const py::cast_error&) {
+      PyErr_SetString(PyExc_TypeError, "a value has the wrong type and could not be converted");
     }
   });
 }

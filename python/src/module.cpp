@@ -25,4 +25,5 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_design(m);
   bind_uncertainty(m);
   bind_planar(m);
+  finish_classes(m);
 }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bindings.hpp"
+#include "progress.hpp"
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/design/fourier_design.hpp"
@@ -20,6 +21,25 @@ namespace {
 // The numbers of a result without an optimum (no parameters: the search found no point to
 // evaluate) do not exist: NaN (the library leaves them 0, and max_jerk inf).
 constexpr auto has_optimum = [](const OptimizationResult& r) { return !r.parameters.empty(); };
+
+// Binds name(limits, options): optimize(limits, options) without the GIL, interruptible by
+// Ctrl-C (progress.hpp): the library's progress callback checks for cancellation, then calls
+// the options' own callable.
+template <class Optimize>
+void def_optimizer(py::module_& m, const char* name, Optimize optimize, const char* doc) {
+  m.def(
+      name,
+      [optimize](const ActuatorLimits& l, const OptimizeOptions& o) {
+        const PythonProgress progress{py::none()};
+        OptimizeOptions run = o;
+        run.progress = [check = progress.callback(), user = o.progress](int done, int total) {
+          check(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+          if (user) user(done, total);
+        };
+        return progress.run([&] { return optimize(l, run); });
+      },
+      py::arg("limits"), py::arg("options") = OptimizeOptions{}, doc);
+}
 
 }  // namespace
 
@@ -59,7 +79,9 @@ bounded over the whole period.)doc");
   py::class_<O> options(m, "OptimizeOptions", R"doc(
 Options of the optimisers: Fourier order, K segments, multi-starts, evaluations per local run,
 three-phase scan grid and polish count, seed, finite-difference step, and an optional
-progress(done, total) callable.)doc");
+progress(done, total) callable (called after each local run, and with the same `done` about
+every 50 ms while one is under way, from a helper thread holding the GIL). The optimisers run
+without the GIL; Ctrl-C stops them with KeyboardInterrupt.)doc");
   options
       .def(py::init([](int order, int segments, int starts, int max_evaluations, int grid,
                        int polish, unsigned seed, double fd_step,
@@ -145,26 +167,23 @@ the optimum are NaN when the search found none (parameters empty).)doc");
              field("evaluations", &R::evaluations), field("starts", &R::starts),
              field("message", &R::message));
 
-  m.def("optimize_three_phase", &optimize_three_phase, py::arg("limits"),
-        py::arg("options") = OptimizeOptions{},
-        "Global optimum of the three-phase family (scan, then polish) within the limits.");
-  m.def(
-      "optimize_piecewise_constant",
+  def_optimizer(m, "optimize_three_phase", [](const ActuatorLimits& l, const OptimizeOptions& o) {
+    return optimize_three_phase(l, o);
+  }, "Global optimum of the three-phase family (scan, then polish) within the limits.");
+  def_optimizer(
+      m, "optimize_piecewise_constant",
       [](const ActuatorLimits& l, const OptimizeOptions& o) {
         return optimize_piecewise_constant(l, o);
       },
-      py::arg("limits"), py::arg("options") = OptimizeOptions{},
       "Optimum of the K-segment piecewise-constant family (K = options.segments), searched after "
       "K - 1, ..., 2 and started from the (K-1) optimum (and, for K = 3, the three-phase one), "
       "so v_bar never falls as K grows.");
-  m.def(
-      "optimize_fourier",
-      [](const ActuatorLimits& l, const OptimizeOptions& o) { return optimize_fourier(l, o); },
-      py::arg("limits"), py::arg("options") = OptimizeOptions{},
-      "Optimum of the Fourier family of order options.order (Sect. 4.4.2).");
-  m.def("compare_families", &compare_families, py::arg("limits"),
-        py::arg("options") = OptimizeOptions{},
-        "One optimum per family: three-phase, piecewise-constant, Fourier.");
+  def_optimizer(m, "optimize_fourier", [](const ActuatorLimits& l, const OptimizeOptions& o) {
+    return optimize_fourier(l, o);
+  }, "Optimum of the Fourier family of order options.order (Sect. 4.4.2).");
+  def_optimizer(m, "compare_families", [](const ActuatorLimits& l, const OptimizeOptions& o) {
+    return compare_families(l, o);
+  }, "One optimum per family: three-phase, piecewise-constant, Fourier.");
   m.def("rebuild_profile", &rebuild_profile, py::arg("result"),
         "The optimal profile of a feasible result, as a TableProfile.");
 }

@@ -17,6 +17,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "progress.hpp"
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/sweep.hpp"  // worker_threads
@@ -360,8 +361,8 @@ nearest edge value outside. Levels finite and > 0, nx, ny >= 2, nx ny levels.)do
           return py::float_(planar_level(f, xv, yv));
         }
         const py::module_ numpy = py::module_::import("numpy");
-        const py::tuple both = numpy.attr("broadcast_arrays")(
-            numpy.attr("asarray")(x, "float64"), numpy.attr("asarray")(y, "float64"));
+        const py::tuple both =
+            numpy.attr("broadcast_arrays")(float_array(x, "x"), float_array(y, "y"));
         const auto xa = DoubleArray::ensure(both[0]), ya = DoubleArray::ensure(both[1]);
         py::array_t<double> out(std::vector<py::ssize_t>(xa.shape(), xa.shape() + xa.ndim()));
         double* dst = out.mutable_data();
@@ -598,6 +599,7 @@ PlanarProblem problem_of(const TableProfile* x_profile, const TableProfile* y_pr
 
 // Records the state every `every` steps.
 struct PlanarRecorder final : PlanarStepSink {
+  const PythonProgress* interrupt = nullptr;  // the run stops here once cancelled (Ctrl-C)
   long long every = 1;
   long long last = -1;  // step index of the last sample
   std::vector<double> t, x, y, angle, ux, uy, omega, table_x, table_y, table_angle;
@@ -615,6 +617,7 @@ struct PlanarRecorder final : PlanarStepSink {
     last = s.step_index;
   }
   void on_step(const PlanarRigidState& s) override {
+    if (interrupt) interrupt->stop_if_cancelled();
     if (s.step_index % every == 0) record(s);
   }
   py::dict to_dict() && {
@@ -728,16 +731,17 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
         if (std::floor(steps / static_cast<double>(every)) + 2 > kMaxRecordedSamples)
           throw InvalidParameter("every", static_cast<double>(every),
                                  "the run would record more than 1e7 samples: raise every");
+        const PythonProgress interrupt{py::none()};
         PlanarRecorder rec;
         rec.every = every;
-        {
-          py::gil_scoped_release release;
+        rec.interrupt = &interrupt;
+        interrupt.run([&] {
           PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
           rec.record(s);
           advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
                                static_cast<long long>(steps), &rec);
           if (rec.last != s.step_index) rec.record(s);
-        }
+        });
         return std::move(rec).to_dict();
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
@@ -784,6 +788,8 @@ angles [rad]), the mean drift over `periods` table periods ([1, 100000]), in par
                   along table x, y [-] and the mean spin relative to the table [-]
   stick, pivot, slip  int64 arrays of that shape: steps of each PatchMode
   samples         the same as a list of PlanarDriftSample (angle fastest, then x, then y)
+`progress(done, total)`, if given, is called as samples complete (from worker threads, one
+call at a time, holding the GIL); Ctrl-C stops the study with KeyboardInterrupt.
 )doc");
   m.def(
       "planar_drift_field",
@@ -791,17 +797,18 @@ angles [rad]), the mean drift over `periods` table periods ([1, 100000]), in par
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
          const FrictionLaw& law, double step, double theta, const py::object& xs_in,
          const py::object& ys_in, const py::object& angles_in, int periods, int threads,
-         const py::object& x_direction, const py::object& y_direction) {
+         const py::object& x_direction, const py::object& y_direction,
+         const py::object& progress_in) {
         const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
                                            y_direction, field, part, law, step, theta);
         const std::vector<double> xs = to_vector(xs_in, "xs"), ys = to_vector(ys_in, "ys"),
                                   angles = to_vector(angles_in, "angles");
-        std::vector<PlanarDriftSample> samples;
-        {
-          py::gil_scoped_release release;
-          samples =
-              in_arena(threads, [&] { return planar_drift_field(p, xs, ys, angles, periods); });
-        }
+        const PythonProgress progress(progress_in);
+        const std::vector<PlanarDriftSample> samples = progress.run([&] {
+          return in_arena(threads, [&] {
+            return planar_drift_field(p, xs, ys, angles, periods, progress.callback());
+          });
+        });
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(ys.size()),
                                              static_cast<py::ssize_t>(xs.size()),
                                              static_cast<py::ssize_t>(angles.size())};
@@ -831,14 +838,16 @@ angles [rad]), the mean drift over `periods` table periods ([1, 100000]), in par
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
       py::arg("step"), py::arg("theta") = 0.5, py::arg("xs"), py::arg("ys"),
       py::arg("angles") = py::make_tuple(0.0), py::arg("periods"), py::arg("threads") = 0,
-      py::arg("x_direction") = ex, py::arg("y_direction") = ey, drift_doc.c_str());
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, py::arg("progress") = none,
+      drift_doc.c_str());
 
   static const std::string stop_doc = doc(R"doc(
 Stopping in a rough region: from rest at each entry pose (`entries`: an N x 3 array-like of
 (x, y, angle) rows, or a list of PlanarPose), runs until the part sticks for a whole table period
 (stopped; T_p = the start of that period) or max_periods ([1, 1e6]) pass, in parallel on
 `threads` workers (0: all cores). Returns a PlanarStopSummary: every run, the region of the
-stopped end positions and the range of their angles.
+stopped end positions and the range of their angles. `progress(done, total)` as in
+planar_drift_field, per entry; Ctrl-C stops the study after the runs under way.
 )doc");
   m.def(
       "planar_stop",
@@ -846,18 +855,21 @@ stopped end positions and the range of their angles.
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
          const FrictionLaw& law, double step, double theta, const py::object& entries_in,
          int max_periods, int threads, const py::object& x_direction,
-         const py::object& y_direction) {
+         const py::object& y_direction, const py::object& progress_in) {
         const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
                                            y_direction, field, part, law, step, theta);
         const std::vector<PlanarPose> entries = entries_of(entries_in);
-        py::gil_scoped_release release;
-        return in_arena(threads, [&] { return planar_stop(p, entries, max_periods); });
+        const PythonProgress progress(progress_in);
+        return progress.run([&] {
+          return in_arena(threads,
+                          [&] { return planar_stop(p, entries, max_periods, progress.callback()); });
+        });
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
       py::arg("step"), py::arg("theta") = 0.5, py::arg("entries"), py::arg("max_periods"),
       py::arg("threads") = 0, py::arg("x_direction") = ex, py::arg("y_direction") = ey,
-      stop_doc.c_str());
+      py::arg("progress") = none, stop_doc.c_str());
 }
 
 }  // namespace

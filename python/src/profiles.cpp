@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "arguments.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "record.hpp"
@@ -287,7 +288,6 @@ void bind_sampled(py::module_& m) {
       .value("linear", Interpolation::linear, "y'' linear between samples (piecewise-cubic y)")
       .def(py::init(&parse_interpolation), py::arg("text"));
   refuse_unknown_values(interpolation, "Interpolation", 2);
-  def_enum_pickle(interpolation);
   py::implicitly_convertible<py::str, Interpolation>();
 
   py::class_<AccelerationSamples> samples(m, "AccelerationSamples",
@@ -320,6 +320,8 @@ void bind_sampled(py::module_& m) {
   m.def(
       "read_acceleration_samples",
       [](const py::object& path) {
+        if (!py::isinstance<py::str>(path) && !py::hasattr(path, "__fspath__"))
+          throw py::type_error("path: expected a str or os.PathLike, got " + python_type_name(path));
         return read_acceleration_samples(py::str(py::module_::import("os").attr("fspath")(path)));
       },
       py::arg("path"), R"doc(

@@ -3,8 +3,8 @@
 // results), declared once per class as a list of named fields:
 //   pickling   __getstate__/__setstate__: the state is the tuple of the fields' C++ values
 //              (vectors of numbers as NumPy arrays, nested value types as their Python
-//              objects, which pickle themselves), so a round trip restores the same object;
-//              __reduce_ex__ makes every protocol (0 and 1 too) use them, copy/deepcopy too;
+//              objects, which pickle themselves), so a round trip restores the same object
+//              under every protocol (0 and 1 too: classes.cpp), copy/deepcopy too;
 //   __eq__     field-wise on those values: floats bit-equal except that NaN equals NaN,
 //   __ne__     arrays element-wise the same way, nested value types by their own __eq__;
 //              NotImplemented for another type (defining __eq__ makes the class unhashable);
@@ -41,6 +41,7 @@
 #include <utility>
 #include <vector>
 
+#include "arguments.hpp"
 #include "arrays.hpp"
 
 namespace selfalign::python {
@@ -83,6 +84,26 @@ struct Codec<std::vector<T, A>> {
   }
 };
 
+/// A field's state value as a V; TypeError naming the field when it has the wrong type (a
+/// hand-made or corrupted pickle state).
+template <class V>
+V load_field(const py::handle& h, const char* name) {
+  const auto wrong = [&] {
+    return py::type_error(std::string("pickle state: field '") + name + "' has the wrong type (" +
+                          python_type_name(h) + ")");
+  };
+  try {
+    return Codec<V>::load(h);
+  } catch (const py::cast_error&) {
+    throw wrong();
+  } catch (const py::type_error&) {
+    throw wrong();
+  } catch (py::error_already_set& e) {  // e.g. iterating a number
+    if (!e.matches(PyExc_TypeError)) throw;
+    throw wrong();
+  }
+}
+
 struct NoSetter {};
 
 template <class Get, class Set>
@@ -119,8 +140,8 @@ py::object dump(const Field<Get, Set>& f, const T& obj) {
 }
 
 template <class T, class Member>
-void assign(Member member, T& obj, const py::handle& h) {
-  obj.*member = Codec<decltype(member_type(member))>::load(h);
+void assign(Member member, T& obj, const py::handle& h, const char* name) {
+  obj.*member = load_field<decltype(member_type(member))>(h, name);
 }
 
 template <class T, class Get, class Set>
@@ -128,12 +149,12 @@ void restore(const Field<Get, Set>& f, T& obj, const py::handle& h) {
   if constexpr (std::is_same_v<Set, NoSetter>) {
     static_assert(std::is_member_object_pointer_v<Get>,
                   "a field read by a getter needs a setter, or the class a factory");
-    assign(f.get, obj, h);
+    assign(f.get, obj, h, f.name);
   } else if constexpr (std::is_member_object_pointer_v<Set>) {
-    assign(f.set, obj, h);
+    assign(f.set, obj, h, f.name);
   } else {
     using V = std::tuple_element_t<1, typename parameters<Set>::type>;
-    f.set(obj, Codec<V>::load(h));
+    f.set(obj, load_field<V>(h, f.name));
   }
 }
 
@@ -204,15 +225,6 @@ void define(py::class_<T, Options...>& cls, Restore restore_all, const Fields&..
                             std::to_string(s.size()));
     return restore_all(s);
   }));
-  // Protocol 2's reduction for every protocol (object's own for 0 and 1 would call
-  // object.__new__ on a pybind11 class, which aborts the interpreter).
-  cls.def(
-      "__reduce_ex__",
-      [](const py::object& self, int) {
-        return py::make_tuple(py::module_::import("copyreg").attr("__newobj__"),
-                              py::make_tuple(py::type::of(self)), self.attr("__getstate__")());
-      },
-      py::arg("protocol"));
   const auto equal = [state](const T& self, const py::object& other) -> py::object {
     if (!py::isinstance<T>(other)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
     return py::bool_(values_equal(state(self), state(other.cast<const T&>())));
@@ -288,24 +300,13 @@ void def_record(py::class_<T, Options...>& cls, Factory factory, Fields... field
                 "the factory takes one parameter per field");
   record::define(
       cls,
-      [factory](const py::tuple& s) {
+      [factory, names = std::array<const char*, sizeof...(Fields)>{fields.name...}](
+          const py::tuple& s) {
         return [&]<std::size_t... I>(std::index_sequence<I...>) {
-          return factory(record::Codec<std::tuple_element_t<I, Args>>::load(s[I])...);
+          return factory(record::load_field<std::tuple_element_t<I, Args>>(s[I], names[I])...);
         }(std::make_index_sequence<sizeof...(Fields)>{});
       },
       fields...);
-}
-
-/// Pickling of a pybind11 enum under every protocol, as Enum(int) (pybind11's own works for
-/// protocols >= 2 only; 0 and 1 abort the interpreter), e.g. a record's enum field.
-template <class E>
-void def_enum_pickle(py::enum_<E>& e) {
-  e.def(
-      "__reduce_ex__",
-      [](const py::object& self, int) {
-        return py::make_tuple(py::type::of(self), py::make_tuple(py::int_(self)));
-      },
-      py::arg("protocol"));
 }
 
 /// A double that a result does not always have: its value where present(s), else NaN (the

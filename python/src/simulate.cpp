@@ -88,7 +88,6 @@ void bind_method(py::module_& m) {
              "exact sticks, slips by Dormand-Prince with event location (speed-dependent laws)")
       .def(py::init(&parse_method), py::arg("text"));
   refuse_unknown_values(method, "Method", 3);
-  def_enum_pickle(method);
   py::implicitly_convertible<py::str, Method>();
 }
 

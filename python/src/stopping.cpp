@@ -101,7 +101,6 @@ void bind_stopping_run(py::module_& m) {
              "max_periods reached without a proof (e.g. the object never arrives), a periodic "
              "orbit that never rests, or never_stops (proven)");
   refuse_unknown_values(stop_kind, "StopKind", 3);
-  def_enum_pickle(stop_kind);
 
   const StoppingOptions d;
   py::class_<StoppingOptions> options(m, "StoppingOptions", "Options of stopping_run().");

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "arrays.hpp"
+#include "arguments.hpp"
 #include "bindings.hpp"
 #include "progress.hpp"
 #include "record.hpp"
@@ -21,12 +22,17 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A distribution argument: a Distribution object, its text form ("normal:0.2,5%"), or None
-// (known: the request's value).
+// A distribution argument: a Distribution object, its text form ("normal:0.2,5%"), a number
+// x (known to be exactly x: a normal of zero spread, Normal(x, 0)), or None (known: the
+// request's value).
 Distribution to_distribution(const char* name, const py::object& value) {
   if (value.is_none()) return Known{};
   if (py::isinstance<py::str>(value)) return parse_distribution(name, value.cast<std::string>());
-  Distribution d = value.cast<Distribution>();
+  Distribution d = is_scalar(value) && !py::isinstance<py::bool_>(value)
+                       ? Distribution(Normal{scalar_value(value, name), 0})
+                       : argument<Distribution>(value, name,
+                                                "a Normal, Uniform, Samples, Interval, Known, a "
+                                                "number, a text such as 'normal:0.2,5%' or None");
   validate(name, d);
   return d;
 }
@@ -125,7 +131,8 @@ What is known about each uncertain input of a designed process (SI): mu, c_mu, s
 (mu_static/mu), width [m] (transition = object width), x_mu_offset [m] (error of the rough
 region's start), amplitude and period_factor (factors on the table's displacement and period).
 Each keyword takes a Normal, Uniform, Samples, Interval, Known, a text form such as
-"normal:0.2,5%", or None (known: the design request's value).)doc");
+"normal:0.2,5%", a number x (known to be exactly x: Normal(x, 0)), or None (known: the design
+request's value). A value of another type raises TypeError naming the keyword.)doc");
   u.def(py::init([](const py::object& mu, const py::object& c_mu, const py::object& static_ratio,
                     const py::object& width, const py::object& x_mu_offset,
                     const py::object& amplitude, const py::object& period_factor) {

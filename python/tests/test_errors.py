@@ -138,3 +138,49 @@ def test_oversized_requests_are_refused_before_allocating():
         with pytest.raises(sa.InvalidParameter) as info:
             call()
         assert info.value.name == name, str(info.value)
+
+
+class _Foreign:
+    """An object of a type no parameter takes."""
+
+
+def test_a_wrong_type_names_the_parameter_and_the_expected_type():
+    # Issue 20, D38: these raised RuntimeError("Unable to cast Python instance to C++ type").
+    # (Every parameter of every binding: the fixed calls of test_fuzz_api.py.)
+    request = sa.DesignRequest(acceleration_grid=4, period_grid=2, stroke_grid=1, entries=3,
+                               tolerance=0.001)
+    design = sa.design_process(request, threads=1)
+    cases = [
+        (lambda: sa.actuator_samples(request, design, 2000.0, moving_mass="1.0"),
+         "moving_mass: expected a float [kg] or None, got str"),
+        (lambda: sa.ProcessUncertainty(mu=_Foreign()), "mu: expected a Normal, Uniform"),
+        (lambda: sa.ProcessUncertainty(c_mu=[1, 2]), "c_mu: expected"),
+        (lambda: sa.planar_level(sa.UniformPlanarField(), 0.5, _Foreign()),
+         "y: expected a float or an array-like of floats, got _Foreign"),
+        (lambda: sa.read_acceleration_samples(_Foreign()),
+         "path: expected a str or os.PathLike, got _Foreign"),
+        (lambda: sa.ObjectState.__new__(sa.ObjectState).__setstate__((0.0, "x", 0.0)),
+         "pickle state: field 'x' has the wrong type (str)"),
+        (lambda: sa.Normal.__new__(sa.Normal).__setstate__((0.3, "a", 0.0, 1.0)),
+         "pickle state: field 'sd' has the wrong type (str)"),
+    ]
+    for call, message in cases:
+        with pytest.raises(TypeError) as info:
+            call()
+        assert message in str(info.value)
+        assert "Unable to cast" not in str(info.value)
+
+
+def test_a_number_for_an_uncertain_input_is_known_exactly():
+    # Issue 20, D38: ProcessUncertainty(mu=0.25) means mu is 0.25 (a normal of zero spread).
+    u = sa.ProcessUncertainty(mu=0.25, c_mu=3)
+    assert u.mu == sa.Normal(0.25, 0.0) and u.c_mu == sa.Normal(3.0, 0.0)
+    assert sa.ProcessUncertainty(mu=None).mu == sa.Known()
+    request = sa.DesignRequest(tolerance=0.001)
+    drawn = sa.draw_inputs(request, u, runs=5)
+    assert (drawn["mu"] == 0.25).all() and (drawn["c_mu"] == 3.0).all()
+    with pytest.raises(TypeError, match="static_ratio"):
+        sa.ProcessUncertainty(static_ratio=True)  # a bool is not a number here
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.ProcessUncertainty(mu=-0.3)  # the domain check of any distribution
+    assert info.value.name.startswith("mu")

@@ -10,13 +10,16 @@ values, attributes such as ExactState.segment set to nonsense). Each call must e
     the parameter and carries no C++ internals ("std::", "vector::", "bad_alloc",
     "Unable to cast", "json.exception", ...),
 
-and never crash the interpreter or hang. The calls run in a worker subprocess (python -X
+and never crash the interpreter or hang. Issue 20 added: objects of every class made by
+cls.__new__ alone and used in every way (D33), pickles of every kind of object under protocols
+0 .. 5 (D37), and, as fixed calls, every parameter of every function and constructor given an
+object of a foreign type, whose refusal must name that parameter (D38). The calls run in a worker subprocess (python -X
 faulthandler) so a segfault is seen as the worker's death; the parent restarts a worker after
 the crashing call and goes on. A call is Python source, so every failure is printed with a
 reproducer to paste into a shell.
 
   SELFALIGN_FUZZ_SEED       seed (default 20100601)
-  SELFALIGN_FUZZ_API_CALLS  number of calls (default 1500)
+  SELFALIGN_FUZZ_API_CALLS  number of random calls after the fixed ones (default 1500)
 """
 
 import json
@@ -38,7 +41,8 @@ MEMORY_LIMIT = 4 << 30  # address space of the worker: a runaway allocation fail
 # InvalidParameter shows the name and the value up to 60 characters, the range up to 240 (src/error.cpp)
 MAX_MESSAGE = 500
 
-PRELUDE = ("import math, numpy as np, selfalign as sa; nan, inf = math.nan, math.inf; "
+PRELUDE = ("import copy, math, pickle, numpy as np, selfalign as sa; nan, inf = math.nan, math.inf; "
+           "Wrong = type('Wrong', (), {}); "
            "P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3); "
            "Q = sa.PiecewiseConstantProfile.from_accelerations([0.3, 0.4, 0.3], [0.0, -3.0, 4.0]); "
            "R = sa.FourierProfile(1.0, [0.04], [0.0]); "
@@ -280,6 +284,184 @@ CATALOGUE = [
       "max_periods": IN("20", big=["10**9"])}, "none"),
 ]
 
+# ---- every class, every protocol, every binding (issue 20: D33, D37, D38) ----------------------
+
+
+def _bound_class_names():
+    """Every pybind11 class the extension exports (enums included), discovered from it."""
+    import selfalign._selfalign as ext
+    base = ext.Scales.__mro__[-2]  # pybind11's common base
+    return sorted(n for n, v in vars(ext).items() if isinstance(v, type) and issubclass(v, base))
+
+
+CLASS_NAMES = _bound_class_names()
+# Instances to pickle: value types, enums, and classes that are not values (they must refuse).
+PICKLED = ["P", "Q", "R", "F", "U", "sa.PeriodMap(P)", "sa.StickPositionMap(P, F)",
+           "sa.Method.exact", "sa.StopKind.accumulation", "sa.Interpolation.linear",
+           "sa.StickSlipCase.slip_slip", "sa.ObjectState(0.1, 0.2, 0.3)", "sa.Scales(1e-3, 0.3)",
+           "sa.SimulationOptions()", "sa.SteadyStateOptions()", "sa.DesignRequest()",
+           "sa.ProcessUncertainty(mu=0.3)", "sa.Normal(0.3, 0.01)", "sa.RigidPart()",
+           "sa.StripField()", "sa.FrictionLaw(1.2, 1.0, 0.9)", "sa.steady_state(P)",
+           "sa.ThreePhaseFamily(2.3, 1.3)", "sa.PlanarPose(0.1, 0.2, 0.3)",
+           "sa.simulate(P, F, options=sa.SimulationOptions(duration=1.0))"]
+CATALOGUE += [
+    # D33: an object made by cls.__new__ alone, used in every way: a TypeError each time it is read
+    ("o = sa.{cls}.__new__(sa.{cls}); result = {use}",
+     {"cls": (CLASS_NAMES, [], []),
+      "use": (["repr(o)", "o == o", "pickle.dumps(o, protocol=0)", "pickle.dumps(o, protocol=1)",
+               "pickle.dumps(o)", "copy.deepcopy(o)", "o.to_dict()",
+               "[getattr(o, a) for a in dir(o) if not a.startswith('_')]", "sa.simulate(o, F)",
+               "sa.steady_state(o)", "sa.PeriodMap(o)", "sa.stopping_run(P, o)",
+               "sa.ProcessUncertainty(mu=o)", "sa.design_process(o)", "sa.monte_carlo(o, o, o)",
+               "sa.merge_monte_carlo([o])", "sa.planar_stop(o, field=o, part=o, step=0.01, "
+               "entries=[[0.0, 0.0, 0.0]], max_periods=2)"], [], [])},
+     "none"),
+    # D37: pickled under protocols 0 .. 5: a value type round-trips, any other class refuses
+    ("x = {obj}; result = (x, pickle.loads(pickle.dumps(x, protocol={protocol})))",
+     {"obj": (PICKLED, [], []), "protocol": (["0", "1", "2", "3", "4", "5"], [], [])},
+     "round_trip"),
+]
+
+# D38: every parameter of every function and constructor given an object of a foreign type
+# (Wrong()), the other required parameters valid: the call must raise TypeError (or
+# InvalidParameter) naming that parameter, or pybind11's list of the accepted signatures.
+VALID_BY_TYPE = {
+    "float": "1.0", "int": "2", "bool": "True", "str": "'x'",
+    "Callable[[int, int], None]": "None", "StickSlipCase": "sa.StickSlipCase.slip_slip",
+    "List[selfalign._selfalign.MonteCarloResult]": "[sa.monte_carlo(sa.DesignRequest(tolerance=1e-3), "
+        "sa.Process(period=0.05, stroke=0.002, a2=20.0, a3=10.0, x_mu=0.01), "
+        "sa.ProcessUncertainty(mu='normal:0.3,1%'), runs=2, max_periods=20)]",
+    "List[selfalign._selfalign.ContactPoint]": "[sa.ContactPoint(0.0, 0.0, 1.0)]",
+    "Union[selfalign._selfalign.UniformPlanarField, selfalign._selfalign.HalfPlaneStepField, "
+    "selfalign._selfalign.StripField, selfalign._selfalign.RectangularPocketField, "
+    "selfalign._selfalign.CircularPocketField, selfalign._selfalign.GridField]":
+        "sa.UniformPlanarField()",
+}
+VALID_BY_CLASS = {  # classes without a default constructor, or an example that is cheap
+    "TableProfile": "P", "ThreePhaseProfile": "P", "FourierProfile": "R",
+    "PiecewisePolynomialProfile": "Q", "FrictionMap": "F", "TwoRegionFriction": "F",
+    "AccelerationSamples": "sa.AccelerationSamples([0.0, 0.5, 1.0], [1.0, -1.0, 0.0])",
+    "ExactState": "sa.make_exact_state(P, F)", "TimeSteppingState": "sa.make_time_stepping_state(P)",
+    "PeriodMap": "sa.PeriodMap(P)", "ProfileFamily": "sa.ThreePhaseFamily(2.3, 1.3)",
+    "ThreePhaseParameters": "P.parameters", "ThreePhaseFamily": "sa.ThreePhaseFamily(2.3, 1.3)",
+    "Interpolation": "sa.Interpolation.linear", "Method": "sa.Method.exact",
+    "StopKind": "sa.StopKind.accumulation", "FrictionField": "sa.FrictionField([0.5], [1.0], [2.0])",
+    "DesignRequest": "sa.DesignRequest(acceleration_grid=4, period_grid=2, stroke_grid=1, entries=3)",
+    "DesignResult": "sa.design_process(sa.DesignRequest(acceleration_grid=4, period_grid=2, "
+                    "stroke_grid=1, entries=3))",
+    "Process": "sa.Process(period=0.05, stroke=0.002, a2=20.0, a3=10.0, x_mu=0.01)",
+    "JerkLimitedThreePhaseParameters": "sa.JerkLimitedThreePhaseParameters(1.0, 0.084, 3.0, 0.9, 50.0)",
+    "OptimizationResult": "sa.optimize_three_phase(sa.ActuatorLimits(), "
+                          "sa.OptimizeOptions(grid=6, polish=1, starts=1))",
+}
+VALID_OBJECT_BY_NAME = {  # parameters typed `object`, by name
+    "x": "0.5", "value": "1.0", "t": "[0.0, 0.5, 1.0]", "a2": "[2.3]", "a3": "[1.3]", "periods": "[1.0]",
+    "strokes": "[0.084]", "matrix": "np.eye(2)", "xs": "[0.0, 1.0, 1.0, 0.0]",
+    "ys": "[0.0, 0.0, 1.0, 1.0]", "loads": "[0.5, 0.5]", "entries": "[[0.0, 0.0, 0.0]]",
+    "v": "0.1", "a": "0.5", "bound": "1.0", "values": "[1.0, 2.0]", "durations": "[0.5, 0.5]",
+    "accelerations": "[1.0, -1.0]", "accels": "[1.0, -1.0]", "ydd": "[1.0, -1.0, 0.0]",
+    "cos": "[0.04]", "sin": "[0.0]", "path": "'/dev/null'", "cos_coeffs": "[0.04]",
+    "sin_coeffs": "[0.0]", "footprint": "sa.PointFootprint()", "left": "[1.0]",
+    "position": "[0.5]", "right": "[2.0]", "v_bar": "0.1", "y": "0.2",
+}
+
+
+def _split_top_level(text):
+    """text split at the commas outside brackets and quotes."""
+    parts, depth, quote, start = [], 0, None, 0
+    for i, c in enumerate(text):
+        if quote:
+            quote = None if c == quote else quote
+        elif c in "'\"":
+            quote = c
+        elif c in "([{":
+            depth += 1
+        elif c in ")]}":
+            depth -= 1
+        elif c == "," and depth == 0:
+            parts.append(text[start:i].strip())
+            start = i + 1
+    if text[start:].strip():
+        parts.append(text[start:].strip())
+    return parts
+
+
+def _signatures(obj):
+    """[(name, type, has_default, keyword_only)] per overload, from pybind11's docstring."""
+    doc = (obj.__init__ if isinstance(obj, type) else obj).__doc__ or ""
+    out = []
+    for line in doc.splitlines():
+        m = re.match(r"^(?:\d+\. )?(\w+)\((.*)\) -> ", line)
+        if not m:
+            continue
+        params, keyword_only = [], False
+        for part in _split_top_level(m.group(2)):
+            if part == "*":
+                keyword_only = True
+                continue
+            pm = re.match(r"^(\w+): (.*?)(?: = (.*))?$", part)
+            if not pm or pm.group(1) == "self":
+                continue
+            params.append((pm.group(1), pm.group(2), pm.group(3) is not None, keyword_only))
+        out.append(params)
+    return out
+
+
+def _valid(name, type_):
+    if type_ == "object":
+        return VALID_OBJECT_BY_NAME.get(name)
+    if type_ in VALID_BY_TYPE:
+        return VALID_BY_TYPE[type_]
+    m = re.match(r"^selfalign\._selfalign\.(\w+)$", type_)
+    if not m:
+        return None
+    cls = m.group(1)
+    return VALID_BY_CLASS.get(cls, f"sa.{cls}()")
+
+
+_WRONG_TYPE_CALLS = None
+
+
+def wrong_type_calls():
+    """(code, validator) for each parameter of each function and constructor that can be
+    called with every other required parameter valid."""
+    global _WRONG_TYPE_CALLS
+    if _WRONG_TYPE_CALLS is None:
+        import selfalign._selfalign as ext
+        calls = []
+        for callee, obj in sorted(vars(ext).items()):
+            if callee.startswith("_") or not callable(obj) or (
+                    isinstance(obj, type) and (issubclass(obj, BaseException) or callee not in CLASS_NAMES)):
+                continue
+            for params in _signatures(obj):
+                for k, (name, _, _, _) in enumerate(params):
+                    positional, keywords, ok = [], [], True
+                    for j, (other, other_type, has_default, keyword_only) in enumerate(params):
+                        unnamed = re.match(r"^arg\d+$", other) is not None
+                        if j == k:
+                            value = "Wrong()"
+                        elif has_default:
+                            if unnamed and j < k:
+                                ok = False  # an unnamed parameter after it needs its place
+                            continue
+                        else:
+                            value = _valid(other, other_type)
+                            ok = ok and value is not None
+                        # by keyword once the parameter under test went by keyword (the
+                        # positions after it would shift)
+                        if keyword_only or (not unnamed and (j == k or (j > k and keywords))):
+                            keywords.append(f"{other}={value}")
+                        elif keywords:
+                            ok = False
+                        else:
+                            positional.append(value)
+                    if ok:
+                        calls.append((f"result = sa.{callee}({', '.join(positional + keywords)})",
+                                      f"wrong_type:{name}"))
+        _WRONG_TYPE_CALLS = sorted(set(calls))
+    return _WRONG_TYPE_CALLS
+
+
 # Calls 0 .. len(CORPUS)-1: fixed, one per known defect class of the module (see
 # ../shared/repro/D02, D03, D11, D13) and per contract item; random calls follow.
 CORPUS = [
@@ -312,12 +494,23 @@ CORPUS = [
 # ---- the worker: runs calls, one JSON line per START and per outcome --------------------------
 
 
+def corpus():
+    """The fixed calls: CORPUS, then every binding with a wrong-typed argument (D38)."""
+    return CORPUS + wrong_type_calls()
+
+
+def total_calls():
+    """The fixed calls and CALLS random ones."""
+    return len(corpus()) + CALLS
+
+
 def make_call(index, seed):
     """Deterministic: (code, parameters, validator, big)."""
-    if index < len(CORPUS):
-        code, validator = CORPUS[index]
+    if index < len(corpus()):
+        code, validator = corpus()[index]
         return code, [], validator, False
-    rng = random.Random(f"api:{seed}:{index}")
+    # the random calls keep their numbers from before the fixed wrong-type calls were added
+    rng = random.Random(f"api:{seed}:{index - len(wrong_type_calls())}")
     template, params, validator = CATALOGUE[rng.randrange(len(CATALOGUE))]
     values, big = {}, False
     names = list(params)
@@ -381,6 +574,11 @@ def validate(result, validator, code):
     clean = not has_nonfinite_input(code)
     if validator in ("none", "readonly"):
         return None
+    if validator.startswith("wrong_type:"):
+        return f"accepted Wrong() for {validator.split(':')[1]}"
+    if validator == "round_trip":
+        before, after = result
+        return None if type(after) is type(before) and after == before else f"unpickled as {after!r}"
     if validator.startswith("finite") and clean and "None" in code and nan_in(result):
         return "None argument taken as NaN"
     if validator == "finite_if_finite_inputs":
@@ -545,6 +743,17 @@ def message_problem(exc, names, code):
     return None
 
 
+def wrong_type_problem(exc, parameter):
+    """None if the refusal of a wrong-typed `parameter` names it (or pybind11 lists the
+    accepted signatures, naming every parameter and its type)."""
+    msg = str(exc)
+    if type(exc).__name__ == "TypeError" and "incompatible" in msg and "arguments" in msg:
+        return None
+    if re.search(rf"\b{parameter}\b", msg):
+        return None
+    return f"the refusal does not name {parameter}"
+
+
 def worker(seed, start, stop):
     import faulthandler
     import resource
@@ -572,6 +781,8 @@ def worker(seed, start, stop):
             if isinstance(e, KeyboardInterrupt):
                 raise
             problem = message_problem(e, names, code)
+            if problem is None and validator.startswith("wrong_type:"):
+                problem = wrong_type_problem(e, validator.split(":")[1])
             outcome = f"{type(e).__name__}: {str(e)[:200]}"
         out.write(json.dumps({"i": i, "outcome": outcome, "problem": problem,
                               "seconds": round(time.monotonic() - t0, 3)}) + "\n")
@@ -655,7 +866,7 @@ def report(seed, results):
 
 def test_python_api_fuzz():
     t0 = time.monotonic()
-    results = run_calls(SEED, CALLS)
+    results = run_calls(SEED, total_calls())
     failures = report(SEED, results)
     kinds = {}
     for i, what, code, outcome in failures:
@@ -667,7 +878,7 @@ def test_python_api_fuzz():
         lines.append(f"  {len(idx):4d}  {kind}")
     for i, what, code, outcome in failures[:150]:
         lines.append(f"call {i}: {what}\n    outcome: {outcome[:240]}\n    reproduce: {reproducer(code)}")
-    assert len(results) == CALLS, f"{CALLS - len(results)} calls never ran"
+    assert len(results) == total_calls(), f"{total_calls() - len(results)} calls never ran"
     assert not failures, "\n".join(lines)
 
 
@@ -675,7 +886,7 @@ if __name__ == "__main__":
     if len(sys.argv) >= 2 and sys.argv[1] == "--worker":
         worker(int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4]))
     else:
-        n = int(sys.argv[1]) if len(sys.argv) > 1 else CALLS
+        n = int(sys.argv[1]) if len(sys.argv) > 1 else total_calls()
         res = run_calls(SEED, n)
         fails = report(SEED, res)
         for i, what, code, outcome in fails:

@@ -5,9 +5,12 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
+#include <time.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <exception>
 #include <mutex>
 #include <string>
@@ -17,8 +20,28 @@
 
 namespace selfalign::detail {
 
-// Runs body(i) for i in [0, n) on options.threads workers, reporting progress. A cell whose
-// body throws does not abort the study: fail(i, message) records it in the cell's own slot.
+// The longest a worker computes cells without reporting progress: a front end's callback can
+// then cancel a study (by throwing, e.g. on Ctrl-C) within about this plus one cell, however
+// large the study's chunks of cells are.
+inline constexpr std::chrono::milliseconds kProgressInterval{50};
+
+// A monotonic clock cheap enough to read after every cell: Linux's coarse clock (~10 ns a read,
+// a few ms resolution, plenty for kProgressInterval); steady_clock elsewhere.
+inline std::chrono::nanoseconds coarse_now() {
+#ifdef CLOCK_MONOTONIC_COARSE
+  timespec t{};
+  clock_gettime(CLOCK_MONOTONIC_COARSE, &t);
+  return std::chrono::seconds(t.tv_sec) + std::chrono::nanoseconds(t.tv_nsec);
+#else
+  return std::chrono::steady_clock::now().time_since_epoch();
+#endif
+}
+
+// Runs body(i) for i in [0, n) on options.threads workers, reporting progress after each
+// chunk of cells and, within a chunk, every kProgressInterval. A cell whose body throws does
+// not abort the study: fail(i, message) records it in the cell's own slot. An exception from
+// the progress callback aborts it: the other workers stop at their next cell, and the
+// exception propagates.
 template <class Body, class Fail>
 void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body, const Fail& fail) {
   const int threads = worker_threads(o.threads);
@@ -29,17 +52,23 @@ void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body, cons
   auto run = [&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
+                        auto last_report = coarse_now();
+                        std::size_t counted = r.begin();  // cells of r added to done
                         for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          if (tbb::is_current_task_group_canceling()) return;
                           try {
                             body(i);
                           } catch (const std::exception& e) {
                             fail(i, std::string(e.what()));
                           }
-                        }
-                        const std::size_t now = done += r.size();
-                        if (o.progress) {
+                          if (!o.progress) continue;
+                          const auto now = coarse_now();
+                          if (i + 1 != r.end() && now - last_report < kProgressInterval) continue;
+                          last_report = now;
+                          const std::size_t total = done += i + 1 - counted;
+                          counted = i + 1;
                           std::lock_guard lock(progress_mutex);
-                          reported = std::max(reported, now);
+                          reported = std::max(reported, total);
                           o.progress(reported, n);
                         }
                       });

@@ -331,10 +331,12 @@ OptimizationResult optimize_fourier(const ActuatorLimits& l, const OptimizeOptio
   };
   tbb::task_arena arena(worker_threads(o.threads));
   problem.evaluate_many = [&](const std::vector<std::vector<double>>& points,
-                              std::vector<DesignEvaluation>& out) {
+                              std::vector<DesignEvaluation>& out,
+                              const std::function<void()>& heartbeat) {
     const FourierEvaluator::Warm centre = warm;
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
+        heartbeat();
         out[i] = design(evaluator.evaluate(points[i], centre));
       });
     });

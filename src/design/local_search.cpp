@@ -1,8 +1,13 @@
 #include "selfalign/design/local_search.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <exception>
+#include <functional>
 #include <limits>
+#include <mutex>
+#include <optional>
 #include <stdexcept>
 
 #include <nlopt.hpp>
@@ -14,6 +19,9 @@ namespace selfalign {
 
 namespace {
 
+// The longest a local run goes without calling progress (see local_search).
+constexpr std::chrono::milliseconds kHeartbeatInterval{50};
+
 double max_violation(const DesignEvaluation& e) {
   double v = -std::numeric_limits<double>::infinity();
   for (double g : e.constraints) v = std::isnan(g) ? std::numeric_limits<double>::infinity()
@@ -21,11 +29,21 @@ double max_violation(const DesignEvaluation& e) {
   return e.constraints.empty() ? 0.0 : v;
 }
 
+// Thrown by the heartbeat when progress throws (a front end cancelling the search): carries
+// progress's own exception through the families' parallel stencils and through NLopt (whose
+// C++ wrapper would turn it into a plain stop); local_search rethrows the original.
+struct SearchCancelled {
+  std::exception_ptr reason;
+};
+
 // One local run: wraps the problem for NLopt, caches the last evaluation (NLopt asks for J
-// and g at the same x in two calls) and records the best point it sees.
+// and g at the same x in two calls) and records the best point it sees. heartbeat() comes
+// before every evaluation; a SearchCancelled it throws inside NLopt stops NLopt and is
+// rethrown after optimize().
 class Run {
  public:
-  explicit Run(const LocalSearchProblem& p) : p_(p) {
+  Run(const LocalSearchProblem& p, const std::function<void()>& heartbeat)
+      : p_(p), heartbeat_(heartbeat) {
     best_.objective = std::numeric_limits<double>::infinity();
     best_.violation = std::numeric_limits<double>::infinity();
   }
@@ -59,6 +77,7 @@ class Run {
       // roundoff-limited or a failed line search: the best point seen is kept below.
     } catch (const std::invalid_argument&) {
     }
+    if (cancelled_) throw *cancelled_;
     best_.evaluations = evaluations_;
     best_.runs = 1;
     return best_;
@@ -68,6 +87,7 @@ class Run {
   const DesignEvaluation& evaluate(const double* x) {
     const std::size_t n = p_.lower.size();
     if (have_cache_ && std::equal(x, x + n, cache_x_.begin())) return cache_;
+    heartbeat_();
     cache_x_.assign(x, x + n);
     cache_ = p_.evaluate(std::span<const double>(x, n));
     ++evaluations_;
@@ -117,7 +137,7 @@ class Run {
     }
     std::vector<DesignEvaluation> values(2 * n);
     if (p_.evaluate_many) {
-      p_.evaluate_many(points, values);
+      p_.evaluate_many(points, values, heartbeat_);
       evaluations_ += static_cast<int>(2 * n);
     } else {
       for (std::size_t k = 0; k < 2 * n; ++k) values[k] = evaluate(points[k].data());
@@ -139,23 +159,40 @@ class Run {
     if (grad_g) std::copy(grad_constraints_.begin(), grad_constraints_.end(), grad_g);
   }
 
+  // Inside NLopt's callbacks: keeps a cancellation and stops NLopt.
+  template <class F>
+  auto guarded(const F& f) -> decltype(f()) {
+    try {
+      return f();
+    } catch (const SearchCancelled& c) {
+      cancelled_ = c;
+      throw nlopt::forced_stop();
+    }
+  }
+
   static double objective(unsigned n, const double* x, double* grad, void* data) {
     auto& self = *static_cast<Run*>(data);
     (void)n;
-    self.evaluate_with_gradients(x, grad, nullptr);
-    return self.evaluate(x).objective;
+    return self.guarded([&] {
+      self.evaluate_with_gradients(x, grad, nullptr);
+      return self.evaluate(x).objective;
+    });
   }
 
   static void constraints(unsigned m, double* result, unsigned n, const double* x, double* grad,
                           void* data) {
     auto& self = *static_cast<Run*>(data);
     (void)n;
-    self.evaluate_with_gradients(x, nullptr, grad);
-    const DesignEvaluation& e = self.evaluate(x);
-    for (unsigned j = 0; j < m; ++j) result[j] = e.constraints[j];
+    self.guarded([&] {
+      self.evaluate_with_gradients(x, nullptr, grad);
+      const DesignEvaluation& e = self.evaluate(x);
+      for (unsigned j = 0; j < m; ++j) result[j] = e.constraints[j];
+    });
   }
 
   const LocalSearchProblem& p_;
+  const std::function<void()>& heartbeat_;
+  std::optional<SearchCancelled> cancelled_;
   LocalSearchResult best_;
   int evaluations_ = 0;
   bool have_cache_ = false, have_grad_ = false;
@@ -201,15 +238,40 @@ LocalSearchResult local_search(const LocalSearchProblem& problem,
                                const std::function<void(int, int)>& progress) {
   LocalSearchResult best;
   const int total = static_cast<int>(starts.size());
-  for (int k = 0; k < total; ++k) {
-    LocalSearchResult run = Run(problem)(starts[static_cast<std::size_t>(k)]);
-    for (int again = 0; again < problem.restarts && run.feasible; ++again) {
-      const double before = run.objective;
-      merge_best(run, Run(problem)(run.x));
-      if (!(run.objective < before - problem.relative_tol * std::abs(before))) break;
+  // progress(k, total) also while run k is under way, at most every kHeartbeatInterval and
+  // from one thread at a time (the heartbeat comes from the stencils' workers too): one local
+  // run can be long, and a front end cancels the search by throwing from progress.
+  using Clock = std::chrono::steady_clock;
+  int k = 0;
+  std::mutex beat_mutex;
+  auto last_report = Clock::now();  // under beat_mutex
+  const std::function<void()> heartbeat = [&] {
+    if (!progress) return;
+    const std::unique_lock lock(beat_mutex, std::try_to_lock);
+    if (!lock.owns_lock()) return;  // another thread is reporting
+    const auto now = Clock::now();
+    if (now - last_report < kHeartbeatInterval) return;
+    last_report = now;
+    try {
+      progress(k, total);
+    } catch (...) {
+      throw SearchCancelled{std::current_exception()};
     }
-    merge_best(best, run);
-    if (progress) progress(k + 1, total);
+  };
+  try {
+    for (; k < total; ++k) {
+      LocalSearchResult run = Run(problem, heartbeat)(starts[static_cast<std::size_t>(k)]);
+      for (int again = 0; again < problem.restarts && run.feasible; ++again) {
+        const double before = run.objective;
+        merge_best(run, Run(problem, heartbeat)(run.x));
+        if (!(run.objective < before - problem.relative_tol * std::abs(before))) break;
+      }
+      merge_best(best, run);
+      if (progress) progress(k + 1, total);
+      last_report = Clock::now();
+    }
+  } catch (const SearchCancelled& c) {
+    std::rethrow_exception(c.reason);
   }
   best.runs = total;  // starts (restarts of a start are part of its run)
   return best;

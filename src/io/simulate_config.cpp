@@ -57,7 +57,7 @@ double to_si(Dimension d, double v, const Scales& s) {
     case D::time: return s.time_to_si(v);
     case D::velocity: return s.velocity_to_si(v);
     case D::acceleration: return s.acceleration_to_si(v);
-    case D::jerk: return s.acceleration_to_si(v) / s.time();
+    case D::jerk: return s.jerk_to_si(v);
     case D::rate: return v / s.time();
     case D::none: break;
   }
@@ -70,7 +70,7 @@ double to_dimensionless(Dimension d, double v, const Scales& s) {
     case D::time: return s.time_from_si(v);
     case D::velocity: return s.velocity_from_si(v);
     case D::acceleration: return s.acceleration_from_si(v);
-    case D::jerk: return s.acceleration_from_si(v) * s.time();
+    case D::jerk: return s.jerk_from_si(v);
     case D::rate: return v * s.time();
     case D::none: break;
   }

@@ -30,8 +30,10 @@ struct LocalSearchProblem {
   std::function<DesignEvaluation(std::span<const double> x)> evaluate;
   /// Optional: evaluates every point of a finite-difference stencil at once (in parallel, say),
   /// out[i] for points[i]; each must equal what evaluate would give. Empty: evaluate, in turn.
+  /// It calls heartbeat() before each point (from any thread) and lets what it throws
+  /// propagate: that is how a cancelled search (see local_search) stops inside a stencil.
   std::function<void(const std::vector<std::vector<double>>& points,
-                     std::vector<DesignEvaluation>& out)>
+                     std::vector<DesignEvaluation>& out, const std::function<void()>& heartbeat)>
       evaluate_many;
   bool gradient_based = false;  ///< LD_SLSQP with FD gradients; else LN_COBYLA
   double fd_step = 1e-6;        ///< relative FD step (gradient-based only)
@@ -73,7 +75,9 @@ double design_objective(double v_bar, double period, double stroke);
 double trusted_v_bar(const SteadyState& state, double max_table_velocity, double period);
 
 /// Runs the local optimiser from every start (each clamped into the box) and returns the best
-/// point over all of them. progress(done, total) after each run when set.
+/// point over all of them. progress(done, total) after each run when set, and with the same
+/// `done` every 50 ms while a run is under way; an exception it throws stops the search and
+/// propagates (a front end's Ctrl-C).
 LocalSearchResult local_search(const LocalSearchProblem& problem,
                                const std::vector<std::vector<double>>& starts,
                                const std::function<void(int, int)>& progress = {});
