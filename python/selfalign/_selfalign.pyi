@@ -451,8 +451,13 @@ class Method:
 class IntegratorOptions:
     relative_tolerance: float
     absolute_tolerance: float
+    max_steps_per_period: float
     def __init__(
-        self, *, relative_tolerance: float = 1e-10, absolute_tolerance: float = 1e-12
+        self,
+        *,
+        relative_tolerance: float = 1e-10,
+        absolute_tolerance: float = 1e-12,
+        max_steps_per_period: float = 1e6,
     ) -> None: ...
     def to_dict(self) -> dict[str, Any]: ...
 

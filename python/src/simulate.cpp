@@ -98,24 +98,34 @@ void bind_integrator(py::module_& m) {
       "Tolerances of the slip integrator (Odeint's dense-output Dormand-Prince 5(4): per step "
       "|err| <= abs + rel (|x| + dt |x'|)).");
   options
-      .def(py::init([](double relative_tolerance, double absolute_tolerance) {
-             IntegratorOptions o{relative_tolerance, absolute_tolerance};
+      .def(py::init([](double relative_tolerance, double absolute_tolerance,
+                       double max_steps_per_period) {
+             IntegratorOptions o{relative_tolerance, absolute_tolerance, max_steps_per_period};
              validate(o);
              return o;
            }),
            py::kw_only(), py::arg("relative_tolerance") = d.relative_tolerance,
            py::arg("absolute_tolerance") = d.absolute_tolerance,
-           "Both in (0, 1); raises InvalidParameter naming the tolerance otherwise.")
+           py::arg("max_steps_per_period") = d.max_steps_per_period,
+           "Tolerances in (0, 1); max_steps_per_period, the work budget, in [1, 1e9]: Runge-Kutta "
+           "step attempts (and stick/slip intervals) per table period of a call. Raises "
+           "InvalidParameter naming the parameter otherwise. A run that needs more steps (a stiff "
+           "slip: a large viscous rate or a steep Stribeck curve; unreachable tolerances) raises "
+           "InvalidParameter naming viscous, stribeck_velocity or relative_tolerance.")
       .def_readwrite("relative_tolerance", &IntegratorOptions::relative_tolerance, "in (0, 1)")
       .def_readwrite("absolute_tolerance", &IntegratorOptions::absolute_tolerance,
                      "in (0, 1) [-]")
+      .def_readwrite("max_steps_per_period", &IntegratorOptions::max_steps_per_period,
+                     "work budget per table period, in [1, 1e9]")
       .def("__repr__", [](const IntegratorOptions& o) {
         return Repr("IntegratorOptions")("relative_tolerance", o.relative_tolerance)(
-                   "absolute_tolerance", o.absolute_tolerance)
+                   "absolute_tolerance", o.absolute_tolerance)(
+                   "max_steps_per_period", o.max_steps_per_period)
             .str();
       });
   def_record(options, field("relative_tolerance", &IntegratorOptions::relative_tolerance),
-             field("absolute_tolerance", &IntegratorOptions::absolute_tolerance));
+             field("absolute_tolerance", &IntegratorOptions::absolute_tolerance),
+             field("max_steps_per_period", &IntegratorOptions::max_steps_per_period));
 
   using S = IntegratorStatistics;
   py::class_<S> statistics(m, "IntegratorStatistics",

@@ -86,3 +86,16 @@ def test_stopping_through_the_integrator_matches_the_exact_run():
     for key in ("end_position", "process_time", "entry_time"):
         assert getattr(integ, key) == pytest.approx(getattr(exact, key), abs=1e-9)
     np.testing.assert_allclose(integ.time_to_fraction, exact.time_to_fraction, atol=1e-9)
+
+
+def test_work_budget_ends_a_stiff_slip_naming_the_viscous_rate():
+    """issue 20, D26: a stiff slip (viscous c x period far above the explicit steps allowed)
+    ran for hours; the integrator's budget ends it with an error naming the cause."""
+    options = sa.SteadyStateOptions(
+        integrator=sa.IntegratorOptions(max_steps_per_period=1e3))
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.steady_state(PROFILE, sa.FrictionLaw(1.0, 1.0).with_viscous(1e9), options)
+    assert info.value.name == "viscous"
+    with pytest.raises(sa.InvalidParameter) as info:
+        sa.IntegratorOptions(max_steps_per_period=0.5)
+    assert info.value.name == "max_steps_per_period"
