@@ -60,14 +60,15 @@ json steady_json(const ProfileModel& model, const std::optional<SteadyState>& st
                            ? json(static_cast<int>(predict_case(*model.three_phase)))
                            : json(nullptr);
   j["law"] = law_json(model.law, model.output_units(), model.scales.mu());
-  for (const char* key : {"v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
-                          "periods", "method", "pattern", "integrator"})
+  for (const char* key : {"v_bar", "f", "x_dot_0s", "x_dot_0s_error", "phase", "displacement",
+                          "converged", "periods", "method", "pattern", "integrator"})
     j[key] = nullptr;
   if (!steady) return j;
   j["pattern"] = steady->pattern;  // the stick/slip sequence, e.g. "stick,forward,backward"
   j["v_bar"] = u.velocity(steady->v_bar);
   j["f"] = number_or_null(steady->f);  // [-] always: f of the dimensionless v̄
   j["x_dot_0s"] = u.velocity(steady->x_dot_0s);
+  j["x_dot_0s_error"] = number_or_null(u.velocity(steady->x_dot_0s_error));  // a bound
   j["phase"] = u.time(steady->phase);
   j["displacement"] = u.length(steady->displacement);
   j["converged"] = steady->converged;
@@ -86,7 +87,8 @@ std::string steady_table(const json& j, UnitSystem units) {
                     table_text(j["case_a_priori"]));
   t.row("v_bar", with_unit("v_bar", D::velocity));
   t.row("f", j["f"].is_null() && !j["v_bar"].is_null() ? "inf (v_bar = 0)" : table_text(j["f"]));
-  t.row("x_dot_0s", with_unit("x_dot_0s", D::velocity));
+  t.row("x_dot_0s", with_unit("x_dot_0s", D::velocity) + " (error <= " +
+                        with_unit("x_dot_0s_error", D::velocity) + ")");
   t.row("phase", with_unit("phase", D::time));
   t.row("displacement", with_unit("displacement", D::length));
   if (!j["converged"].is_null())

@@ -45,7 +45,21 @@ double safe_step_local(double f, double f1, double c2, double c3, double from_ab
 
 using detail::time_resolution;
 
-constexpr long long kMaxSteps = 100'000'000;  // a guard, never reached by resolvable motions
+// The work budget of one arc or stick: safe steps (each a few derivative evaluations). Never
+// reached by resolvable motions; a motion whose derivative bounds make every safe step tiny
+// (thousands of harmonics with huge coefficients) ends in an error, not in a wrong arc
+// (issue 20, D26: the loops used to fall through as if the horizon had been reached).
+constexpr long long kMaxSteps = 100'000'000;
+
+namespace {
+[[noreturn]] void exceed_step_budget(double t) {
+  throw InvalidParameter("profile", "smooth motion",
+                         "the exact smooth solver needs more than 1e8 safe steps for one arc at t = " +
+                             format_number(t) +
+                             " (derivative bounds too large for the time scale: lower the order "
+                             "or the coefficients, or use time-stepping)");
+}
+}  // namespace
 
 // The friction piece a slip in direction sigma from x runs on (moving left from a boundary:
 // the piece below it).
@@ -87,7 +101,8 @@ AffineSlip slip_on_affine_piece(const FourierProfile& series, const AffinePiece&
     return K * G + Y3;
   };
   AffineSlip r{t_end, s0.x, s0.xd, ArcEnd::horizon, arc};
-  for (long long i = 0; i < kMaxSteps; ++i) {
+  for (long long i = 0;; ++i) {
+    if (i == kMaxSteps) exceed_step_budget(s0.t + tau);
     double d = std::min(safe_step(g, g1, K * std::abs(g) + Y3), d_max);
     d = std::min(d, safe_step(g, g1, bound(d)));  // valid on [0, d]: B(d) covers it
     double rise = 0;
@@ -149,7 +164,8 @@ StickEnd smooth_stick_end(const SmoothMotion& M, double ms, double t, double t_e
   const double Y4 = M.snap_bound();
   const std::array<double, 4> d0 = M.derivatives(t);
   double tau = 0, ydd = d0[2], yddd = d0[3];
-  for (long long i = 0; i < kMaxSteps; ++i) {
+  for (long long i = 0;; ++i) {
+    if (i == kMaxSteps) exceed_step_budget(t + tau);
     const double up = safe_step(ms - ydd, -yddd, Y4), down = safe_step(ms + ydd, yddd, Y4);
     const double step = std::min(up, down);
     if (t + tau + step >= t_end) return {t_end, 0};
@@ -265,7 +281,8 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       double tau = 0, g = sigma * v + 0.0, g1 = sigma * (arc.accel - d0[2]), g2 = -sigma * d0[3];
       if (from_break) g1 = std::max(g1, 0.0);  // |y''| = s m at a break: x'' >= 0 but rounding
       double long_step = 0;  // the a posteriori step below (0: none tried yet)
-      for (long long i = 0; i < kMaxSteps; ++i) {
+      for (long long i = 0;; ++i) {
+        if (i == kMaxSteps) exceed_step_budget(t + tau);
         const double quadratic = safe_step(g, g1, Y3);
         // |g''| <= |y^(3)(t)| + Y4 d: a tighter, local cubic bound, tried from twice the
         // quadratic step (Newton comes down onto its root from above).

@@ -46,7 +46,7 @@ NULLABLE = {
                  "friction.x_mu", "friction.width", "friction.c_mu", "integrator",
                  "law.stribeck_velocity", "law.stribeck_exponent", "law.viscous"},
     # docs/cli.md "steady" key table and the case-0 paragraph.
-    "steady": {"case_a_priori", "v_bar", "f", "x_dot_0s", "phase", "displacement", "converged",
+    "steady": {"case_a_priori", "v_bar", "f", "x_dot_0s", "x_dot_0s_error", "phase", "displacement", "converged",
                "periods", "method", "a2", "a3", "t1", "t2", "t3", "y_ini", "y_dot_ini", "jerk",
                "pattern", "integrator", "law.stribeck_velocity", "law.stribeck_exponent",
                "law.viscous"},
