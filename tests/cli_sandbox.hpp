@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "selfalign/error.hpp"
 #include "temp_dir.hpp"
 
 namespace selfalign::testing {
@@ -114,6 +115,23 @@ struct MisuseCase {
 };
 
 inline void PrintTo(const MisuseCase& c, std::ostream* os) { *os << c.name; }
+
+/// SI results against dimensionless ones converted: a handful of roundings per conversion
+/// and the shortest round-trip text of the numbers (1e-9 leaves wide headroom).
+inline constexpr double kSiAgreement = 1e-9;
+
+/// Column `column` of a CSV row, as text and as a number.
+inline std::string csv_text(const std::string& row, int column) {
+  std::size_t begin = 0;
+  for (int i = 0; i < column; ++i) begin = row.find(',', begin) + 1;
+  return row.substr(begin, row.find(',', begin) - begin);
+}
+inline double csv_field(const std::string& row, int column) {
+  return std::stod(csv_text(row, column));
+}
+
+/// A number as the CLI prints it (shortest round-trip text).
+inline std::string num(double v) { return format_number(v); }
 
 }  // namespace selfalign::testing
 

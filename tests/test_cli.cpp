@@ -25,6 +25,10 @@ TEST(CliSimulate, NeedsTheCli) { GTEST_SKIP() << "built without the CLI (SELFALI
 using nlohmann::json;
 using testing::CliResult;
 using testing::CliSandbox;
+using testing::csv_field;
+using testing::csv_text;
+using testing::kSiAgreement;
+using testing::num;
 using testing::expect_clean_failure;
 using testing::MisuseCase;
 using testing::lines;
@@ -33,19 +37,10 @@ using testing::write_text;
 
 // The exact solver computes the same arcs from SI inputs converted to [-] as from [-] inputs;
 // only the conversions' rounding differs (a few ulps), far below this.
-constexpr double kSiAgreement = 1e-9;
 // Moreau time-stepping is first order; with h = 1e-3 over 2 periods it stays within 1e-4 of the
 // exact solution here (observed 4e-5), so 1e-3 is a safe bound that still catches a wrong model.
 constexpr double kTimeSteppingAgreement = 1e-3;
 
-// Column `column` of a CSV row.
-double csv_field(const std::string& row, int column) {
-  std::size_t begin = 0;
-  for (int i = 0; i < column; ++i) begin = row.find(',', begin) + 1;
-  return std::stod(row.substr(begin, row.find(',', begin) - begin));
-}
-
-std::string num(double v) { return format_number(v); }
 
 // ---------------------------------------------------------------------------------------------
 // Misuse: exit code 2, one line on stderr naming the parameter and its range, no file written.

@@ -28,6 +28,10 @@ TEST(CliAnalysis, NeedsTheCli) {
 using nlohmann::json;
 using testing::CliResult;
 using testing::CliSandbox;
+using testing::csv_field;
+using testing::csv_text;
+using testing::kSiAgreement;
+using testing::num;
 using testing::expect_clean_failure;
 using testing::MisuseCase;
 using testing::lines;
@@ -37,21 +41,10 @@ using testing::read_text;
 // by rounding only (a few ulps of O(1) numbers).
 constexpr double kClosedForm = 1e-12;
 // SI inputs are converted to [-] and back: a few ulps per conversion.
-constexpr double kSiAgreement = 1e-9;
 // Saltation matrices are exact; central differences with h = 1e-7 of the piecewise-smooth
 // period map have O(h^2) truncation and O(eps/h) ~ 1e-9 rounding errors.
 constexpr double kFiniteDifference = 1e-6;
 
-// Column `column` of a CSV row, as text.
-std::string csv_text(const std::string& row, int column) {
-  std::size_t begin = 0;
-  for (int i = 0; i < column; ++i) begin = row.find(',', begin) + 1;
-  return row.substr(begin, row.find(',', begin) - begin);
-}
-
-double csv_field(const std::string& row, int column) { return std::stod(csv_text(row, column)); }
-
-std::string num(double v) { return format_number(v); }
 
 json run_json(const CliSandbox& box, const std::vector<std::string>& args) {
   const CliResult r = box.run(args);
@@ -383,7 +376,7 @@ TEST_P(CliAnalysisMisuse, ExitsTwoWithOneLineAndWritesNothing) {
   expect_clean_failure(box, box.run(GetParam().args), GetParam().expected);
 }
 
-const MisuseCase kMisuseCases[] = {
+const MisuseCase kAnalysisMisuseCases[] = {
     {"sweep_range_malformed",
      {"sweep", "accelerations", "--a2-range", "1:2", "--a3-range", "0.1:3:20", "--out", "a.csv"},
      {"a2-range = 1:2", "LO:HI:N"}},
@@ -421,7 +414,7 @@ const MisuseCase kMisuseCases[] = {
     {"converge_v1_nan", {"converge", "--v1", "nan", "--out", "c.csv"}, {"v1"}},
 };
 
-INSTANTIATE_TEST_SUITE_P(Analysis, CliAnalysisMisuse, ::testing::ValuesIn(kMisuseCases),
+INSTANTIATE_TEST_SUITE_P(Analysis, CliAnalysisMisuse, ::testing::ValuesIn(kAnalysisMisuseCases),
                          [](const auto& test) { return test.param.name; });
 
 #endif  // SELFALIGN_CLI_PATH

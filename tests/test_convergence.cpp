@@ -1,6 +1,8 @@
 // Tests for analysis/convergence.hpp: the Lyapunov argument of Sect. 6.2 (eqs. 35-37).
 #include <gtest/gtest.h>
 
+#include "selfalign/special_values.hpp"
+
 #include "selfalign/analysis/convergence.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
@@ -82,7 +84,6 @@ TEST(Convergence, DurationBelowTheRoundingOfT0IsRefused) {
 }
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Closed-form reference for a viscous law on a piecewise-constant table acceleration
 // (docs/slip-integrator.md, V1-V3): in a slip of direction sigma under y'' = A,

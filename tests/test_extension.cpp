@@ -5,6 +5,8 @@
 // saltation against finite differences, the stop against eq. (40) under the law.
 #include <gtest/gtest.h>
 
+#include "selfalign/special_values.hpp"
+
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -25,7 +27,6 @@ using testing_support::Opaque;
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A terraced table: the level climbs in two steps, each spread over `ramp` (a point contact on
 // a table with two chamfered steps): 1 -> 1.5 over [x1, x1 + ramp], 1.5 -> 8 over

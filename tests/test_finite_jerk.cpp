@@ -8,6 +8,8 @@
 //    found over a set of finite-jerk and static > kinetic steady states.
 #include <gtest/gtest.h>
 
+#include "arc_list.hpp"
+
 #include <cmath>
 #include <set>
 #include <string>
@@ -29,10 +31,7 @@
 using namespace selfalign;
 
 namespace {
-struct ArcList final : ArcSink {
-  std::vector<Arc> arcs;
-  void on_arc(const Arc& a) override { arcs.push_back(a); }
-};
+using selfalign::testing_support::ArcList;
 
 // y'' = -3 t on [0, 1], back to 0 at 2, +3 at 3, 0 at 4 (continuous, |jerk| = 3).
 PiecewisePolynomialProfile triangle_profile() {

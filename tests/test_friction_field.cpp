@@ -2,6 +2,8 @@
 // (eq. 7). Expected values are derived by hand in docs/friction-field.md.
 #include <gtest/gtest.h>
 
+#include "selfalign/special_values.hpp"
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -19,7 +21,6 @@
 using namespace selfalign;
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Composite Simpson rule with n (even) intervals.
 double simpson(const std::function<double(double)>& f, double a, double b, int n) {

@@ -8,6 +8,8 @@
 //    same arcs: two codes, one law.
 #include <gtest/gtest.h>
 
+#include "arc_list.hpp"
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -38,10 +40,7 @@ oracle::TwoLevelCase with_balanced_stick_phase(double s, double k, double a_max,
   return {s, k, a_max, a_max * (T2 - T3) / T1, T1, T2, T3};  // zero net velocity change
 }
 
-struct ArcList final : ArcSink {
-  std::vector<Arc> arcs;
-  void on_arc(const Arc& a) override { arcs.push_back(a); }
-};
+using selfalign::testing_support::ArcList;
 
 }  // namespace
 
@@ -205,7 +204,7 @@ TEST(StaticKinetic, MoreauConvergesWithOrderOneForStaticAboveKinetic) {
   const double e3 = testing_support::moreau_rms_error(profile, law, duration, 1e-3);
   const double e4 = testing_support::moreau_rms_error(profile, law, duration, 1e-4);
   const double e5 = testing_support::moreau_rms_error(profile, law, duration, 1e-5);
-  RecordProperty("errors", testing::PrintToString(std::vector<double>{e3, e4, e5}));
+  RecordProperty("errors", ::testing::PrintToString(std::vector<double>{e3, e4, e5}));
   EXPECT_GE(std::log10(e3 / e4), kMinOrder) << e3 << " " << e4 << " " << e5;
   EXPECT_GE(std::log10(e4 / e5), kMinOrder) << e3 << " " << e4 << " " << e5;
 }
@@ -219,7 +218,7 @@ TEST(StaticKinetic, MoreauConvergesWithOrderOneForAFiniteJerkProfile) {
   const double e3 = testing_support::moreau_rms_error(profile, law, duration, 1e-3);
   const double e4 = testing_support::moreau_rms_error(profile, law, duration, 1e-4);
   const double e5 = testing_support::moreau_rms_error(profile, law, duration, 1e-5);
-  RecordProperty("errors", testing::PrintToString(std::vector<double>{e3, e4, e5}));
+  RecordProperty("errors", ::testing::PrintToString(std::vector<double>{e3, e4, e5}));
   EXPECT_GE(std::log10(e3 / e4), kMinOrder) << e3 << " " << e4 << " " << e5;
   EXPECT_GE(std::log10(e4 / e5), kMinOrder) << e3 << " " << e4 << " " << e5;
 }

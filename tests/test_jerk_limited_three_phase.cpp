@@ -4,6 +4,8 @@
 // or from the hand-computed cases of the docs (exact rationals) -- never from the solver.
 #include <gtest/gtest.h>
 
+#include "selfalign/special_values.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -18,7 +20,6 @@
 using namespace selfalign;
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 using Params = JerkLimitedThreePhaseParameters;
 using Solution = JerkLimitedThreePhaseSolution;
 

@@ -12,7 +12,7 @@
 using namespace selfalign;
 
 namespace {
-struct Stop {};  // the front end's own exception type: must come out as is
+struct SearchStop {};  // the front end's own exception type: must come out as is
 }  // namespace
 
 TEST(LocalSearch, AThrowingProgressStopsARunUnderWay) {
@@ -39,9 +39,9 @@ TEST(LocalSearch, AThrowingProgressStopsARunUnderWay) {
                               ++calls;
                               EXPECT_EQ(done, 0);
                               EXPECT_EQ(total, 1);
-                              throw Stop{};
+                              throw SearchStop{};
                             }),
-               Stop);
+               SearchStop);
   EXPECT_EQ(calls, 1);
   // 50 ms / 2 ms = 25 evaluations, and a few more where the machine is slow to wake a sleeper.
   EXPECT_LT(evaluations, 100);

@@ -13,7 +13,7 @@
 using namespace selfalign;
 
 namespace {
-struct Stop {};
+struct CellsStop {};
 constexpr std::size_t kCells = 512 * 16;
 constexpr int kCellsPerInterval = 10;  // 50 ms / 5 ms
 }  // namespace
@@ -32,14 +32,14 @@ TEST(ParallelCells, AThrowingProgressStopsTheStudyWithinAReportingInterval) {
     o.threads = threads;
     o.progress = [](std::size_t, std::size_t total) {
       EXPECT_EQ(total, kCells);
-      throw Stop{};
+      throw CellsStop{};
     };
     EXPECT_THROW(detail::parallel_cells(kCells, o,
                                         [&](std::size_t) {
                                           ++computed;
                                           std::this_thread::sleep_for(5ms);
                                         }),
-                 Stop);
+                 CellsStop);
     // Each worker: the cells of one interval, one more for the coarse clock (4 ms), one more,
     // and one started as the other threw.
     EXPECT_LE(computed.load(), threads * (kCellsPerInterval + 3)) << threads << " threads";

@@ -3,6 +3,8 @@
 // Moreau converges to it with order 1; rotating the setup rotates its solution.
 #include <gtest/gtest.h>
 
+#include "planar_profiles.hpp"
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -16,8 +18,8 @@
 namespace selfalign {
 namespace {
 
-const ThreePhaseProfile kPaper({1.0, 0.084, 3.0, 0.9});  // Sect. 7.2
-const ThreePhaseProfile kCross({0.7, 0.05, 2.2, 1.4});
+using testing_support::kPaper;
+using testing_support::kCross;
 
 TEST(PlanarExactPoint, AlongOneAxisItIsTheOneDimensionalExactSolver) {
   // x only, uniform table: the trajectory and the steady displacement per period (eq. 10's

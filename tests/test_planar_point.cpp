@@ -3,6 +3,8 @@
 // impulse never adds kinetic energy; a stick is exactly zero relative velocity.
 #include <gtest/gtest.h>
 
+#include "planar_profiles.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -14,8 +16,8 @@
 namespace selfalign {
 namespace {
 
-const ThreePhaseProfile kPaper({1.0, 0.084, 3.0, 0.9});     // Sect. 7.2
-const ThreePhaseProfile kCross({0.7, 0.05, 2.2, 1.4});      // a second, different motion
+using testing_support::kPaper;
+using testing_support::kCross;
 
 TEST(PlanarPoint, AlongOneAxisItIsTheOneDimensionalScheme) {
   // The table moves along x; the two-region table rises along x (eq. 7, x_mu = 0.3, w = 0.05).

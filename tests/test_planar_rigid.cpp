@@ -29,8 +29,8 @@
 namespace selfalign {
 namespace {
 
-const ThreePhaseProfile kPaper({1.0, 0.084, 3.0, 0.9});  // Sect. 7.2
-const ThreePhaseProfile kCross({0.5, 0.02, 2.2, 1.4});   // half the period: divides it
+const ThreePhaseProfile kPaperMotion({1.0, 0.084, 3.0, 0.9});  // Sect. 7.2
+const ThreePhaseProfile kCrossMotion({0.5, 0.02, 2.2, 1.4});   // half the period: divides it
 
 using Twist = std::array<double, 3>;
 
@@ -136,8 +136,8 @@ TEST(PatchImpulse, StickIsDecidedByTheLimitSetNotBySmallVelocities) {
 
 TEST(PlanarRigid, OnePointAtTheCentreIsThePointStepper) {
   PlanarTableMotion motion;
-  motion.first = &kPaper;
-  motion.second = &kCross;
+  motion.first = &kPaperMotion;
+  motion.second = &kCrossMotion;
   const PlanarField field = HalfPlaneStepField{0.05, 0.02, 0.4, 0.06, 2.0};
   const FrictionLaw law(1.3, 1.0);
   TimeSteppingOptions o;
@@ -168,17 +168,17 @@ TEST(PlanarRigid, ASymmetricPatchOnATableAlongXIsTheOneDimensionalScheme) {
   // A 4 x 3 rectangle patch (symmetric about the x axis) on a uniform table moving along x:
   // no moment, no sideways force: it is the 1-D scheme term for term (to the Newton tolerance).
   PlanarTableMotion motion;
-  motion.first = &kPaper;
+  motion.first = &kPaperMotion;
   RigidPart part{0.3, rectangle_patch(0.4, 0.2, 4, 3)};
   const FrictionLaw law(1.4, 1.0);
   TimeSteppingOptions o;
   o.step = 1e-3;
   const UniformFriction one_d;
-  TimeSteppingState ref = make_time_stepping_state(kPaper, {0, 0, 0.2});
+  TimeSteppingState ref = make_time_stepping_state(kPaperMotion, {0, 0, 0.2});
   PlanarRigidState r = make_planar_rigid_state(motion, 0, {0, 0, 0}, {0.2, 0, 0});
   int sticks = 0;
   for (int block = 0; block < 100; ++block) {
-    advance_time_stepping(kPaper, one_d, law, o, ref, 50);
+    advance_time_stepping(kPaperMotion, one_d, law, o, ref, 50);
     advance_planar_rigid(motion, UniformPlanarField{1.0}, law, part, o, r, 50);
     const PlanarPose pose = r.pose;
     ASSERT_NEAR(pose.x, ref.object.x, 1e-11) << block;
@@ -216,8 +216,8 @@ TEST(PlanarRigid, FrictionNeverAddsKineticEnergy) {
   // On a translating table the table twist is a uniform velocity: the relative kinetic energy
   // after the step never exceeds the free one (M-norm of delta <= M-norm of delta*).
   PlanarTableMotion motion;
-  motion.first = &kPaper;
-  motion.second = &kCross;
+  motion.first = &kPaperMotion;
+  motion.second = &kCrossMotion;
   RigidPart part{0.02, polygon_patch({0, 0.3, 0.1, -0.2}, {-0.1, 0.05, 0.2, 0.1}, 2)};
   const PlanarField field = CircularPocketField{0.05, 0.0, 0.1, 0.05, 3.0};
   PlanarRigidState r = make_planar_rigid_state(motion, 0, {0, 0, 0.4}, {0.3, 0.1, 2.0});
@@ -235,7 +235,7 @@ TEST(PlanarRigid, RotatingTheSetupRotatesTheSolution) {
   const double alpha = 0.9, c = std::cos(alpha), s = std::sin(alpha);
   const FourierProfile turn(1.0, {0.05}, {0.02});
   PlanarTableMotion a;
-  a.first = &kPaper, a.second = &kCross, a.rotation = &turn;
+  a.first = &kPaperMotion, a.second = &kCrossMotion, a.rotation = &turn;
   PlanarTableMotion b = a;
   b.e1_x = c, b.e1_y = s, b.e2_x = -s, b.e2_y = c;
   RigidPart part{0.01, polygon_patch({0, 0.2, 0.1, -0.1}, {-0.1, 0.0, 0.15, 0.05}, 2)};
@@ -380,7 +380,7 @@ TEST(PlanarRigid, TheAsymptoticDriftDoesNotDependOnTheInitialTwist) {
   // frequency) walks a disc patch part; 12 random initial twists end in the same periodic
   // drift and spin (to 1e-9 per period after the transient).
   PlanarTableMotion motion;
-  motion.first = &kPaper, motion.second = &kCross;
+  motion.first = &kPaperMotion, motion.second = &kCrossMotion;
   RigidPart part{0.005, disc_patch(0.1, 3, 6)};
   const FrictionLaw law(1.2, 1.0);
   TimeSteppingOptions o;

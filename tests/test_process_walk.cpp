@@ -4,6 +4,8 @@
 // paper's law and profile) and runs that never stop.
 #include <gtest/gtest.h>
 
+#include "selfalign/special_values.hpp"
+
 #include <cmath>
 #include <limits>
 #include <map>
@@ -13,7 +15,6 @@
 namespace selfalign {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // The walk restarts the exact solver at a period start t_k = k Δt, where the run from rest
 // passes a switch of the profile anyway: the two differ by the rounding of the restart state
 // only (seen: end positions bit-identical, times within 3e-13 s over runs of ~5 s).

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "selfalign/special_values.hpp"
 #include "report.hpp"
 #include "selfalign/analysis/positioning.hpp"
 #include "stopping_common.hpp"
@@ -18,7 +19,6 @@ namespace {
 using nlohmann::json;
 using D = Dimension;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct AccuracyFlags {
   bool as_json = false;

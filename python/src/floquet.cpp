@@ -1,5 +1,6 @@
 // Floquet multipliers of the steady state (Sect. 6.1), three ways.
 #include "selfalign/analysis/floquet.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <complex>
@@ -27,7 +28,6 @@ Eigen::Matrix2d matrix_from(const py::object& obj) {
   return m;
 }
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // What Python sees of a monodromy: NaN matrix and multipliers where the method does not apply
 // (the library leaves the identity and zeros there).

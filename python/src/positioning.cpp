@@ -13,7 +13,7 @@ namespace selfalign::python {
 
 namespace {
 
-void bind_options(py::module_& m) {
+void bind_positioning_options(py::module_& m) {
   const PositioningOptions d;
   using O = PositioningOptions;
   py::class_<O> cls(m, "PositioningOptions", "Options of positioning_accuracy().");
@@ -138,7 +138,7 @@ py::dict surfaces(std::vector<double> a2, std::vector<double> a3,
 }  // namespace
 
 void bind_positioning(py::module_& m) {
-  bind_options(m);
+  bind_positioning_options(m);
   bind_accuracy(m);
 
   m.def(

@@ -149,7 +149,7 @@ void bind_integrator(py::module_& m) {
              field("slips", &S::slips), field("sticks", &S::sticks));
 }
 
-void bind_options(py::module_& m) {
+void bind_simulation_options(py::module_& m) {
   const SimulationOptions d;
   using O = SimulationOptions;
   py::class_<O> cls(m, "SimulationOptions", "Options of simulate().");
@@ -202,7 +202,7 @@ void bind_simulate(py::module_& m) {
   bind_trajectory(m);
   bind_method(m);
   bind_integrator(m);
-  bind_options(m);
+  bind_simulation_options(m);
 
   using R = SimulationResult;
   py::class_<R> result(m, "SimulationResult", "The outcome of simulate().");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "selfalign/special_values.hpp"
 #include "bindings.hpp"
 #include "selfalign/overloaded.hpp"
 #include "matrix.hpp"
@@ -40,7 +41,6 @@ ExactSetup exact_setup(const TableProfile& profile, const FrictionMap& friction)
 
 // Columns of an arc's shape (NaN where the shape has no such parameter): parabolic/cubic x''
 // at the start, harmonic/hyperbolic omega and centre.
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 double arc_alpha(const Arc& a) {
   return std::visit(Overloaded{[](const PolynomialArc& p) { return p.accel; },
                                [](const StickArc&) { return 0.0; },

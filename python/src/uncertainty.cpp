@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "arrays.hpp"
+#include "selfalign/special_values.hpp"
 #include "arguments.hpp"
 #include "bindings.hpp"
 #include "progress.hpp"
@@ -20,7 +21,6 @@
 namespace selfalign::python {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A distribution argument: a Distribution object, its text form ("normal:0.2,5%"), a number
 // x (known to be exactly x: a normal of zero spread, Normal(x, 0)), or None (known: the

@@ -11,7 +11,7 @@
 namespace selfalign {
 namespace {
 
-struct ArcList final : ArcSink {
+struct ResponseArcs final : ArcSink {
   std::vector<Arc> arcs;
   void on_arc(const Arc& a) override {
     if (a.t1 > a.t0) arcs.push_back(a);
@@ -46,7 +46,7 @@ struct IntervalList final : IntervalSink {
 // every sample time (velocity; the integrator places its events the same way whatever the
 // stops, to its tolerance).
 struct Response {
-  ArcList arcs;
+  ResponseArcs arcs;
   IntervalList intervals;
   std::vector<double> v;  // at the sample times (integrator)
   int friction_class_at(double t, bool exact) const {

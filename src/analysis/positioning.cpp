@@ -1,4 +1,5 @@
 #include "selfalign/analysis/positioning.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,7 +26,6 @@ void validate(const PositioningOptions& o) {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Largest x over the arcs, or over the slip integrator's intervals (x is monotone on each:
 // both end at every velocity zero, so the ends suffice).

@@ -1,4 +1,5 @@
 #include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace selfalign {
 
 namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = std::numbers::pi;
 }  // namespace
 

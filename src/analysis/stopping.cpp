@@ -1,4 +1,5 @@
 #include "selfalign/analysis/stopping.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +25,6 @@ const char* to_string(StopKind kind) {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Watches the motion: entry into x >= x_mu, stops at x >= x_mu, and for each target the time
 // from which x stays at or beyond it (reset whenever an arc ends below it). It takes the exact

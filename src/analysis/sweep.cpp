@@ -1,4 +1,5 @@
 #include "selfalign/analysis/sweep.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <tbb/info.h>
 
@@ -45,7 +46,6 @@ int worker_threads(int requested) {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMaxCells = kMaxGridPoints;  // ~1 GB of results; hours of work
 
 }  // namespace

@@ -22,7 +22,6 @@ namespace selfalign {
 
 namespace {
 
-constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
 constexpr int kSamplesPerHarmonic = 32;    // extrema search grid of the optimiser
 constexpr int kNewtonIterations = 8;       // cap of the Newton refinement of one extremum
 constexpr int kMaxDerivative = 5;

@@ -16,7 +16,6 @@ namespace selfalign {
 
 namespace {
 
-constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
 
 // Design variables of a profile with segment durations d and accelerations a as a K-segment
 // profile (K >= d.size()): the longest segment split in halves until there are K. The same

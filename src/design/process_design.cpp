@@ -1,4 +1,5 @@
 #include "selfalign/design/process_design.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,7 +65,6 @@ std::unique_ptr<TableProfile> recommended_profile(const DesignResult& r) {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A candidate's profile: the paper's jump accelerations, or ramps at the jerk limit.
 std::unique_ptr<TableProfile> candidate_profile(const ThreePhaseParameters& p, double jerk) {

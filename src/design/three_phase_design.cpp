@@ -14,7 +14,6 @@ namespace selfalign {
 
 namespace {
 
-constexpr double kFeasibilityTol = 1e-10;  // relative slack on every limit (rounding only)
 
 // Velocity-limit and case-0 constraints of (a2, a3), both as g <= 0 (relative).
 struct ThreePhaseConstraints {

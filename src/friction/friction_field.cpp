@@ -1,4 +1,5 @@
 #include "selfalign/friction/friction_field.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -17,12 +18,11 @@
 namespace selfalign {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Resolvability, as TwoRegionFriction (src/friction/friction_map.cpp): slopes of m at most
 // 1e12, sloped stretches at least 1e-9 |position| wide.
 constexpr double kMaxSlope = 1e12;
-constexpr double kMinRelativeWidth = 1e-9;
+constexpr double kMinRelativePieceWidth = 1e-9;
 // Breakpoints of the averaged map closer than this many ulps are merged.
 constexpr double kMergeUlps = 4.0;
 
@@ -258,10 +258,10 @@ FieldFriction::FieldFriction(FrictionField field, Footprint footprint)
                                      " must be <= 1e12 in magnitude for the friction to be "
                                      "resolvable under a point footprint");
         const double scale = std::max(std::abs(a.position), std::abs(b.position));
-        if (len < kMinRelativeWidth * scale)
+        if (len < kMinRelativePieceWidth * scale)
           throw InvalidParameter("friction field ramp", ramp,
                                  "must be >= 1e-9 |position| = " +
-                                     format_number(kMinRelativeWidth * scale) +
+                                     format_number(kMinRelativePieceWidth * scale) +
                                      " wide to be resolvable");
       }
       push_piece(pieces, {a.position, b.position, a.right, slope});
@@ -275,10 +275,10 @@ FieldFriction::FieldFriction(FrictionField field, Footprint footprint)
       require_positive_moderate("footprint width", std::get<UniformFootprint>(footprint_).width);
   width_ = w;
   const double reach = std::max(std::abs(nodes.front().position), std::abs(nodes.back().position));
-  if (w < kMinRelativeWidth * reach)
+  if (w < kMinRelativePieceWidth * reach)
     throw InvalidParameter("footprint width", w,
                            "must be >= 1e-9 max |position| = " +
-                               format_number(kMinRelativeWidth * reach) +
+                               format_number(kMinRelativePieceWidth * reach) +
                                " for the friction transitions to be resolvable");
   std::vector<double> positions(n), ends(n);
   for (std::size_t k = 0; k < n; ++k) {

@@ -1,4 +1,5 @@
 #include "selfalign/friction/friction_map.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +10,6 @@
 
 namespace selfalign {
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 }
 
 PiecewiseAffineFriction::PiecewiseAffineFriction(std::span<const AffinePiece> pieces) {

@@ -1,4 +1,5 @@
 #include "selfalign/planar/planar_exact_point.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace selfalign {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The acceleration of one profile on the segment holding t, and the next switch > t.
 struct Piece {

@@ -1,4 +1,5 @@
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace selfalign {
 
 namespace {
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The fixed quantities of one request (finite jerk), names as in docs/jerk-limited-three-phase.md.
 struct Setup {

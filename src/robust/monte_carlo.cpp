@@ -1,4 +1,5 @@
 #include "selfalign/robust/monte_carlo.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 namespace selfalign {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void require_probability(const std::string& name, double q) {
   if (!(q > 0 && q <= 1)) throw InvalidParameter(name, q, "must be in (0, 1]");

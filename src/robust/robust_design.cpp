@@ -1,4 +1,5 @@
 #include "selfalign/robust/robust_design.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +15,6 @@
 namespace selfalign {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // The selection and the verification draw from streams of their own, not the screen's.
 constexpr std::uint64_t kSelectionStream = 0x5eed0f0e11f1ca7eULL;
 constexpr std::uint64_t kVerificationStream = 0x7e21f1ca7e0fd2a5ULL;

@@ -1,4 +1,5 @@
 #include "robust_screen.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@
 namespace selfalign::detail {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Candidates screened per parallel batch (the order is fixed, so is the result).
 constexpr std::size_t kBatch = 64;
 // The trial lattice: steps of tolerance / 4, at most 2 x 16 + 1 trials (wider steps then).

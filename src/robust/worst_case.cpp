@@ -1,4 +1,5 @@
 #include "selfalign/robust/worst_case.hpp"
+#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,6 @@
 namespace selfalign {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // The objective gives a run that does not stop this error [m], far beyond any real one, so the
 // local search treats "never stops" as the worst outcome yet stays finite for NLopt.
 constexpr double kNotStoppedError = 1e6;

@@ -11,10 +11,11 @@
 #include <numbers>
 
 #include "selfalign/simulate/arc.hpp"
+#include "selfalign/special_values.hpp"
 
 namespace selfalign::detail {
 
-inline constexpr double kInf = std::numeric_limits<double>::infinity();
+using selfalign::kInf;
 
 // A step shorter than this at time t has converged onto its event (16 roundings of t): the
 // stepping solvers' (smooth_exact.cpp, slip_integrator.cpp) test for "no shorter step left".

@@ -17,6 +17,10 @@
 
 namespace selfalign {
 
+/// Relative slack the optimisers of the three families allow on every actuator limit: rounding
+/// only [-].
+inline constexpr double kFeasibilityTol = 1e-10;
+
 /// Objective and constraint values at one point.
 struct DesignEvaluation {
   double objective = 0;             ///< J(x), finite (families use a finite penalty)
