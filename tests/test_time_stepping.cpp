@@ -22,7 +22,7 @@
 
 using namespace selfalign;
 
-namespace {
+namespace time_stepping_order {
 struct CaseSetting {
   int table1_case;
   ThreePhaseParameters params;
@@ -37,10 +37,15 @@ const CaseSetting kSettings[] = {
     {5, {2.0, 0.084, 0.9, 0.9}},   // |y''| < 1 throughout: pure stick
 };
 
-class Convergence : public ::testing::TestWithParam<CaseSetting> {};
-}  // namespace
+}  // namespace time_stepping_order
+using time_stepping_order::CaseSetting;
+using time_stepping_order::kSettings;
 
-TEST_P(Convergence, OrderAtLeastPointNineAfterTwentyPeriods) {
+// Outside an anonymous namespace: gtest's generated test class derives from it (and in a unity
+// build this file is not the main file, where -Wsubobject-linkage would flag it).
+class TimeSteppingOrder : public ::testing::TestWithParam<CaseSetting> {};
+
+TEST_P(TimeSteppingOrder, OrderAtLeastPointNineAfterTwentyPeriods) {
   const CaseSetting c = GetParam();
   const ThreePhaseProfile profile(c.params);
   const UniformFriction friction;
@@ -83,7 +88,7 @@ TEST_P(Convergence, OrderAtLeastPointNineAfterTwentyPeriods) {
   EXPECT_GE(order2, 0.9) << "errors " << err[0] << " " << err[1] << " " << err[2];
 }
 
-INSTANTIATE_TEST_SUITE_P(MotionCases, Convergence, ::testing::ValuesIn(kSettings),
+INSTANTIATE_TEST_SUITE_P(MotionCases, TimeSteppingOrder, ::testing::ValuesIn(kSettings),
                          [](const auto& info) {
                            return "case" + std::to_string(info.param.table1_case);
                          });

@@ -1,3 +1,4 @@
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/special_values.hpp"
 
@@ -121,15 +122,11 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
     c.a2 = a2[k / a3.size()];
     c.a3 = a3[k % a3.size()];
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
-    const JerkLimitedThreePhaseParameters jp{period, stroke, c.a2, c.a3, sweep.jerk};
-    const bool jumps = std::isinf(sweep.jerk);
-    if (!(jumps ? solve_three_phase(p).physical : solve_jerk_limited_three_phase(jp).physical)) {
+    if (!three_phase_is_physical(p, sweep.jerk)) {
       c.f = c.dx_d = kNaN;
       return;
     }
-    const std::unique_ptr<TableProfile> profile =
-        jumps ? std::unique_ptr<TableProfile>(std::make_unique<ThreePhaseProfile>(p))
-              : std::make_unique<JerkLimitedThreePhaseProfile>(jp);
+    const std::unique_ptr<TableProfile> profile = make_three_phase_profile(p, sweep.jerk);
     const PositioningAccuracy acc =
         positioning_accuracy(*profile, sweep.law, width, c_mu, per_cell);
     c.motion_case = acc.steady.motion_case;

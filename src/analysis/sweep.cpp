@@ -1,3 +1,4 @@
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/analysis/sweep.hpp"
 #include "selfalign/special_values.hpp"
 
@@ -69,17 +70,14 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
     c.a3 = a3[k % a3.size()];
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
     c.predicted = predict_case(p);
-    const JerkLimitedThreePhaseParameters jp{period, stroke, c.a2, c.a3, o.jerk};
     const bool physical = std::isinf(o.jerk) ? c.predicted != StickSlipCase::non_physical
-                                             : solve_jerk_limited_three_phase(jp).physical;
+                                             : three_phase_is_physical(p, o.jerk);
     if (!physical) {
       c.observed = StickSlipCase::non_physical;
       c.v_bar = c.f = c.x_dot_0s = kNaN;
       return;
     }
-    const SteadyState s = std::isinf(o.jerk)
-                              ? steady_state(ThreePhaseProfile(p), o.law, o.steady)
-                              : steady_state(JerkLimitedThreePhaseProfile(jp), o.law, o.steady);
+    const SteadyState s = steady_state(*make_three_phase_profile(p, o.jerk), o.law, o.steady);
     c.observed = s.motion_case;
     c.v_bar = s.v_bar;
     c.f = s.f;

@@ -1,3 +1,4 @@
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/design/optimize.hpp"
 
 #include <cmath>
@@ -49,12 +50,9 @@ std::unique_ptr<TableProfile> rebuild_profile(const OptimizationResult& r) {
   if (!r.feasible)
     throw InvalidParameter("result", "infeasible", "rebuild needs a feasible optimum");
   const auto& x = r.parameters;
-  if (r.family == "three-phase" && x.size() == 2 && std::isfinite(r.limits.max_jerk))
-    return std::make_unique<JerkLimitedThreePhaseProfile>(JerkLimitedThreePhaseParameters{
-        r.limits.period, r.limits.stroke, x[0], x[1], r.limits.max_jerk});
   if (r.family == "three-phase" && x.size() == 2)
-    return std::make_unique<ThreePhaseProfile>(
-        ThreePhaseParameters{r.limits.period, r.limits.stroke, x[0], x[1]});
+    return make_three_phase_profile({r.limits.period, r.limits.stroke, x[0], x[1]},
+                                    r.limits.max_jerk);
   if (r.family == "piecewise-constant" && x.size() >= 4 && x.size() % 2 == 0) {
     const std::size_t k = x.size() / 2;
     return std::make_unique<PiecewisePolynomialProfile>(PiecewisePolynomialProfile::from_accelerations(

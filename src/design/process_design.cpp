@@ -1,3 +1,4 @@
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/special_values.hpp"
 
@@ -57,21 +58,12 @@ FrictionLaw friction_law(const DesignRequest& q) {
 
 std::unique_ptr<TableProfile> recommended_profile(const DesignResult& r) {
   if (!r.feasible) throw InvalidParameter("result", "infeasible", "has no recommended profile");
-  const ThreePhaseParameters& p = r.dimensionless;
-  if (std::isinf(r.jerk_dimensionless)) return std::make_unique<ThreePhaseProfile>(p);
-  return std::make_unique<JerkLimitedThreePhaseProfile>(
-      JerkLimitedThreePhaseParameters{p.period, p.stroke, p.a2, p.a3, r.jerk_dimensionless});
+  return make_three_phase_profile(r.dimensionless, r.jerk_dimensionless);
 }
 
 namespace {
 
 
-// A candidate's profile: the paper's jump accelerations, or ramps at the jerk limit.
-std::unique_ptr<TableProfile> candidate_profile(const ThreePhaseParameters& p, double jerk) {
-  if (std::isinf(jerk)) return std::make_unique<ThreePhaseProfile>(p);
-  return std::make_unique<JerkLimitedThreePhaseProfile>(
-      JerkLimitedThreePhaseParameters{p.period, p.stroke, p.a2, p.a3, jerk});
-}
 constexpr double kFraction = 0.999;  // "arrived" for accumulation: p = 0.999 (Sect. 7.3)
 
 struct Candidate {
@@ -191,7 +183,7 @@ constexpr std::size_t kChunk = 1024;
 void evaluate(Candidate& c, double jerk, const FrictionLaw& law, double c_mu, double distance,
               double tolerance, const PositioningOptions& po) {
   c.evaluated = true;
-  const std::unique_ptr<TableProfile> profile = candidate_profile(c.p, jerk);
+  const std::unique_ptr<TableProfile> profile = make_three_phase_profile(c.p, jerk);
   const PositioningAccuracy acc = positioning_accuracy(*profile, law, 1.0, c_mu, po);
   c.motion_case = acc.steady.motion_case;
   c.v_bar = acc.steady.v_bar;
@@ -303,7 +295,7 @@ DesignResult describe_design(const DesignRequest& q, const ThreePhaseParameters&
   const double jerk = sc.acceleration_from_si(q.jerk_max) * sc.time();
   const FrictionLaw law = friction_law(q);
   DesignResult r;
-  const std::unique_ptr<TableProfile> profile = candidate_profile(p, jerk);
+  const std::unique_ptr<TableProfile> profile = make_three_phase_profile(p, jerk);
   const SteadyState steady = steady_state(*profile, law);
   r.motion_case = steady.motion_case;
   r.v_bar = sc.velocity_to_si(steady.v_bar);

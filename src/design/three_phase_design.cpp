@@ -1,3 +1,4 @@
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/design/three_phase_design.hpp"
 
 #include <algorithm>
@@ -33,21 +34,19 @@ ThreePhaseDesignPoint evaluate_three_phase(const ActuatorLimits& l, double a2, d
                                            const FrictionLaw& law) {
   ThreePhaseDesignPoint p;
   const ThreePhaseParameters params{l.period, l.stroke, a2, a3};
-  std::unique_ptr<TableProfile> profile;
   if (std::isfinite(l.max_jerk)) {  // ramps at the jerk limit (jerk_limited_three_phase.hpp)
     const JerkLimitedThreePhaseParameters jp{l.period, l.stroke, a2, a3, l.max_jerk};
     const JerkLimitedThreePhaseSolution s = solve_jerk_limited_three_phase(jp);
     if (!s.physical) return p;
     p.max_velocity = std::max(s.yd_ini, s.velocity_swing - s.yd_ini);
-    profile = std::make_unique<JerkLimitedThreePhaseProfile>(jp);
   } else {
     const ThreePhaseSolution s = solve_three_phase(params);
     if (!s.physical) return p;
     // Velocity extrema: y'_ini (on [t0, t1]) and y'_ini - D at t2, D = (t3 - t1) / s.
     const double swing = (s.t3 - s.t1) / s.inverse_accel_sum;
     p.max_velocity = std::max(s.yd_ini, swing - s.yd_ini);
-    profile = std::make_unique<ThreePhaseProfile>(params);
   }
+  const std::unique_ptr<TableProfile> profile = make_three_phase_profile(params, l.max_jerk);
   p.physical = true;
   const SteadyState st = steady_state(*profile, law);
   p.v_bar = trusted_v_bar(st, p.max_velocity, l.period);  // NaN when not trustworthy

@@ -1,3 +1,5 @@
+#include "selfalign/special_values.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/io/planar_config.hpp"
 
 #include <cmath>
@@ -99,10 +101,8 @@ std::unique_ptr<TableProfile> make_profile(const Section& p, const Units& u, boo
       throw InvalidParameter(p.key("profile"), kind, "a rotation needs profile = \"fourier\"");
     const double period = u.time(p.required("period")), stroke = u.length(p.required("stroke"));
     const double a2 = u.acceleration(p.required("a2")), a3 = u.acceleration(p.required("a3"));
-    if (p.has("jerk"))
-      return std::make_unique<JerkLimitedThreePhaseProfile>(
-          JerkLimitedThreePhaseParameters{period, stroke, a2, a3, u.jerk(p.required("jerk"))});
-    return std::make_unique<ThreePhaseProfile>(ThreePhaseParameters{period, stroke, a2, a3});
+    return make_three_phase_profile({period, stroke, a2, a3},
+                                    p.has("jerk") ? u.jerk(p.required("jerk")) : kInf);
   }
   if (kind == "fourier") {
     std::vector<double> c = p.list("cos"), s = p.list("sin");

@@ -1,3 +1,5 @@
+#include "selfalign/special_values.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/io/simulate_model.hpp"
 
 #include "selfalign/error.hpp"
@@ -34,10 +36,7 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem u
                                            const Scales& scales) {
   const std::string& kind = *c.profile;
   if (kind == "three-phase") {
-    if (c.jerk)
-      return std::make_unique<JerkLimitedThreePhaseProfile>(JerkLimitedThreePhaseParameters{
-          *c.period, *c.stroke, *c.a2, *c.a3, *c.jerk});
-    return std::make_unique<ThreePhaseProfile>(three_phase_parameters(c));
+    return make_three_phase_profile(three_phase_parameters(c), c.jerk ? *c.jerk : kInf);
   }
   if (kind == "piecewise-linear") {
     if (!c.times || c.times->empty())

@@ -1,3 +1,4 @@
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/robust/process_uncertainty.hpp"
 
 #include <algorithm>
@@ -140,13 +141,10 @@ ProcessModel::ProcessModel(const DesignRequest& q, const Process& p, const Input
                                 sc.length_from_si(p.stroke * amplitude),
                                 sc.acceleration_from_si(p.a2 * acc),
                                 sc.acceleration_from_si(p.a3 * acc)};
-  if (std::isinf(p.jerk)) {
-    profile = std::make_unique<ThreePhaseProfile>(tp);
-  } else {
-    const double jerk = sc.acceleration_from_si(p.jerk * acc / period_factor) * sc.time();
-    profile = std::make_unique<JerkLimitedThreePhaseProfile>(
-        JerkLimitedThreePhaseParameters{tp.period, tp.stroke, tp.a2, tp.a3, jerk});
-  }
+  const double jerk = std::isinf(p.jerk)
+                         ? p.jerk
+                         : sc.acceleration_from_si(p.jerk * acc / period_factor) * sc.time();
+  profile = make_three_phase_profile(tp, jerk);
 }
 
 namespace {
