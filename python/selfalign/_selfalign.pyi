@@ -557,7 +557,9 @@ def exact_arcs(
     initial: ObjectState = ...,
     duration: float = 20.0,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
-def sticks(table_accel: float, bound: float) -> bool: ...
+def decide_at_rest(
+    table_accel: float, static_bound: float, breaking: int = 0, stalled: bool = False
+) -> int: ...
 
 class TimeSteppingOptions:
     step: float

@@ -12,6 +12,7 @@
 #include "arrays.hpp"
 #include "selfalign/special_values.hpp"
 #include "bindings.hpp"
+#include "selfalign/simulate/stick_slip_decision.hpp"
 #include "selfalign/overloaded.hpp"
 #include "matrix.hpp"
 #include "record.hpp"
@@ -186,9 +187,13 @@ arrays (one entry per arc):
   int64:   segment (table-acceleration segment), piece (friction piece)
 Between events x'' = -sigma m(x) - y'' has constant coefficients (eqs. 12-24, 42-47).)doc");
 
-  m.def("sticks", &sticks, py::arg("table_accel"), py::arg("bound"),
-        "The set-valued law (2): an object at rest relative to the table under table "
-        "acceleration A is held by friction bound m iff |A| <= m.");
+  m.def("decide_at_rest", &decide_at_rest, py::arg("table_accel"), py::arg("static_bound"),
+        py::arg("breaking") = 0, py::arg("stalled") = false,
+        R"doc(The stick/slip decision at a velocity zero, the one every 1-D solver uses
+(simulate/stick_slip_decision.hpp): 0 when the object at rest relative to the table is held
+(|y''| <= static_bound = s m(x), the set-valued law (2)), else the slip direction -sign(y'').
+`breaking` (the direction of a stick that just broke) decides when nonzero; `stalled` (the
+previous slip from rest lasted less than the resolution of t) holds the object.)doc");
 }
 
 void bind_time_stepping(py::module_& m) {

@@ -148,7 +148,7 @@ CATALOGUE = [
       "t_end": (["2.0"], BAD_FLOAT, [])}, "exact_state"),
     ("result = sa.exact_arcs({profile}, {friction}, sa.ObjectState(), {duration})",
      {"profile": PROFILES, "friction": FRICTIONS, "duration": (["2.0"], BAD_FLOAT, ["1e12"])}, "finite_arrays"),
-    ("result = sa.sticks({a}, {bound})", {"a": FL("0.5"), "bound": FL("1.0")}, "none"),
+    ("result = sa.decide_at_rest({a}, {bound})", {"a": FL("0.5"), "bound": FL("1.0")}, "none"),
     ("o = sa.TimeSteppingOptions(step={step}, theta={theta}); s = sa.make_time_stepping_state({profile}); "
      "s.{attr} = {value}; sa.advance_time_stepping({profile}, {friction}, o, s, {steps}); result = s.object",
      {"step": (["1e-3"], BAD_FLOAT, ["5e-324"]), "theta": FL("0.5"), "profile": PROFILES,

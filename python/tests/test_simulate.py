@@ -146,5 +146,8 @@ def test_exact_arcs_are_contiguous_closed_forms(case1_profile):
 
 
 def test_set_valued_friction_law_eq_2():
-    assert sa.sticks(0.5, 1.0) and sa.sticks(-1.0, 1.0)
-    assert not sa.sticks(1.5, 1.0) and not sa.sticks(-1.5, 1.0)
+    # eq. (2) at rest: held iff |y''| <= bound, else a slip against the push, -sign(y'')
+    assert sa.decide_at_rest(0.5, 1.0) == 0 and sa.decide_at_rest(-1.0, 1.0) == 0
+    assert sa.decide_at_rest(1.5, 1.0) == -1 and sa.decide_at_rest(-1.5, 1.0) == 1
+    assert sa.decide_at_rest(0.5, 1.0, breaking=1) == 1
+    assert sa.decide_at_rest(1.5, 1.0, stalled=True) == 0

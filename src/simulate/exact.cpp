@@ -1,4 +1,5 @@
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/simulate/stick_slip_decision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -73,7 +74,7 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
 
     while (t < t_stop) {  // one arc per pass
       // The commonest arc: at rest and held for the rest of the segment.
-      if (v == 0 && !sink && sticks(A, m_static)) {
+      if (v == 0 && !sink && decide_at_rest(A, m_static) == 0) {
         ++count;
         t = t_stop;
         break;
@@ -82,7 +83,7 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
       double alpha = 0, x1 = x, v1 = 0, t1 = t_stop;
       ArcEnd end = stop_end;
       if (v == 0) {
-        if (!sticks(A, m_static)) sigma = A > 0 ? -1 : 1;  // slip against the table's push
+        sigma = decide_at_rest(A, m_static);  // stick, or slip against the table's push
       } else {
         sigma = v > 0 ? 1 : -1;
       }
@@ -167,8 +168,7 @@ std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t
         pi = setup.friction.piece_index(x);
         m0 = pieces[pi].bound(x);
         const double m_static = law.static_coefficient() * m0;
-        if (breaking != 0) sigma = breaking;
-        else if (!stalled && !sticks(A, m_static)) sigma = A > 0 ? -1 : 1;  // slip against the push
+        sigma = decide_at_rest(A, m_static, breaking, stalled);
         if (sigma == 0 && J != 0) {  // held until |A + J tau| reaches the static bound
           const double tau_break = J > 0 ? (m_static - A) / J : (-m_static - A) / J;
           if (t + tau_break < t_stop) {

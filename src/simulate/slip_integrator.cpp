@@ -1,4 +1,5 @@
 #include "selfalign/simulate/slip_integrator.hpp"
+#include "selfalign/simulate/stick_slip_decision.hpp"
 
 #include <algorithm>
 #include <array>
@@ -67,7 +68,7 @@ class Forcing {
     if (!pwp_) return detail::smooth_stick_end(*smooth_, ms, t, t_end);
     for (double tc = t; tc < t_end;) {
       const double end = open(tc), a = accel(tc);
-      if (!sticks(a, ms)) return {tc, a > 0 ? -1 : 1};
+      if (const int slip = decide_at_rest(a, ms); slip != 0) return {tc, slip};
       if (jerk_ != 0) {  // y'' = a0 + j tau reaches sign(j) ms at tau (closed form)
         const double tb = begin_ + (std::copysign(ms, jerk_) - a0_) / jerk_;
         if (tb >= tc && tb < end) return tb < t_end ? detail::StickEnd{tb, jerk_ > 0 ? -1 : 1}
@@ -238,20 +239,16 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
       exceed_budget(setup, setup.friction.bound(x), "intervals");
     int sigma = v > 0 ? 1 : v < 0 ? -1 : 0;
     if (sigma == 0) {
-      sigma = breaking;
+      const double ms = law.static_coefficient() * setup.friction.bound(x);
+      if (breaking == 0) forcing.open(t);
+      sigma = decide_at_rest(breaking == 0 ? forcing.accel(t) : 0.0, ms, breaking);
       breaking = 0;
-      if (sigma == 0) {
-        const double ms = law.static_coefficient() * setup.friction.bound(x);
-        forcing.open(t);
-        const double a = forcing.accel(t);
-        if (sticks(a, ms)) {  // held exactly (x' = 0) until y'' leaves the static bound
-          const detail::StickEnd e = forcing.stick_end(ms, t, t_end);
-          ++st.sticks;
-          emit(e.t, x, 0.0, 0, e.direction != 0 ? ArcEnd::stick_break : ArcEnd::horizon);
-          breaking = e.direction;
-          continue;
-        }
-        sigma = a > 0 ? -1 : 1;
+      if (sigma == 0) {  // held exactly (x' = 0) until y'' leaves the static bound
+        const detail::StickEnd e = forcing.stick_end(ms, t, t_end);
+        ++st.sticks;
+        emit(e.t, x, 0.0, 0, e.direction != 0 ? ArcEnd::stick_break : ArcEnd::horizon);
+        breaking = e.direction;
+        continue;
       }
     }
     // Slip in direction sigma on the friction piece ahead, up to the window's end.

@@ -1,4 +1,5 @@
 #include "selfalign/simulate/smooth_exact.hpp"
+#include "selfalign/simulate/stick_slip_decision.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -229,8 +230,7 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       pi = setup.friction.piece_index(x);
       m = pieces[pi].bound(x);
       const double ms = law.static_coefficient() * m;
-      if (breaking != 0) sigma = breaking;
-      else if (!sticks(d0[2], ms)) sigma = d0[2] > 0 ? -1 : 1;
+      sigma = decide_at_rest(d0[2], ms, breaking);
       from_break = breaking != 0;
       breaking = 0;
       if (sigma == 0) {  // stuck until y'' reaches +ms or -ms

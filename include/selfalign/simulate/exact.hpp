@@ -59,10 +59,4 @@ ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object);
 std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
                           ArcSink* sink = nullptr);
 
-/// Is the object, at rest relative to the table at position x under table acceleration A,
-/// held by friction? The set-valued law (2): stick iff |A| <= bound, the static bound s m(x).
-inline bool sticks(double table_accel, double bound) noexcept {
-  return table_accel <= bound && -table_accel <= bound;
-}
-
 }  // namespace selfalign
