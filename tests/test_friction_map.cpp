@@ -54,3 +54,14 @@ TEST(PiecewiseAffineFriction, RejectsGapsAndNegativeBounds) {
   const AffinePiece bounded[1] = {{0, 1, 1, 0}};
   EXPECT_THROW(PiecewiseAffineFriction{bounded}, InvalidParameter);
 }
+
+// The capability queries that replace casts (issue 21): the two-region table and a field
+// answer for themselves; a uniform level is neither.
+TEST(FrictionCapabilities, EachMapAnswersForItselfOnly) {
+  const selfalign::TwoRegionFriction two(0.5, 0.1, 2.0);
+  const selfalign::UniformFriction uniform;
+  ASSERT_EQ(two.two_region(), &two);
+  EXPECT_EQ(two.field_friction(), nullptr);
+  EXPECT_EQ(uniform.two_region(), nullptr);
+  EXPECT_EQ(uniform.field_friction(), nullptr);
+}

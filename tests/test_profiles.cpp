@@ -12,6 +12,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/sampled.hpp"
 
@@ -204,4 +205,32 @@ TEST(FourierProfile, WithExtremaTakesTheGivenExtremaAndValidatesLikeTheConstruct
   EXPECT_THROW(FourierProfile::with_extrema(1.0, {1.0}, {}, {.y_min = -1, .y_max = 1,
                                                              .peak_acceleration = -1}),
                InvalidParameter);
+}
+
+// The capability queries that replace casts (issue 21): each family answers for itself only,
+// and the three-phase family's factory (make_three_phase_profile.hpp) picks the family by the
+// jerk limit. A jerk-limited profile is never "the paper's three-phase profile", even at a
+// jerk so high that its ramps vanish below the rounding of t: the analytic Floquet matrix and
+// eq. (59) are written for jumps.
+TEST(ProfileCapabilities, EachFamilyAnswersForItselfOnly) {
+  const selfalign::ThreePhaseParameters p{1.0, 0.084, 3.0, 0.9};
+  const auto jumps = selfalign::make_three_phase_profile(p, std::numeric_limits<double>::infinity());
+  const auto ramps = selfalign::make_three_phase_profile(p, 1e9);
+  ASSERT_NE(jumps->three_phase(), nullptr);
+  EXPECT_EQ(jumps->three_phase()->parameters().a2, 3.0);
+  EXPECT_EQ(jumps->kind(), "three-phase");
+  EXPECT_EQ(ramps->three_phase(), nullptr);
+  EXPECT_EQ(ramps->kind(), "jerk-limited-three-phase");
+  EXPECT_NE(ramps->piecewise_polynomial(), nullptr);
+  const selfalign::FourierProfile fourier(1.0, {0.01}, {0.02});
+  EXPECT_EQ(fourier.three_phase(), nullptr);
+  EXPECT_EQ(fourier.piecewise_polynomial(), nullptr);
+  ASSERT_NE(fourier.smooth(), nullptr);
+  EXPECT_EQ(fourier.smooth()->fourier_series(), &fourier);
+  // Case 0 is refused by the factory as by the constructors (1/a2 + 1/a3 > Δt^2/(8 Δy)).
+  EXPECT_FALSE(selfalign::three_phase_is_physical({1.0, 0.084, 1.0, 1.0}, 1e9));
+  EXPECT_FALSE(selfalign::three_phase_is_physical({1.0, 0.084, 1.0, 1.0},
+                                                  std::numeric_limits<double>::infinity()));
+  EXPECT_THROW(selfalign::make_three_phase_profile({1.0, 0.084, 1.0, 1.0}, 1e9),
+               selfalign::InvalidParameter);
 }

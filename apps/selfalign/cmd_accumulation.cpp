@@ -34,7 +34,7 @@ struct AccumulationFlags {
 };
 
 const ThreePhaseProfile& three_phase_profile(const SimulateModel& model) {
-  const auto* p = dynamic_cast<const ThreePhaseProfile*>(model.profile.get());
+  const ThreePhaseProfile* p = model.profile->three_phase();
   if (!p)
     throw InvalidParameter("profile", model.profile->kind(),
                            "the stick-position map (eq. 59) needs the three-phase profile");

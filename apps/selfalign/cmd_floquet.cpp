@@ -103,7 +103,7 @@ void run_floquet(const ConfigFlags& flags, const FloquetFlags& f) {
   FloquetOptions options;
   options.fd_step = require_in_half_open("fd-step", f.fd_step, 0.0, 0.1);
   options.steady.integrator = model.integrator;  // Stribeck or viscous laws
-  const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(model.profile.get());
+  const ThreePhaseProfile* three_phase = model.profile->three_phase();
   // The analytic matrix (eqs. 25-33) is the paper's law's; any other law: saltation and FD.
   const FloquetAnalysis analysis = three_phase && model.law.is_unit()
                                        ? floquet_multipliers(*three_phase, options)

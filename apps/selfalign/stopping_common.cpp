@@ -30,7 +30,10 @@ SimulateModel stopping_model(const SimulateConfig& config) {
 }
 
 const TwoRegionFriction& two_region(const SimulateModel& model) {
-  return dynamic_cast<const TwoRegionFriction&>(*model.friction);
+  const TwoRegionFriction* two = model.friction->two_region();
+  if (!two)  // stopping_model() builds the two-region table; anything else is a caller's error
+    throw InvalidParameter("friction", "not two-region", "this analysis needs the two-region table");
+  return *two;
 }
 
 nlohmann::json stopping_context_json(const SimulateModel& model, const TwoRegionFriction& f,

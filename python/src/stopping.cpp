@@ -185,7 +185,7 @@ void bind_stopping_run(py::module_& m) {
       "stopping_run",
       [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& start,
          const StoppingOptions& options, const FrictionLaw& law) {
-        if (const auto* two = dynamic_cast<const TwoRegionFriction*>(&friction);
+        if (const TwoRegionFriction* two = friction.two_region();
             two && law.is_unit())
           return stopping_run(profile, *two, start, options);
         return stopping_run(profile, friction, law, start, options);

@@ -131,7 +131,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   const double peak = profile.peak_acceleration(), P = profile.period();
   // The paper's table under the paper's law: eqs. (41), (59), (60) as written; otherwise their
   // general forms (the rise of the level, s m(x) >= peak), and no accumulation proof.
-  const auto* two = dynamic_cast<const TwoRegionFriction*>(&friction);
+  const TwoRegionFriction* two = friction.two_region();
   const bool paper = two && law.is_unit();
   const double x_mu = two ? two->x_mu() : friction_rise(*pieces);
   StoppingRun r;
@@ -151,7 +151,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   // formed as the solver forms the switch's, n Δt + begin with the segments' own Δt (their
   // durations' sum, which may differ from the profile's nominal period by rounding), so that
   // it lands on the switch itself, not an ulp past it (where the slip under -y2'' has begun).
-  const auto* three_phase = dynamic_cast<const ThreePhaseProfile*>(&profile);
+  const ThreePhaseProfile* three_phase = profile.three_phase();
   std::unique_ptr<StickPositionMap> map;
   if (three_phase && paper) map = std::make_unique<StickPositionMap>(*three_phase, *two);
   double phase = 0;

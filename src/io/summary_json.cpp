@@ -19,7 +19,7 @@ json profile_json(const TableProfile& p, const OutputUnits& u) {
             {"period", u.time(p.period())},                       // Δt [-] | [s]
             {"stroke", u.length(p.stroke())},                     // Δy [-] | [m]
             {"peak_acceleration", u.acceleration(p.peak_acceleration())}};  // [-] | [m/s^2]
-  if (const auto* tp = dynamic_cast<const ThreePhaseProfile*>(&p)) {
+  if (const ThreePhaseProfile* tp = p.three_phase()) {
     const ThreePhaseParameters& a = tp->parameters();
     const ThreePhaseSolution& s = tp->solution();  // Appendix, eqs. (61)-(67)
     j["a2"] = u.acceleration(a.a2);
@@ -29,7 +29,7 @@ json profile_json(const TableProfile& p, const OutputUnits& u) {
     j["t3"] = u.time(s.t3);
     j["y_ini"] = u.length(s.y_ini);
     j["y_dot_ini"] = u.velocity(s.yd_ini);
-  } else if (const auto* fp = dynamic_cast<const FourierProfile*>(&p)) {
+  } else if (const FourierProfile* fp = p.smooth() ? p.smooth()->fourier_series() : nullptr) {
     json cos = json::array(), sin = json::array();
     for (double c : fp->cos_coeffs()) cos.push_back(u.length(c));
     for (double s : fp->sin_coeffs()) sin.push_back(u.length(s));
@@ -49,12 +49,12 @@ json profile_json(const TableProfile& p, const OutputUnits& u) {
 }
 
 json friction_json(const FrictionMap& f, const OutputUnits& u) {
-  if (const auto* two = dynamic_cast<const TwoRegionFriction*>(&f))
+  if (const TwoRegionFriction* two = f.two_region())
     return {{"kind", "two-region"},
             {"x_mu", u.length(two->x_mu())},    // [-] | [m]
             {"width", u.length(two->width())},  // [-] | [m]
             {"c_mu", two->c_mu()}};             // [-]
-  if (const auto* field = dynamic_cast<const FieldFriction*>(&f)) {
+  if (const FieldFriction* field = f.field_friction()) {
     const auto* uniform = std::get_if<UniformFootprint>(&field->footprint());
     return {{"kind", "field"},
             {"x_mu", nullptr},

@@ -123,6 +123,7 @@ class FieldFriction final : public FrictionMap {
   const PiecewiseAffineFriction* piecewise_affine() const override {
     return affine_ ? &*affine_ : nullptr;
   }
+  const FieldFriction* field_friction() const override { return this; }
 
   const FrictionField& field() const noexcept { return field_; }
   const Footprint& footprint() const noexcept { return footprint_; }

@@ -14,6 +14,9 @@
 
 namespace selfalign {
 
+class TwoRegionFriction;
+class FieldFriction;
+
 /// One affine piece of a friction map: m(x) = bound_at_begin + slope (x - begin) for
 /// begin <= x < end. Positions [-], bound [-], slope [1/-].
 struct AffinePiece {
@@ -57,6 +60,12 @@ class FrictionMap {
   /// The map as affine pieces, or nullptr when it is not piecewise affine (then only the
   /// time-stepping solver can use it).
   virtual const PiecewiseAffineFriction* piecewise_affine() const { return nullptr; }
+  /// The map as the paper's two-region table (eq. 9), when it is one: eqs. (41), (59), (60)
+  /// and the stick-position map are written for it. nullptr otherwise.
+  virtual const TwoRegionFriction* two_region() const { return nullptr; }
+  /// The map as a friction field averaged over a footprint (friction_field.hpp), when it is
+  /// one. nullptr otherwise. (Capability queries: no caller casts a friction map.)
+  virtual const FieldFriction* field_friction() const { return nullptr; }
 };
 
 /// Uniform Coulomb friction: m(x) = level (1 on the paper's low-friction table).
@@ -89,6 +98,7 @@ class TwoRegionFriction final : public FrictionMap {
 
   double bound(double x) const override;  // eq. (9)
   const PiecewiseAffineFriction* piecewise_affine() const override { return &affine_; }
+  const TwoRegionFriction* two_region() const override { return this; }
 
   double x_mu() const noexcept { return x_mu_; }
   double width() const noexcept { return width_; }

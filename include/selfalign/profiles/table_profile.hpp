@@ -15,6 +15,7 @@ namespace selfalign {
 
 class PiecewisePolynomialProfile;
 class FourierProfile;
+class ThreePhaseProfile;
 
 /// A smooth table motion with y and its first three derivatives in closed form and bounds on
 /// its third and fourth derivatives: what the exact solver for smooth profiles needs
@@ -70,6 +71,10 @@ class TableProfile {
   /// The profile as a smooth motion, when it is one (then the exact solver for smooth profiles
   /// applies on piecewise-constant friction levels); nullptr otherwise.
   virtual const SmoothMotion* smooth() const { return nullptr; }
+  /// The profile as the paper's three-phase profile (Sect. 4.4.3), when it is one: the
+  /// analytic Floquet matrix (eqs. 25-33) and the stick-position map (eq. 59) need its
+  /// parameters. nullptr otherwise (a capability query: no caller casts a profile).
+  virtual const ThreePhaseProfile* three_phase() const { return nullptr; }
 };
 
 }  // namespace selfalign

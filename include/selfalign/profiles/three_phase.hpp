@@ -68,6 +68,7 @@ class ThreePhaseProfile final : public TableProfile {
   double stroke() const override { return shape_.stroke(); }
   std::string kind() const override { return "three-phase"; }
   const PiecewisePolynomialProfile* piecewise_polynomial() const override { return &shape_; }
+  const ThreePhaseProfile* three_phase() const override { return this; }
 
  private:
   ThreePhaseParameters params_;
