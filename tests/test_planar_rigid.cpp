@@ -20,6 +20,7 @@
 #include <numbers>
 #include <random>
 
+#include "sanitized.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/planar/planar_rigid.hpp"
@@ -37,11 +38,7 @@ using Twist = std::array<double, 3>;
 // The sanitizer build is unoptimised (Debug): its runs of the two long property tests below
 // check fewer cases: two launches of a coarser disc (6 x 12); 3 initial twists settled for 6
 // periods instead of 12 for 20.
-#ifdef SELFALIGN_SANITIZED_TESTS
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using testing_support::kSanitized;
 
 // ---- second method for the step's problem ---------------------------------------------------
 

@@ -10,6 +10,7 @@
 #include <map>
 #include <numeric>
 
+#include "sanitized.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/uncertainty_file.hpp"
 #include "selfalign/robust/fragility.hpp"
@@ -24,11 +25,7 @@ double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
 // The sanitizer build (a Debug build, ~20x slower here) screens some robust searches on fewer
 // draws (50 instead of 100) and checks a claim on fewer independent runs.
-#ifdef SELFALIGN_SANITIZED_TESTS
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
+using testing_support::kSanitized;
 constexpr int kScreeningRuns = kSanitized ? 50 : 100;
 
 // The task: a 20 g part, mu 0.2, c_mu 2.5 over a 3 mm transition, 2 mm stroke,

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <complex>
 #include <limits>
 #include <vector>
@@ -35,7 +36,6 @@
 using namespace selfalign;
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586;
 
 // A law that is Coulomb in value (static = kinetic: the Stribeck term is identically zero) but
 // velocity-dependent in form, so every solver path takes the integrator.
@@ -58,8 +58,8 @@ const ThreePhaseProfile& three_phase() {
 // method): rounding only, 1e-12.
 TEST(SlipIntegrator, ReproducesTheCoulombSolutionWhenStaticEqualsKinetic) {
   constexpr double kSmoothTol = 1e-9, kPolynomialTol = 1e-12;
-  const oracle::SingleHarmonicCase cases[] = {{kTwoPi, 1.5, 0.1, 1.0, 1.0},
-                                              {kTwoPi, 1.5, 0.3, 1.0, 1.0},
+  const oracle::SingleHarmonicCase cases[] = {{(2 * std::numbers::pi), 1.5, 0.1, 1.0, 1.0},
+                                              {(2 * std::numbers::pi), 1.5, 0.3, 1.0, 1.0},
                                               {2.5, 0.3, -0.02, 1.6, 1.6}};
   for (const auto& c : cases) {
     const oracle::SingleHarmonicResult expected = oracle::single_harmonic_vbar(c);
@@ -84,7 +84,7 @@ TEST(SlipIntegrator, ReproducesTheCoulombSolutionWhenStaticEqualsKinetic) {
 // x. Each error within 100 rtol, and four decades of tolerance buy at least two of error.
 TEST(SlipIntegrator, GlobalErrorScalesWithTheTolerance) {
   constexpr double kErrorPerTolerance = 100;
-  const FourierProfile profile(kTwoPi, {1.5, 0.1}, {0.0, 0.2});
+  const FourierProfile profile((2 * std::numbers::pi), {1.5, 0.1}, {0.0, 0.2});
   const UniformFriction uniform;
   ObjectState exact{0, 0, 0};
   advance_smooth({profile, *uniform.piecewise_affine(), FrictionLaw(1.0, 1.0)}, exact,

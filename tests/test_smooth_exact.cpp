@@ -11,6 +11,7 @@
 #include "arc_list.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <vector>
 
@@ -31,7 +32,6 @@
 using namespace selfalign;
 
 namespace {
-constexpr double kTwoPi = 6.283185307179586;
 
 FourierProfile profile_of(const oracle::SingleHarmonicCase& c) {
   return FourierProfile(c.period, {c.A1, c.A2}, {0.0, 0.0});
@@ -46,11 +46,11 @@ using selfalign::testing_support::ArcList;
 TEST(SmoothExact, TwoHarmonicSteadyVelocityMatchesTheHandDerivation) {
   constexpr double kVbarTol = 1e-12;
   const oracle::SingleHarmonicCase cases[] = {
-      {kTwoPi, 1.1, 0.1, 1.0, 1.0},     {kTwoPi, 1.5, 0.1, 1.0, 1.0},
-      {kTwoPi, 1.5, 0.3, 1.0, 1.0},     {1.0, 0.04, 0.004, 1.2, 1.0},
+      {(2 * std::numbers::pi), 1.1, 0.1, 1.0, 1.0},     {(2 * std::numbers::pi), 1.5, 0.1, 1.0, 1.0},
+      {(2 * std::numbers::pi), 1.5, 0.3, 1.0, 1.0},     {1.0, 0.04, 0.004, 1.2, 1.0},
       {1.0, 0.04, 0.002, 1.2, 1.0},     {1.0, 0.045, 0.008, 1.5, 1.0},
       {2.5, 0.3, -0.02, 1.6, 1.0},      {0.5, 0.005, 0.0008, 0.8, 0.5},
-      {kTwoPi, 1.3, 0.0, 1.0, 1.0},     {1.0, 0.035, 0.0, 1.2, 1.0},  // pure harmonics: 0
+      {(2 * std::numbers::pi), 1.3, 0.0, 1.0, 1.0},     {1.0, 0.035, 0.0, 1.2, 1.0},  // pure harmonics: 0
   };
   for (const auto& c : cases) {
     const oracle::SingleHarmonicResult expected = oracle::single_harmonic_vbar(c);
@@ -247,7 +247,7 @@ TEST(SmoothExact, LongerStepsFindTheSameEventsAsSafeStepsAlone) {
   const ThreePhaseProfile three({0.072, 0.021, 1000, 80});
   fourier_series_of(*three.piecewise_polynomial(), 12, a, b);
   const FourierProfile fig6(0.072, a, b);
-  const FourierProfile two(kTwoPi, {1.5, 0.1}, {0.0, 0.2});
+  const FourierProfile two((2 * std::numbers::pi), {1.5, 0.1}, {0.0, 0.2});
   const UniformFriction uniform;
   for (const FourierProfile* profile : {&fig6, &two}) {
     ASSERT_TRUE(std::isfinite(profile->fifth_derivative_bound()));

@@ -1,0 +1,152 @@
+// Tests for analysis/period_map.hpp, the one period map every analysis uses: which solver it
+// chooses, the map P against a period computed by hand, its runs against repeated maps, its
+// two monodromy matrices against each other, and the time-stepping map against the exact one.
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Core>
+#include <cmath>
+#include <vector>
+
+#include "opaque_profile.hpp"
+#include "selfalign/analysis/period_map.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/friction/friction_law.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+
+namespace selfalign {
+namespace {
+
+// y'' = +3 on [0, 1/2), -3 on [1/2, 1): the hand computation below.
+PiecewisePolynomialProfile square_wave() {
+  const double durations[] = {0.5, 0.5}, accels[] = {3.0, -3.0};
+  return PiecewisePolynomialProfile::from_accelerations(durations, accels);
+}
+
+// The closed forms are evaluated in a handful of floating-point operations: a few ulps.
+constexpr double kClosedFormTol = 1e-14;
+
+TEST(PeriodMap, ChoosesTheSolverTheProfileAndLawAllow) {
+  const PiecewisePolynomialProfile square = square_wave();
+  const FourierProfile fourier(1.0, {0.01}, {0.02});
+  const testing_support::Opaque opaque(square);
+  const FrictionLaw stribeck = FrictionLaw(1.2, 1.0).with_stribeck(0.1);
+  EXPECT_EQ(PeriodMap(square).method(), Method::exact);
+  EXPECT_TRUE(PeriodMap(square).has_arcs());
+  EXPECT_EQ(PeriodMap(fourier).method(), Method::exact);  // smooth exact on a uniform level
+  EXPECT_EQ(PeriodMap(square, stribeck).method(), Method::integrator);
+  EXPECT_FALSE(PeriodMap(square, stribeck).has_arcs());
+  EXPECT_EQ(PeriodMap(opaque).method(), Method::time_stepping);
+  EXPECT_GT(PeriodMap(opaque).step(), 0.0);
+  EXPECT_EQ(PeriodMap(square).step(), 0.0);
+}
+
+TEST(PeriodMap, OnePeriodFromRestIsTheHandComputedOne) {
+  // Uniform m = 1, Coulomb law s = k = 1, x'' = -sigma - y'' while slipping (eqs. 15, 18).
+  // [0, 1/2):  y'' = 3 > 1: slip backward (sigma = -1), x'' = 1 - 3 = -2:
+  //            x'(1/2) = -1, x(1/2) = -1/4.
+  // [1/2, 1):  still backward, x'' = 1 + 3 = 4: x' = 0 at tau = 1/4 (t = 3/4),
+  //            x(3/4) = -1/4 - 1/4 + 2 (1/4)^2 = -3/8.
+  //            At rest, -y'' = 3 > 1: slip forward, x'' = -1 + 3 = 2 over 1/4:
+  //            x'(1) = 1/2, x(1) = -3/8 + (1/4)^2 = -5/16.
+  const PiecewisePolynomialProfile square = square_wave();
+  const PeriodMap map(square);
+  const ObjectState end = map(0.0, 0.0);
+  EXPECT_NEAR(end.t, 1.0, kClosedFormTol);
+  EXPECT_NEAR(end.x, -5.0 / 16, kClosedFormTol);
+  EXPECT_NEAR(end.xd, 0.5, kClosedFormTol);
+  // Its arcs: backward slip to the switch, backward slip to the stop, forward slip to the end;
+  // contiguous, and the last ends where the map does.
+  const std::vector<Arc> arcs = map.arcs(0.0, 0.0);
+  ASSERT_EQ(arcs.size(), 3u);
+  EXPECT_EQ(arcs[0].direction, -1);
+  EXPECT_EQ(arcs[1].direction, -1);
+  EXPECT_EQ(arcs[1].end, ArcEnd::velocity_zero);
+  EXPECT_NEAR(arcs[1].t1, 0.75, kClosedFormTol);
+  EXPECT_EQ(arcs[2].direction, 1);
+  for (std::size_t i = 1; i < arcs.size(); ++i) {
+    EXPECT_EQ(arcs[i].t0, arcs[i - 1].t1);
+    EXPECT_EQ(arcs[i].x0, arcs[i - 1].x1);
+  }
+  EXPECT_EQ(arcs.back().x1, end.x);
+  EXPECT_EQ(arcs.back().xd1, end.xd);
+}
+
+TEST(PeriodMap, ARunIsTheMapRepeated) {
+  // Across periods a run continues where the last period ended; the map restarts at phase 0
+  // from the state it is given. The two agree to rounding (the run's times are n + phase).
+  const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});  // case 3, stick-slip
+  const PeriodMap map(profile);
+  PeriodMap::Run run = map.start({0.0, 0.2, -0.1});
+  double x = 0.2, v = -0.1;
+  for (int n = 1; n <= 5; ++n) {
+    const ObjectState mapped = map(x, v);
+    const ObjectState& ran = run.advance_to(n * profile.period());
+    x = mapped.x;
+    v = mapped.xd;
+    EXPECT_NEAR(ran.x, x, 1e-12 * (1 + std::abs(x))) << n;
+    EXPECT_NEAR(ran.xd, v, 1e-12) << n;
+  }
+}
+
+TEST(PeriodMap, SaltationMonodromyAgreesWithFiniteDifferences) {
+  // Two independent methods: the arcs' transition matrices coupled by saltation matrices
+  // against central differences of the map (truncation O(h^2) = 1e-12 for h = 1e-6, rounding
+  // O(eps/h) ~ 1e-10 times the map's scale). Points in slip (no stick in the period, so the
+  // map is smooth around them) on the square wave and on the paper's case-4 profile.
+  const PiecewisePolynomialProfile square = square_wave();
+  const ThreePhaseProfile slip_slip({1.0, 0.084, 1.05, 2.0});
+  constexpr double kFdTol = 1e-7;
+  for (const TableProfile* p : {static_cast<const TableProfile*>(&square),
+                                static_cast<const TableProfile*>(&slip_slip)}) {
+    const PeriodMap map(*p);
+    for (const auto& [x0, v0] : {std::pair{0.0, 0.3}, std::pair{0.1, -0.4}}) {
+      const Eigen::Matrix2d s = map.saltation_monodromy(x0, v0);
+      const Eigen::Matrix2d fd = map.finite_difference_monodromy(x0, v0, 1e-6);
+      EXPECT_LT((s - fd).cwiseAbs().maxCoeff(), kFdTol) << p->kind() << " " << x0 << ", " << v0
+                                                        << "\n" << s << "\n" << fd;
+    }
+  }
+}
+
+TEST(PeriodMap, TimeSteppingConvergesToTheExactMap) {
+  // The same profile hidden from the exact solver: Moreau's map, first order in h. The
+  // switch at 0.37 and the start in slip put the events off the step grid (on the grid,
+  // Moreau is exact for piecewise-constant accelerations and the test could not fail).
+  const double durations[] = {0.37, 0.63}, accels[] = {3.0, -3.0 * 0.37 / 0.63};
+  const auto profile = PiecewisePolynomialProfile::from_accelerations(durations, accels);
+  const testing_support::Opaque opaque(profile);
+  PeriodMapOptions coarse, fine;
+  coarse.steps_per_period = 1000;
+  fine.steps_per_period = 10000;
+  const ObjectState exact = PeriodMap(profile)(0.0, 0.123);
+  const double e_coarse =
+      std::abs(PeriodMap(opaque, FrictionLaw{}, coarse)(0.0, 0.123).x - exact.x);
+  const double e_fine = std::abs(PeriodMap(opaque, FrictionLaw{}, fine)(0.0, 0.123).x - exact.x);
+  EXPECT_LT(e_coarse, 10.0 / coarse.steps_per_period);
+  EXPECT_GT(e_coarse, 1e-3 / coarse.steps_per_period);  // not exact by accident
+  EXPECT_LT(e_fine, e_coarse / 4);  // order about one: a tenth of the step, about a tenth
+}
+
+TEST(PeriodMap, ASinkNeedsAMapWithArcs) {
+  const PiecewisePolynomialProfile square = square_wave();
+  const testing_support::Opaque opaque(square);
+  const PeriodMap map(opaque);
+  struct Count final : ArcSink {
+    int n = 0;
+    void on_arc(const Arc&) override { ++n; }
+  } count;
+  try {
+    map(0.0, 0.0, &count);
+    FAIL() << "a sink given to a time-stepping map must be refused";
+  } catch (const InvalidParameter& e) {
+    EXPECT_NE(std::string(e.what()).find("method"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(map.arcs(0.0, 0.0), InvalidParameter);
+}
+
+}  // namespace
+}  // namespace selfalign
