@@ -11,6 +11,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_map.hpp"
+#include "selfalign/planar/planar_point.hpp"
 #include "selfalign/planar/planar_exact_point.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"

@@ -23,6 +23,7 @@
 #include "sanitized.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_map.hpp"
+#include "selfalign/planar/planar_point.hpp"
 #include "selfalign/planar/planar_rigid.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/three_phase.hpp"

@@ -12,7 +12,7 @@
 
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/planar/planar_field.hpp"
-#include "selfalign/planar/planar_point.hpp"
+#include "selfalign/planar/planar_table_motion.hpp"
 
 namespace selfalign {
 

@@ -30,7 +30,7 @@
 #include "selfalign/planar/contact_patch.hpp"
 #include "selfalign/planar/patch_impulse.hpp"
 #include "selfalign/planar/planar_field.hpp"
-#include "selfalign/planar/planar_point.hpp"
+#include "selfalign/planar/planar_table_motion.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
