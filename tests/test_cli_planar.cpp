@@ -4,6 +4,7 @@
 // line naming the parameter, exit code 2 and no file.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -82,6 +83,43 @@ TEST(CliPlanar, SimulateSteadyFieldAndStopRun) {
   const json stop = json::parse(box.run({"planar", "stop", "--config", cfg, "--json"}).out);
   EXPECT_EQ(stop["stopped"].get<int>(), 2);  // peak |y''| 3 < s c_mu = 3.75: held in the rough region
   EXPECT_GT(stop["mean_end"]["x"].get<double>(), 0.3);
+}
+
+// planar steady and planar field against a second method (issue 21: they were checked by
+// their exit code only). A symmetric patch on a uniform table moving along x is the 1-D
+// problem: its drift is the 1-D steady v̄ of `selfalign steady` (the exact solver, the
+// paper's eq. 10), up to Moreau's O(h) error, with no sideways drift and no turn; every
+// sample of the drift field on a uniform table is that same drift.
+TEST(CliPlanar, SteadyAndFieldOnAUniformTableAreTheOneDimensionalSteadyState) {
+  CliSandbox box;
+  const auto one_d = box.run({"steady", "--profile", "three-phase", "--period", "1", "--stroke",
+                              "0.084", "--a2", "3", "--a3", "0.9", "--mu", "0.3",
+                              "--mu-static", "0.45", "--json"});  // s/k = 1.5 as below
+  ASSERT_EQ(one_d.exit_code, 0) << one_d.err;
+  const double v_bar = json::parse(one_d.out)["v_bar"].get<double>();
+  double previous_error = 0;
+  for (const double h : {0.002, 0.0005}) {
+    std::string text = kBase + kPart;
+    text.replace(text.find("step = 0.01"), 11, "step = " + std::to_string(h));
+    text.replace(text.find("transient = 5"), 13, "transient = 10");
+    const std::string cfg = write_config(box, "u.toml", text);
+    const auto steady = box.run({"planar", "steady", "--config", cfg, "--json"});
+    ASSERT_EQ(steady.exit_code, 0) << steady.err;
+    const json j = json::parse(steady.out);
+    const double error = std::abs(j["drift_x"].get<double>() - v_bar);
+    // Moreau's error, measured 3.7e-4 at h = 2e-3 and 2.3e-5 at h = 5e-4 (v̄ = 0.0844): at
+    // most first order, bounded by 0.25 h.
+    EXPECT_LT(error, 0.25 * h) << h;
+    EXPECT_LT(std::abs(j["drift_y"].get<double>()), 1e-15);
+    EXPECT_LT(std::abs(j["rotation_rate"].get<double>()), 1e-15);
+    EXPECT_FALSE(j["level_changed_in_window"].get<bool>());
+    if (previous_error > 0) EXPECT_LT(error, previous_error / 2) << "first order in h";
+    previous_error = error;
+    const auto field = box.run({"planar", "field", "--config", cfg, "--json"});
+    ASSERT_EQ(field.exit_code, 0) << field.err;
+    EXPECT_NEAR(json::parse(field.out)["largest_drift"].get<double>(), j["drift_x"].get<double>(),
+                1e-12);
+  }
 }
 
 TEST(CliPlanar, BadInputNamesTheParameterAndLeavesNoFile) {

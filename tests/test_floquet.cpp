@@ -34,10 +34,16 @@ TEST(Floquet, StickingResponsesHaveMultipliersOneAndZero) {
   for (const auto& p : settings) {
     SCOPED_TRACE(testing::Message() << p.a2 << ", " << p.a3);
     const FloquetAnalysis f = floquet_multipliers(ThreePhaseProfile(p));
-    expect_multipliers(f.analytic, 1, 0, 0.0);
-    // Whole matrices: m12 = d x(t3)/d x'_0s is 0 when the period starts in stick (x'_0s = 0)
-    // and the time to the stick otherwise (case 3 here starts sliding back, x'_0s < 0).
-    EXPECT_NEAR(f.analytic.matrix(0, 1), f.saltation.matrix(0, 1), kClosedFormTol);
+    // The analytic matrix is [[1, m12], [0, 0]] by construction (eq. 30), so its multipliers
+    // {1, 0} prove nothing (issue 21): it is checked entry by entry against the saltation
+    // matrix, a second method (the arcs' transition matrices coupled by the saltation jumps of
+    // their events, computed from the simulated period, nothing assumed about sticks).
+    // m12 = d x(t3)/d x'_0s is 0 when the period starts in stick (x'_0s = 0) and the time to
+    // the stick otherwise (case 3 here starts sliding back, x'_0s < 0).
+    ASSERT_TRUE(f.analytic.available);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        EXPECT_NEAR(f.analytic.matrix(i, j), f.saltation.matrix(i, j), kClosedFormTol) << i << j;
     EXPECT_NEAR(f.finite_difference.matrix(0, 1), f.saltation.matrix(0, 1), kFiniteDifferenceTol);
     if (f.steady.x_dot_0s == 0) EXPECT_EQ(f.analytic.matrix(0, 1), 0.0);
     expect_multipliers(f.saltation, 1, 0, kClosedFormTol);
