@@ -68,47 +68,38 @@ IntegratorStatistics PeriodMap::integrator_statistics() const {
   return statistics_;
 }
 
+namespace {
+// PeriodMap's request: the best solver the problem allows, time-stepping on steps_per_period.
+StepperRequest map_request(const PeriodMapOptions& o) {
+  StepperRequest r;
+  r.integrator = o.integrator;
+  r.stepping = {0.0, o.theta};
+  r.steps_per_period = o.steps_per_period;
+  return r;
+}
+}  // namespace
+
 PeriodMap::PeriodMap(const TableProfile& profile, const FrictionLaw& law,
                      const PeriodMapOptions& options)
     : profile_(profile),
       owned_(std::make_unique<UniformFriction>(1.0)),
       friction_(owned_.get()),
       law_(law),
-      options_(options) {
-  choose_solver();
-}
+      options_(options),
+      stepper_(choose_stepper(profile_, *friction_, law_, map_request(options_))) {}
 
 PeriodMap::PeriodMap(const TableProfile& profile, const FrictionMap& friction,
                      const FrictionLaw& law, const PeriodMapOptions& options)
-    : profile_(profile), friction_(&friction), law_(law), options_(options) {
-  choose_solver();
-}
+    : profile_(profile),
+      friction_(&friction),
+      law_(law),
+      options_(options),
+      stepper_(choose_stepper(profile_, *friction_, law_, map_request(options_))) {}
 
-// Exact where a closed form exists: piecewise-polynomial acceleration on a piecewise-affine
-// level, or a smooth motion on a piecewise-constant level; the slip integrator for a
-// velocity-dependent law (piecewise-polynomial or smooth profiles on piecewise-affine levels)
-// and for a smooth motion other than a Fourier series on a level with slopes; time-stepping
-// otherwise.
-void PeriodMap::choose_solver() {
-  const PiecewisePolynomialProfile* pwp = profile_.piecewise_polynomial();
-  const SmoothMotion* motion = profile_.smooth();
-  const PiecewiseAffineFriction* affine = friction_->piecewise_affine();
-  const bool closed_form = !law_.velocity_dependent();
-  if (closed_form && pwp && affine) {
-    exact_ = std::make_unique<ExactSetup>(ExactSetup{*pwp, *affine, law_});
-  } else if (closed_form && motion && affine && smooth_solver_applies(*motion, *affine)) {
-    smooth_ = std::make_unique<SmoothSetup>(SmoothSetup{*motion, *affine, law_});
-  } else if (affine && integrable_profile(profile_)) {
-    // A speed-dependent law, or a smooth motion on slopes the smooth solver cannot take.
-    validate(options_.integrator);
-    integrator_ = std::make_unique<IntegratorSetup>(
-        IntegratorSetup{profile_, *affine, law_, options_.integrator});
-  } else {
-    if (options_.steps_per_period < 1)
-      throw InvalidParameter("steps_per_period", options_.steps_per_period, "must be >= 1");
-    stepping_ = {profile_.period() / options_.steps_per_period, options_.theta};
-    validate(stepping_);
-  }
+const TimeSteppingOptions& PeriodMap::stepping() const noexcept {
+  static const TimeSteppingOptions none{0.0, 0.5};
+  const auto* ts = std::get_if<TimeSteppingSetup>(&stepper_);
+  return ts ? ts->options : none;
 }
 
 const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& profile,
@@ -122,11 +113,12 @@ const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& prof
 }
 
 const ExactSetup& PeriodMap::exact_setup() const {
-  if (!exact_)
+  const auto* exact = std::get_if<ExactSetup>(&stepper_);
+  if (!exact)
     throw InvalidParameter("profile", profile_.kind(),
                            "needs a piecewise-constant or piecewise-linear table acceleration and a "
                            "piecewise-affine friction level for the exact solver");
-  return *exact_;
+  return *exact;
 }
 
 ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
@@ -135,53 +127,43 @@ ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
     throw InvalidParameter("method", to_string(method()),
                            "has no closed-form arcs: only the exact solvers deliver them");
   const double P = profile_.period();
-  if (exact_) {
-    ExactState s = make_exact_state(*exact_, {0, x0, v0});
-    if (census) {
-      CensusSink both;
-      both.inner = sink;
-      both.census = census;
-      advance_exact(*exact_, s, P, &both);
-    } else {
-      advance_exact(*exact_, s, P, sink);
+  StepperState state = make_state(stepper_, {0, x0, v0});
+  // The census listens to the arcs (closed forms), the intervals (integrator) or the steps
+  // (time-stepping); the map itself goes through the one advance().
+  if (census) {
+    if (const auto* integrator = std::get_if<IntegratorSetup>(&stepper_)) {
+      IntervalCensus intervals;
+      intervals.census = census;
+      IntegratorStatistics stats;
+      advance_integrated(*integrator, std::get<ObjectState>(state), P, &intervals, &stats);
+      add(stats);
+      return object_of(state);
     }
-    return s.object;
-  }
-  if (smooth_) {
-    ObjectState s{0, x0, v0};
+    if (const auto* ts = std::get_if<TimeSteppingSetup>(&stepper_)) {
+      SampleCensus samples;
+      samples.census = census;
+      advance_time_stepping(ts->profile, ts->friction, ts->law, ts->options,
+                            std::get<TimeSteppingState>(state), options_.steps_per_period,
+                            &samples);
+      return object_of(state);
+    }
     CensusSink both;
     both.inner = sink;
     both.census = census;
-    advance_smooth(*smooth_, s, P, census ? &both : sink);
-    return s;
+    advance(stepper_, state, P, &both);
+    return object_of(state);
   }
-  if (integrator_) {
-    ObjectState s{0, x0, v0};
-    IntervalCensus intervals;
-    intervals.census = census;
-    IntegratorStatistics stats;
-    advance_integrated(*integrator_, s, P, census ? &intervals : nullptr, &stats);
-    add(stats);
-    return s;
-  }
-  TimeSteppingState s = make_time_stepping_state(profile_, {0, x0, v0});
-  SampleCensus samples;
-  samples.census = census;
-  advance_time_stepping(profile_, *friction_, law_, stepping_, s, options_.steps_per_period,
-                        census ? &samples : nullptr);
-  return s.object;
+  IntegratorStatistics stats;
+  advance(stepper_, state, P, sink, &stats);
+  if (method() == Method::integrator) add(stats);
+  return object_of(state);
 }
 
 std::vector<Arc> PeriodMap::arcs(double x0, double v0) const {
+  if (!has_arcs()) exact_setup();  // throws, naming the profile
   ArcList list;
-  if (smooth_) {
-    ObjectState s{0, x0, v0};
-    advance_smooth(*smooth_, s, profile_.period(), &list);
-    return std::move(list.arcs);
-  }
-  const ExactSetup& setup = exact_setup();
-  ExactState s = make_exact_state(setup, {0, x0, v0});
-  advance_exact(setup, s, profile_.period(), &list);
+  StepperState state = make_state(stepper_, {0, x0, v0});
+  advance(stepper_, state, profile_.period(), &list);
   return std::move(list.arcs);
 }
 
@@ -246,55 +228,32 @@ Eigen::Matrix2d PeriodMap::finite_difference_monodromy(double x0, double v0, dou
   return fd;
 }
 
-PeriodMap::Run::Run(const PeriodMap& map, const ObjectState& start) : map_(&map) {
-  if (map.exact_) exact_ = make_exact_state(*map.exact_, start);
-  else if (map.smooth_ || map.integrator_) smooth_state_ = start;
-  else stepping_ = make_time_stepping_state(map.profile_, start);
-}
+PeriodMap::Run::Run(const PeriodMap& map, const ObjectState& start)
+    : map_(&map), state_(make_state(map.stepper_, start)) {}
 
-const ObjectState& PeriodMap::Run::state() const noexcept {
-  return map_->exact_                        ? exact_.object
-         : map_->smooth_ || map_->integrator_ ? smooth_state_
-                                              : stepping_.object;
+const ExactState& PeriodMap::Run::exact_state() const noexcept {
+  static const ExactState none{};
+  const auto* exact = std::get_if<ExactState>(&state_);
+  return exact ? *exact : none;
 }
 
 const ObjectState& PeriodMap::Run::advance_to(double t_end, IntervalSink* sink,
                                               std::span<const double> watch) {
-  if (!map_->integrator_)
+  const auto* integrator = std::get_if<IntegratorSetup>(&map_->stepper_);
+  if (!integrator)
     throw InvalidParameter("method", to_string(map_->method()),
                            "intervals and watched crossings come from the slip integrator only");
   IntegratorStatistics stats;
-  advance_integrated(*map_->integrator_, smooth_state_, t_end, sink, &stats, watch);
+  advance_integrated(*integrator, std::get<ObjectState>(state_), t_end, sink, &stats, watch);
   map_->add(stats);
-  return smooth_state_;
+  return state();
 }
 
 const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
-  // Only the exact solvers have arcs: a sink given to another would stay empty (D22: the
-  // convergence analysis read past an empty arc list under a Stribeck law).
-  if (sink && !map_->has_arcs())
-    throw InvalidParameter("method", to_string(map_->method()),
-                           "has no closed-form arcs: only the exact solvers deliver them");
-  if (map_->exact_) {
-    advance_exact(*map_->exact_, exact_, t_end, sink);
-    return exact_.object;
-  }
-  if (map_->smooth_) {
-    advance_smooth(*map_->smooth_, smooth_state_, t_end, sink);
-    return smooth_state_;
-  }
-  if (map_->integrator_) {
-    IntegratorStatistics stats;
-    advance_integrated(*map_->integrator_, smooth_state_, t_end, nullptr, &stats);
-    map_->add(stats);
-    return smooth_state_;
-  }
-  const double h = map_->stepping_.step;
-  const long long target = std::llround((t_end - stepping_.t0) / h);
-  if (target > stepping_.step_index)
-    advance_time_stepping(map_->profile_, *map_->friction_, map_->law_, map_->stepping_,
-                          stepping_, target - stepping_.step_index);
-  return stepping_.object;
+  IntegratorStatistics stats;
+  advance(map_->stepper_, state_, t_end, sink, &stats);
+  if (map_->method() == Method::integrator) map_->add(stats);
+  return state();
 }
 
 }  // namespace selfalign

@@ -8,6 +8,7 @@
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/smooth_exact.hpp"
+#include "selfalign/simulate/stepper.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
@@ -27,94 +28,6 @@ std::string to_string(Method method) {
   }
   return "?";
 }
-
-namespace {
-
-// Advances one solver to given times; both solvers behind one small adapter.
-class Runner {
- public:
-  virtual ~Runner() = default;
-  virtual ObjectState advance_to(double t) = 0;
-  virtual std::size_t work() const = 0;
-  virtual IntegratorStatistics statistics() const { return {}; }
-};
-
-class ExactRunner final : public Runner {
- public:
-  ExactRunner(const PiecewisePolynomialProfile& p, const PiecewiseAffineFriction& f,
-              const FrictionLaw& law, const ObjectState& s0)
-      : setup_{p, f, law}, state_(make_exact_state(setup_, s0)) {}
-  ObjectState advance_to(double t) override {
-    work_ += advance_exact(setup_, state_, t);
-    return state_.object;
-  }
-  std::size_t work() const override { return work_; }
-
- private:
-  ExactSetup setup_;
-  ExactState state_;
-  std::size_t work_ = 0;
-};
-
-class SmoothRunner final : public Runner {
- public:
-  SmoothRunner(const SmoothMotion& m, const PiecewiseAffineFriction& f, const FrictionLaw& law,
-               const ObjectState& s0)
-      : setup_{m, f, law}, state_(s0) {}
-  ObjectState advance_to(double t) override {
-    work_ += advance_smooth(setup_, state_, t);
-    return state_;
-  }
-  std::size_t work() const override { return work_; }
-
- private:
-  SmoothSetup setup_;
-  ObjectState state_;
-  std::size_t work_ = 0;
-};
-
-class IntegratorRunner final : public Runner {
- public:
-  IntegratorRunner(const TableProfile& p, const PiecewiseAffineFriction& f, const FrictionLaw& law,
-                   const IntegratorOptions& o, const ObjectState& s0)
-      : setup_{p, f, law, o}, state_(s0) {}
-  ObjectState advance_to(double t) override {
-    work_ += advance_integrated(setup_, state_, t, nullptr, &stats_);
-    return state_;
-  }
-  std::size_t work() const override { return work_; }
-  IntegratorStatistics statistics() const override { return stats_; }
-
- private:
-  IntegratorSetup setup_;
-  ObjectState state_;
-  std::size_t work_ = 0;
-  IntegratorStatistics stats_;
-};
-
-class SteppingRunner final : public Runner {
- public:
-  SteppingRunner(const TableProfile& p, const FrictionMap& f, const FrictionLaw& law,
-                 const TimeSteppingOptions& o, const ObjectState& s0)
-      : profile_(p), friction_(f), law_(law), options_(o), state_(make_time_stepping_state(p, s0)) {}
-  ObjectState advance_to(double t) override {
-    const long long target = std::llround((t - state_.t0) / options_.step);
-    if (target > state_.step_index)
-      advance_time_stepping(profile_, friction_, law_, options_, state_,
-                            target - state_.step_index);
-    return state_.object;
-  }
-  std::size_t work() const override { return static_cast<std::size_t>(state_.step_index); }
-
- private:
-  const TableProfile& profile_;
-  const FrictionMap& friction_;
-  FrictionLaw law_;
-  TimeSteppingOptions options_;
-  TimeSteppingState state_;
-};
-
-}  // namespace
 
 double require_simulatable_duration(const std::string& name, double duration, double period) {
   require_positive(name, duration);
@@ -140,46 +53,7 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
                            "must be within 1e8 table periods of 0 (|t0| <= " +
                                format_number(kMaxSimulatedPeriods * profile.period()) + ")");
   TimeSteppingOptions ts{o.step, o.theta};
-  std::unique_ptr<Runner> runner;
-  double grid = o.output_step;
-  Method method = o.method;
-  const PiecewiseAffineFriction* affine = friction.piecewise_affine();
-  // No closed form: a speed-dependent law, or a smooth motion the smooth solver cannot take.
-  if (method == Method::exact &&
-      (law.velocity_dependent() || (!profile.piecewise_polynomial() && profile.smooth() &&
-                                    affine && !smooth_solver_applies(*profile.smooth(), *affine))))
-    method = Method::integrator;
-  if (method == Method::integrator) {
-    validate(o.integrator);
-    if (!integrable_profile(profile))
-      throw InvalidParameter("method", to_string(o.method),
-                             "the slip integrator needs a piecewise-polynomial or smooth profile (" +
-                                 profile.kind() + " here); use time-stepping");
-    if (!affine)
-      throw InvalidParameter("method", to_string(o.method),
-                             "the slip integrator needs a piecewise-affine friction map; use "
-                             "time-stepping");
-    runner = std::make_unique<IntegratorRunner>(profile, *affine, law, o.integrator, initial);
-    if (grid == 0) grid = profile.period() / 200;
-  } else if (method == Method::exact) {
-    const PiecewisePolynomialProfile* p = profile.piecewise_polynomial();
-    const SmoothMotion* motion = profile.smooth();
-    if (!p && motion && affine && smooth_solver_applies(*motion, *affine)) {
-      runner = std::make_unique<SmoothRunner>(*motion, *affine, law, initial);
-      if (grid == 0) grid = profile.period() / 200;
-    } else {
-      if (!p)
-        throw InvalidParameter("method", "exact",
-                               "needs a piecewise-constant or piecewise-linear acceleration, or a "
-                               "smooth profile on a piecewise-constant friction map (" +
-                                   profile.kind() + " here); use time-stepping");
-      if (!affine)
-        throw InvalidParameter("method", "exact",
-                               "needs a piecewise-affine friction map; use time-stepping");
-      runner = std::make_unique<ExactRunner>(*p, *affine, law, initial);
-      if (grid == 0) grid = profile.period() / 200;
-    }
-  } else {
+  if (o.method == Method::time_stepping) {
     validate(ts);
     if (o.step > profile.period())
       throw InvalidParameter("step", o.step,
@@ -192,9 +66,19 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
     // Whole steps fill the run exactly: h' = duration / ceil(duration / h) <= h, so the run ends
     // at t0 + duration, not up to h/2 beside it (1e-9: a ratio that is whole up to rounding).
     ts.step = o.duration / std::ceil(o.duration / o.step - 1e-9);
-    runner = std::make_unique<SteppingRunner>(profile, friction, law, ts, initial);
+  }
+  StepperRequest request;
+  request.method = o.method;
+  request.integrator = o.integrator;
+  request.stepping = ts;
+  const Stepper stepper = choose_stepper(profile, friction, law, request);
+  const Method method = method_of(stepper);
+  double grid = o.output_step;
+  if (method == Method::time_stepping) {
     if (grid == 0) grid = ts.step;
     grid = std::max(1.0, std::round(grid / ts.step)) * ts.step;  // a whole number of steps
+  } else if (grid == 0) {
+    grid = profile.period() / 200;
   }
   // Sized before anything is allocated: the samples at t0 + j grid, plus the two ends.
   const double recorded = std::floor(o.duration / grid) + 2;
@@ -218,24 +102,31 @@ SimulationResult simulate(const TableProfile& profile, const FrictionMap& fricti
   double x_last_period = std::numeric_limits<double>::quiet_NaN();
   bool have_last_period = t_last_period < t0 ? false : (t_last_period == t0);
   if (have_last_period) x_last_period = initial.x;
+  StepperState state = make_state(stepper, initial);
+  std::size_t work = 0;
+  IntegratorStatistics statistics;
+  auto advance_to = [&](double t) -> const ObjectState& {
+    work += advance(stepper, state, t, nullptr, &statistics);
+    return object_of(state);
+  };
   ObjectState s = initial;
   for (long long j = 1; j <= samples; ++j) {
     const double t = t0 + static_cast<double>(j) * grid;
     if (t >= t_end) break;
     if (!have_last_period && t_last_period > t0 && t >= t_last_period) {
-      x_last_period = runner->advance_to(t_last_period).x;
+      x_last_period = advance_to(t_last_period).x;
       have_last_period = true;
     }
-    s = runner->advance_to(t);
+    s = advance_to(t);
     push(s);
   }
-  if (!have_last_period && t_last_period > t0) x_last_period = runner->advance_to(t_last_period).x;
-  s = runner->advance_to(t_end);
+  if (!have_last_period && t_last_period > t0) x_last_period = advance_to(t_last_period).x;
+  s = advance_to(t_end);
   if (o.record) push(s);
   r.final_state = s;
   r.method = method;
-  r.work = runner->work();
-  r.integrator = runner->statistics();
+  r.work = work;
+  r.integrator = statistics;
   r.mean_velocity_last_period = (s.x - x_last_period) / P;
   r.stick_fraction = std::numeric_limits<double>::quiet_NaN();  // nothing recorded
   if (o.record && r.trajectory.size() > 0) {

@@ -31,6 +31,7 @@
 #include "selfalign/simulate/simulate.hpp"
 #include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/simulate/smooth_exact.hpp"
+#include "selfalign/simulate/stepper.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
@@ -56,24 +57,21 @@ class PeriodMap {
   const TableProfile& profile() const noexcept { return profile_; }
   const FrictionMap& friction() const noexcept { return *friction_; }
   const FrictionLaw& law() const noexcept { return law_; }
-  Method method() const noexcept {
-    return exact_ || smooth_ ? Method::exact
-           : integrator_     ? Method::integrator
-                             : Method::time_stepping;
-  }
+  Method method() const noexcept { return method_of(stepper_); }
+  /// The solver this map runs, as chosen by choose_stepper() (stepper.hpp).
+  const Stepper& stepper() const noexcept { return stepper_; }
   /// The integrator's tolerances (method() == integrator).
   const IntegratorOptions& integrator_options() const noexcept { return options_.integrator; }
   /// What the integrator did over every call of this map so far (zeros for other methods).
   IntegratorStatistics integrator_statistics() const;
   /// True when the map is exact and so has arcs (piecewise-polynomial profiles, or smooth
   /// motions on piecewise-constant levels).
-  bool has_arcs() const noexcept { return exact_ || smooth_; }
+  bool has_arcs() const noexcept { return selfalign::has_arcs(stepper_); }
   double period() const noexcept { return profile_.period(); }
   /// Time-stepping step h [-] (0 for the exact solvers and the integrator).
-  double step() const noexcept {
-    return method() == Method::time_stepping ? stepping_.step : 0.0;
-  }
-  const TimeSteppingOptions& stepping() const noexcept { return stepping_; }
+  double step() const noexcept { return stepping().step; }
+  /// Time-stepping's options (a zero step for the other methods).
+  const TimeSteppingOptions& stepping() const noexcept;
 
   /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only:
   /// given to another map it throws InvalidParameter naming "method") receives every arc; a
@@ -99,17 +97,15 @@ class PeriodMap {
     /// every crossing of a position in `watch` (sorted) to sink->on_crossing (integrator only;
     /// throws for other methods).
     const ObjectState& advance_to(double t_end, IntervalSink* sink, std::span<const double> watch);
-    const ObjectState& state() const noexcept;
-    /// The exact solver's state (segment and period index; exact only).
-    const ExactState& exact_state() const noexcept { return exact_; }
+    const ObjectState& state() const noexcept { return object_of(state_); }
+    /// The exact solver's state (segment and period index; exact only, else a default one).
+    const ExactState& exact_state() const noexcept;
 
    private:
     friend class PeriodMap;
     Run(const PeriodMap& map, const ObjectState& start);
     const PeriodMap* map_;
-    ExactState exact_{};
-    ObjectState smooth_state_{};  // the smooth solver's and the integrator's state
-    TimeSteppingState stepping_{};
+    StepperState state_;
   };
   Run start(const ObjectState& state) const { return Run(*this, state); }
 
@@ -122,14 +118,10 @@ class PeriodMap {
   const FrictionMap* friction_;
   FrictionLaw law_;
   PeriodMapOptions options_;
-  TimeSteppingOptions stepping_;
-  std::unique_ptr<ExactSetup> exact_;
-  std::unique_ptr<SmoothSetup> smooth_;
-  std::unique_ptr<IntegratorSetup> integrator_;
+  Stepper stepper_;  // after friction_, law_ and options_: made from them
   mutable std::mutex statistics_mutex_;
   mutable IntegratorStatistics statistics_;
   void add(const IntegratorStatistics& s) const;
-  void choose_solver();
 };
 
 /// The profile as the exact solver's piecewise-polynomial form, or InvalidParameter("profile",

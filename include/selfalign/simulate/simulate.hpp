@@ -8,20 +8,11 @@
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/method.hpp"
 #include "selfalign/simulate/object_state.hpp"
 #include "selfalign/simulate/slip_integrator.hpp"
 
 namespace selfalign {
-
-enum class Method {
-  exact,         ///< event-driven closed form (exact.hpp): piecewise-polynomial y'' (degree <= 1), piecewise-affine m(x)
-  time_stepping, ///< Moreau time-stepping (time_stepping.hpp): any profile and friction map
-  integrator     ///< exact sticks, slips by Odeint's dopri5 with event location (slip_integrator.hpp): velocity-dependent laws
-};
-
-/// Parses "exact", "time-stepping" or "integrator"; throws InvalidParameter("method", ...) otherwise.
-Method parse_method(const std::string& text);
-std::string to_string(Method method);
 
 /// The longest run a front door accepts, in table periods. At t = 1e8 Δt the rounding of time
 /// is 1.5e-8 Δt, still far below every event spacing of a profile resolved in double precision.
