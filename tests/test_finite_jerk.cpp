@@ -97,7 +97,7 @@ TEST(FiniteJerk, StickBreakingAgreesWithTimeSteppingToFirstOrder) {
   ASSERT_GE(breaks, 3);
   const double e5 = testing_support::moreau_rms_error(profile, law, t_end, 1e-5, 4);
   const double e6 = testing_support::moreau_rms_error(profile, law, t_end, 1e-6, 4);
-  RecordProperty("errors", testing::PrintToString(std::vector<double>{e5, e6}));
+  RecordProperty("errors", ::testing::PrintToString(std::vector<double>{e5, e6}));
   EXPECT_LT(e5, 10 * 1e-5);
   EXPECT_LT(e6, 10 * 1e-6);
   EXPECT_GE(std::log10(e5 / e6), 0.8) << e5 << " " << e6;
@@ -113,7 +113,7 @@ TEST(FiniteJerk, SteadyVelocityTendsToTheJumpProfilesLikeOneOverJerk) {
     const JerkLimitedThreePhaseProfile p({base.period, base.stroke, base.a2, base.a3, j});
     err.push_back(std::abs(steady_state(p).v_bar - v_inf));
   }
-  RecordProperty("errors", testing::PrintToString(err));
+  RecordProperty("errors", ::testing::PrintToString(err));
   for (std::size_t i = 0; i + 1 < err.size(); ++i) {
     const double order = std::log10(err[i] / err[i + 1]);
     EXPECT_GT(order, 0.85) << i;
@@ -149,14 +149,14 @@ TEST(FiniteJerk, SaltationAndFiniteDifferencesAgreeForEveryPatternFound) {
                 << "a2 " << a2 << " a3 " << a3 << " j " << j << " " << law.describe() << " "
                 << r.steady.pattern;
           }
-  RecordProperty("patterns", testing::PrintToString(patterns));
+  RecordProperty("patterns", ::testing::PrintToString(patterns));
   // Table 1's stick-slip, general and slip-slip patterns, and two Table 1 has no name for
   // (two sticks a period; a backward slip before the forward one).
   for (const char* expected : {"stick", "stick,forward", "stick,backward",
                                "stick,forward,backward", "forward,backward",
                                "stick,forward,stick,backward", "stick,backward,forward"})
     EXPECT_TRUE(patterns.count(expected)) << expected << " not found in "
-                                          << testing::PrintToString(patterns);
+                                          << ::testing::PrintToString(patterns);
 }
 
 // Under a jerk limit there is no closed-form stick-position map (eq. 59), but the rest

@@ -32,7 +32,7 @@ TEST(Floquet, StickingResponsesHaveMultipliersOneAndZero) {
       {2.0, 0.084, 0.9, 0.9},  // case 5
   };
   for (const auto& p : settings) {
-    SCOPED_TRACE(testing::Message() << p.a2 << ", " << p.a3);
+    SCOPED_TRACE(::testing::Message() << p.a2 << ", " << p.a3);
     const FloquetAnalysis f = floquet_multipliers(ThreePhaseProfile(p));
     // The analytic matrix is [[1, m12], [0, 0]] by construction (eq. 30), so its multipliers
     // {1, 0} prove nothing (issue 21): it is checked entry by entry against the saltation
@@ -60,7 +60,7 @@ TEST(Floquet, SlipSlipMultiplierMatchesEquationThirtyThree) {
       {0.072, 0.021, 37.9379, 233.673},
   };
   for (const auto& p : settings) {
-    SCOPED_TRACE(testing::Message() << p.a2 << ", " << p.a3);
+    SCOPED_TRACE(::testing::Message() << p.a2 << ", " << p.a3);
     const FloquetAnalysis f = floquet_multipliers(ThreePhaseProfile(p));
     ASSERT_EQ(f.steady.motion_case, StickSlipCase::slip_slip);
     const double lambda2 = ((p.a2 - 1) * (p.a3 - 1)) / ((p.a2 + 1) * (p.a3 + 1));  // eq. (33)

@@ -104,7 +104,7 @@ TEST(JerkLimitedThreePhase, MeetsAllConstraintsOnTheGridAndReportsCaseZero) {
         for (int k = 0; k <= 18; ++k) {
           const Params p{dt, dy, 0.2 * std::pow(50.0, i / 18.0), 0.2 * std::pow(50.0, k / 18.0),
                          jerk};
-          SCOPED_TRACE(testing::Message()
+          SCOPED_TRACE(::testing::Message()
                        << "dy " << dy << " j " << jerk << " a2 " << p.a2 << " a3 " << p.a3);
           const Solution r = solve_jerk_limited_three_phase(p);
           // Independent criterion.
@@ -221,7 +221,7 @@ TEST(JerkLimitedThreePhase, ApproachesThreePhaseAsOneOverJerk) {
   for (const ThreePhaseParameters& q :
        {ThreePhaseParameters{1.05, 0.084, 2.2, 0.9}, ThreePhaseParameters{1.0, 0.05, 1.0, 1.0},
         ThreePhaseParameters{2.0, 0.1, 0.7, 4.0}}) {
-    SCOPED_TRACE(testing::Message() << "a2 " << q.a2 << " a3 " << q.a3);
+    SCOPED_TRACE(::testing::Message() << "a2 " << q.a2 << " a3 " << q.a3);
     const ThreePhaseSolution r0 = solve_three_phase(q);
     ASSERT_TRUE(r0.physical);
     const double a = q.a2, b = q.a3;
@@ -308,7 +308,7 @@ TEST(JerkLimitedThreePhase, CaseZeroBoundariesAtTheSmallestJerk) {
       {1.0 / 24, 4.0, JerkLimitedCase0::ramps_exceed_period},   // (H6) all holds vanish at 4
   };
   for (const Edge& e : edges) {
-    SCOPED_TRACE(testing::Message() << "stroke " << e.stroke);
+    SCOPED_TRACE(::testing::Message() << "stroke " << e.stroke);
     const Solution at = solve_jerk_limited_three_phase({1.0, e.stroke, 1, 1, 2.0});
     EXPECT_FALSE(at.physical);
     EXPECT_NEAR(at.min_jerk, e.j_min, 1e-12 * e.j_min);
@@ -423,7 +423,7 @@ TEST(JerkLimitedThreePhase, BuildsOverExtremeScales) {
         if (!probe.physical) continue;
         for (double f : {1.001, 3.0, 1e3}) {
           const Params p{sc.period, sc.stroke, a2, a3, probe.min_jerk * f};
-          SCOPED_TRACE(testing::Message() << "period " << p.period << " stroke " << p.stroke
+          SCOPED_TRACE(::testing::Message() << "period " << p.period << " stroke " << p.stroke
                                           << " a2 " << a2 << " a3 " << a3 << " j " << p.jerk);
           if (!std::isfinite(p.jerk)) continue;
           std::optional<JerkLimitedThreePhaseProfile> profile;

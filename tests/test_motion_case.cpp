@@ -64,7 +64,7 @@ TEST(MotionCase, APrioriRulesAgreeWithSimulatedSteadyStateOnThreePlanes) {
         }
       }
     }
-    RecordProperty(pl.name, testing::PrintToString(std::array{straddling, disagreements}));
+    RecordProperty(pl.name, ::testing::PrintToString(std::array{straddling, disagreements}));
     std::printf("[ plane %s ] cells %zu, straddling a boundary %d, disagreements %d\n", pl.name,
                 cells.size(), straddling, disagreements);
     EXPECT_EQ(unexplained, 0);

@@ -73,7 +73,7 @@ TEST(SmoothExact, MoreauConvergesToItWithOrderOne) {
     std::vector<double> err;
     for (double h : {1e-4, 1e-5, 1e-6})
       err.push_back(testing_support::moreau_rms_error(profile, law, 5.0, h, 4));
-    RecordProperty("errors", testing::PrintToString(err));
+    RecordProperty("errors", ::testing::PrintToString(err));
     EXPECT_GE(std::log10(err[0] / err[1]), 0.8) << law.describe();
     EXPECT_GE(std::log10(err[1] / err[2]), 0.8) << law.describe();
   }

@@ -92,7 +92,7 @@ TEST(SteadyStateKink, ScanAroundTheCaseThreeFourBoundaryAgreesWithPlainIteration
         const PeriodMap map(profile);
         const SteadyState s = steady_state(map);
         const PlainFixedPoint ref = plain_iteration(map);
-        SCOPED_TRACE(testing::Message() << "a2 " << b.a2 << " a3 " << profile.parameters().a3
+        SCOPED_TRACE(::testing::Message() << "a2 " << b.a2 << " a3 " << profile.parameters().a3
                                         << " (boundary " << a3_star << ", offset " << side
                                         << "e" << e << ")");
         ASSERT_TRUE(s.converged);

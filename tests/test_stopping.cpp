@@ -143,7 +143,7 @@ TEST(Positioning, SectionSevenTwoSettingsAgainstBruteForce) {
     bool accumulates;
   };
   for (const Expect e : {Expect{2.3, 1.3, true}, Expect{1.8, 1.1, false}}) {
-    SCOPED_TRACE(testing::Message() << e.a2 << ", " << e.a3);
+    SCOPED_TRACE(::testing::Message() << e.a2 << ", " << e.a3);
     const ThreePhaseProfile profile({1.0, 0.084, e.a2, e.a3});
     const PositioningAccuracy acc = positioning_accuracy(profile, 0.05, 2.5, o);
     ASSERT_TRUE(acc.reaches);

@@ -67,7 +67,7 @@ TEST(ThreePhaseProfile, MeetsAllConstraintsOnTheGridAndReportsCaseZero) {
       ++physical;
       EXPECT_GE(max_stroke, dy * (1 - 1e-12));
       const Integrated g = integrate(p, r);
-      SCOPED_TRACE(testing::Message() << "a2 = " << p.a2 << ", a3 = " << p.a3);
+      SCOPED_TRACE(::testing::Message() << "a2 = " << p.a2 << ", a3 = " << p.a3);
       EXPECT_NEAR(g.y_end, r.y_ini, kConstraintTol);        // periodic position (constraint 5)
       EXPECT_NEAR(g.yd_end, r.yd_ini, kConstraintTol);      // periodic velocity (constraint 6)
       EXPECT_NEAR(g.y_max - g.y_min, dy, kConstraintTol);   // stroke (constraint 4)
@@ -160,7 +160,7 @@ TEST(ThreePhaseProfile, EveryPhysicalSettingBuildsOverExtremeScales) {
                                      a_c * std::pow(10.0, -6 + 0.5 * j)};
         const double s = 1 / p.a2 + 1 / p.a3;
         if (!(s <= p.period * p.period / (8 * p.stroke))) continue;  // case 0 (closed form)
-        SCOPED_TRACE(testing::Message() << "period " << p.period << " stroke " << p.stroke
+        SCOPED_TRACE(::testing::Message() << "period " << p.period << " stroke " << p.stroke
                                         << " a2 " << p.a2 << " a3 " << p.a3);
         std::optional<ThreePhaseProfile> profile;
         ASSERT_NO_THROW(profile.emplace(p));

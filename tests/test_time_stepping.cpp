@@ -83,7 +83,7 @@ TEST_P(TimeSteppingOrder, OrderAtLeastPointNineAfterTwentyPeriods) {
   }
   if (c.table1_case == 5) return;
   const double order1 = std::log10(err[0] / err[1]), order2 = std::log10(err[1] / err[2]);
-  RecordProperty("errors", testing::PrintToString(std::vector<double>(err, err + 3)));
+  RecordProperty("errors", ::testing::PrintToString(std::vector<double>(err, err + 3)));
   EXPECT_GE(order1, 0.9) << "errors " << err[0] << " " << err[1] << " " << err[2];
   EXPECT_GE(order2, 0.9) << "errors " << err[0] << " " << err[1] << " " << err[2];
 }

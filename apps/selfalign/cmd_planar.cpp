@@ -15,6 +15,7 @@
 #include "progress_bar.hpp"
 #include "report.hpp"
 #include "warnings.hpp"
+#include "selfalign/planar/planar_steady_state.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/planar_config.hpp"
@@ -128,32 +129,51 @@ void run_simulate(const PlanarFlags& f) {
 void run_steady(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
   const Si si{s};
-  const PlanarSteadyResult res = planar_steady(s.problem, s.pose, s.twist, s.transient, s.window);
+  if (s.window_given)
+    warn("planar steady: [run] window is not used: the steady state is the fixed point of the "
+         "period map (searched for at most [run] steady_periods periods after [run] transient)");
+  PlanarSteadyStateOptions options;
+  options.transient_periods = s.transient;
+  options.max_periods = s.steady_periods;
+  options.tolerance = s.tolerance;
+  const PlanarSteadyState res = planar_steady_state(s.problem, s.pose, s.twist, options);
   json r = header(s);
   r["command"] = "planar steady";
+  r["method"] = res.method == Method::exact ? "exact point solver" : "time-stepping";
   r["transient_periods"] = s.transient;
-  r["window_periods"] = s.window;
+  r["converged"] = res.converged;
+  r["periods"] = res.periods;
+  // Absent values are null: no drift where the search did not converge.
   r["drift_x"] = si.velocity(res.drift_x);
   r["drift_y"] = si.velocity(res.drift_y);
   r["rotation_rate"] = si.rate(res.rotation_rate);
-  r["drift_change_between_windows"] = si.velocity(res.change);
-  r["census"] = census_json(res.census);
+  r["twist_0s"] = {{"ux", si.velocity(res.twist_0s.ux)}, {"uy", si.velocity(res.twist_0s.uy)},
+                   {"omega", si.rate(res.twist_0s.omega)}};
+  r["residual"] = res.residual;   // [-]: |z_n - z_(n-1)|, twist and displacement per time
+  r["error"] = res.error;         // [-]: its estimate of |z - z*|
+  r["census"] = res.method == Method::exact ? json(nullptr) : census_json(res.census);
   r["end_pose"] = pose_json(res.end_pose, si);
-  // The drift is a window average: a steady state only if the friction under the part stayed
-  // the same while it was taken (until the contact core replaces the window average).
   r["level_under_part"] = {{"min", res.level_min}, {"max", res.level_max}};
-  r["level_changed_in_window"] = res.level_changed();
-  if (res.level_changed())
+  r["level_changed"] = res.level_changed;
+  if (res.level_changed)
     warn("planar steady: the friction level under the part changed from " +
          format_number(res.level_min) + " to " + format_number(res.level_max) +
-         " inside the averaging windows (it met the field's region): drift and rotation rate "
-         "are no steady state; start elsewhere ([run] pose) or change [run] transient, window");
+         " during the run (it entered another region of the field): " +
+         (res.converged ? "the steady state reported is the one where it ended, not where it "
+                          "started"
+                        : "no steady drift was found") +
+         "; start elsewhere ([run] pose) or shorten [run] transient");
+  if (!res.converged && !res.level_changed)
+    warn("planar steady: no fixed point within " + std::to_string(res.periods) +
+         " periods (residual " + format_number(res.residual) +
+         "); raise [run] steady_periods or [run] tolerance");
   TextTable t;
   t.row("drift velocity x, y [" + si.u("m/s", "-") + "]", table_text(r["drift_x"]) + ", " + table_text(r["drift_y"]));
   t.row("rotation rate [" + si.u("rad/s", "-") + "]", table_text(r["rotation_rate"]));
-  t.row("change between windows [" + si.u("m/s", "-") + "]", table_text(r["drift_change_between_windows"]));
-  t.row("stick fraction", table_text(r["census"]["stick_fraction"]));
-  t.row("level changed in window", table_text(r["level_changed_in_window"]));
+  t.row("converged (periods)", table_text(r["converged"]) + " (" + std::to_string(res.periods) + ")");
+  t.row("error estimate [-]", table_text(r["error"]));
+  t.row("method", r["method"].get<std::string>());
+  t.row("level changed", table_text(r["level_changed"]));
   std::string csv;
   if (f.csv) csv = "drift_x,drift_y,rotation_rate\n" + csv_number(r["drift_x"]) + "," + csv_number(r["drift_y"]) + "," + csv_number(r["rotation_rate"]) + "\n";
   deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv);
@@ -250,8 +270,8 @@ void add_planar_command(CLI::App& app) {
   add_planar_sub(sub, "simulate", "one run from [run] pose/twist for [run] periods",
                  &run_simulate, "write the trajectory (every [run] every steps) to FILE");
   add_planar_sub(sub, "steady",
-                 "steady drift velocity and rotation rate after [run] transient periods, "
-                 "averaged over [run] window periods, with the stick/pivot/slip census",
+                 "steady drift velocity and rotation rate: the fixed point of the period map "
+                 "(exact for a point part on a uniform field), with the stick/pivot/slip census",
                  &run_steady, "write the drift as one CSV row to FILE");
   add_planar_sub(sub, "field",
                  "the drift field over [field_map] x, y, angles: from rest, the mean drift over "

@@ -166,11 +166,13 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     PlanarTwist,
     PlanarCensus,
     PlanarSteadyResult,
+    PlanarSteadyState,
     PlanarDriftSample,
     PlanarStopRun,
     PlanarStopSummary,
     simulate_planar,
     planar_steady,
+    planar_steady_state,
     planar_drift_field,
     planar_stop,
 )

@@ -1747,6 +1747,54 @@ class PlanarSteadyResult:
     def end_pose(self) -> PlanarPose: ...
     def to_dict(self) -> dict[str, Any]: ...
 
+class PlanarSteadyState:
+    def __init__(
+        self,
+        converged: bool,
+        level_changed: bool,
+        method: Method,
+        periods: int,
+        drift_x: float,
+        drift_y: float,
+        rotation_rate: float,
+        twist_0s: PlanarTwist,
+        residual: float,
+        error: float,
+        census: PlanarCensus,
+        end_pose: PlanarPose,
+        level_min: float,
+        level_max: float,
+    ) -> None: ...
+    @property
+    def converged(self) -> bool: ...
+    @property
+    def level_changed(self) -> bool: ...
+    @property
+    def method(self) -> Method: ...
+    @property
+    def periods(self) -> int: ...
+    @property
+    def drift_x(self) -> float: ...
+    @property
+    def drift_y(self) -> float: ...
+    @property
+    def rotation_rate(self) -> float: ...
+    @property
+    def twist_0s(self) -> PlanarTwist: ...
+    @property
+    def residual(self) -> float: ...
+    @property
+    def error(self) -> float: ...
+    @property
+    def census(self) -> PlanarCensus: ...
+    @property
+    def end_pose(self) -> PlanarPose: ...
+    @property
+    def level_min(self) -> float: ...
+    @property
+    def level_max(self) -> float: ...
+    def to_dict(self) -> dict[str, Any]: ...
+
 class PlanarDriftSample:
     @property
     def x(self) -> float: ...
@@ -1842,6 +1890,24 @@ def planar_steady(
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
 ) -> PlanarSteadyResult: ...
+def planar_steady_state(
+    x_profile: Optional[TableProfile] = None,
+    y_profile: Optional[TableProfile] = None,
+    rotation: Optional[TableProfile] = None,
+    *,
+    field: PlanarField,
+    part: RigidPart,
+    law: FrictionLaw = ...,
+    step: float,
+    theta: float = 0.5,
+    pose: PoseLike = (0.0, 0.0, 0.0),
+    twist: TwistLike = (0.0, 0.0, 0.0),
+    transient_periods: int = 0,
+    max_periods: int = 2000,
+    tolerance: float = 0.0,
+    x_direction: tuple[float, float] = (1.0, 0.0),
+    y_direction: tuple[float, float] = (0.0, 1.0),
+) -> PlanarSteadyState: ...
 def planar_drift_field(
     x_profile: Optional[TableProfile] = None,
     y_profile: Optional[TableProfile] = None,

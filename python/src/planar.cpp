@@ -18,6 +18,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "progress.hpp"
+#include "selfalign/planar/planar_steady_state.hpp"
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/sweep.hpp"  // worker_threads
@@ -468,6 +469,44 @@ A twist of the part relative to the table, in table axes: the centre of mass's v
              field("rotation_rate", &SR::rotation_rate), field("change", &SR::change),
              field("census", &SR::census), field("end_pose", &SR::end_pose));
 
+  using SS = PlanarSteadyState;
+  py::class_<SS> fixed(m, "PlanarSteadyState",
+                       "The outcome of planar_steady_state(): the fixed point of the planar "
+                       "period map (planar/planar_steady_state.hpp).");
+  fixed
+      .def_readonly("converged", &SS::converged,
+                    "False: max_periods reached, or the level under the part changing")
+      .def_readonly("level_changed", &SS::level_changed,
+                    "the friction level under the part changed during the run (it entered "
+                    "another region): a drift found is the steady state where it ended")
+      .def_readonly("method", &SS::method, "Method.exact (point solver) or Method.time_stepping")
+      .def_readonly("periods", &SS::periods, "periods simulated")
+      .def_readonly("drift_x", &SS::drift_x, "Δx/Δt over the steady period, table x [-]; NaN "
+                    "unless converged")
+      .def_readonly("drift_y", &SS::drift_y, "Δy/Δt [-]; NaN unless converged")
+      .def_readonly("rotation_rate", &SS::rotation_rate, "Δangle/Δt [-]; NaN unless converged")
+      .def_readonly("twist_0s", &SS::twist_0s, "PlanarTwist at phase 0 of the last period [-]")
+      .def_readonly("residual", &SS::residual, "|z_n - z_(n-1)| [-] (inf before two periods)")
+      .def_readonly("error", &SS::error, "estimate of |z - z*| [-]; inf without a contraction")
+      .def_readonly("census", &SS::census, "PlanarCensus of the last period (Moreau)")
+      .def_readonly("end_pose", &SS::end_pose, "PlanarPose at the end of the run")
+      .def_readonly("level_min", &SS::level_min, "least level under the part over the run [-]")
+      .def_readonly("level_max", &SS::level_max, "largest level under the part over the run [-]")
+      .def("__repr__", [](const SS& r) {
+        return Repr("PlanarSteadyState")("converged", r.converged)(
+                   "level_changed", r.level_changed)("drift_x", r.drift_x)("drift_y", r.drift_y)(
+                   "rotation_rate", r.rotation_rate)("periods", r.periods)
+            .str();
+      });
+  def_record(fixed, field("converged", &SS::converged),
+             field("level_changed", &SS::level_changed), field("method", &SS::method),
+             field("periods", &SS::periods), field("drift_x", &SS::drift_x),
+             field("drift_y", &SS::drift_y), field("rotation_rate", &SS::rotation_rate),
+             field("twist_0s", &SS::twist_0s), field("residual", &SS::residual),
+             field("error", &SS::error), field("census", &SS::census),
+             field("end_pose", &SS::end_pose), field("level_min", &SS::level_min),
+             field("level_max", &SS::level_max));
+
   using DS = PlanarDriftSample;
   py::class_<DS> drift(m, "PlanarDriftSample",
                        "One sample of planar_drift_field() (its 'samples' list): from rest at "
@@ -777,6 +816,42 @@ into 2 to 1e8 whole steps.
       py::arg("step"), py::arg("theta") = 0.5, py::arg("pose") = zero3,
       py::arg("twist") = zero3, py::arg("transient") = 20, py::arg("window") = 5,
       py::arg("x_direction") = ex, py::arg("y_direction") = ey, steady_doc.c_str());
+
+  static const std::string steady_state_doc = doc(R"doc(
+The planar steady state as the fixed point of the period map (the 1-D criterion; the CLI's
+`planar steady`): from `pose` with `twist` at t = 0, after `transient_periods` ([0, 1e5]),
+iterates the period map at most `max_periods` ([1, 1e6]) times until the twist at phase 0 and
+the displacement per period stop changing (tolerance relative to 1 + |z|; 0: 1e-13 with the
+exact point solver, 10 step otherwise). The exact event-driven point solver runs where it
+applies (a point part at its centre, a uniform field, a translating table with
+piecewise-constant accelerations), Moreau's rigid-part stepper otherwise. A change of the
+friction level under the part during the run is reported (level_changed), never averaged
+over. Returns a PlanarSteadyState (drift NaN unless converged).
+)doc");
+  m.def(
+      "planar_steady_state",
+      [](const TableProfile* x_profile, const TableProfile* y_profile,
+         const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
+         const FrictionLaw& law, double step, double theta, const py::object& pose,
+         const py::object& twist, int transient_periods, int max_periods, double tolerance,
+         const py::object& x_direction, const py::object& y_direction) {
+        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
+                                           y_direction, field, part, law, step, theta);
+        const PlanarPose start = pose_of(pose, "pose");
+        const PlanarTwist u = twist_of(twist, "twist");
+        PlanarSteadyStateOptions o;
+        o.transient_periods = transient_periods;
+        o.max_periods = max_periods;
+        o.tolerance = tolerance;
+        py::gil_scoped_release release;
+        return planar_steady_state(p, start, u, o);
+      },
+      py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
+      py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
+      py::arg("step"), py::arg("theta") = 0.5, py::arg("pose") = zero3,
+      py::arg("twist") = zero3, py::arg("transient_periods") = 0,
+      py::arg("max_periods") = 2000, py::arg("tolerance") = 0.0,
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, steady_state_doc.c_str());
 
   static const std::string drift_doc = doc(R"doc(
 The drift field: from rest at every pose of the grid xs x ys x angles (table coordinates [-],

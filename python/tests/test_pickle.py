@@ -171,6 +171,9 @@ EXAMPLES = {
     "PlanarSteadyResult": lambda: sa.planar_steady(
         PROFILE, field=sa.UniformPlanarField(), part=example("RigidPart"), step=0.01,
         twist=(0.0, 0.1, 0.5), transient=1, window=1),
+    "PlanarSteadyState": lambda: sa.planar_steady_state(
+        PROFILE, field=sa.UniformPlanarField(), part=example("RigidPart"), step=0.01,
+        twist=(0.0, 0.1, 0.5), max_periods=3),  # not converged: NaN drift, inf error
     "PlanarDriftSample": lambda: sa.planar_drift_field(
         PROFILE, field=example("HalfPlaneStepField"), part=sa.RigidPart(), step=0.01,
         xs=[0.1], ys=[0.0], angles=[0.5], periods=1)["samples"][0],

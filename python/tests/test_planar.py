@@ -244,3 +244,23 @@ def test_figures_write_png_and_gif(tmp_path):
     os.umask(umask)
     for written in (png, drift_png, gif):  # a new file's permissions, not mkstemp's 0600
         assert written.stat().st_mode & 0o777 == 0o666 & ~umask, written
+
+
+def test_planar_steady_state_of_a_point_on_an_x_motion_is_the_1d_steady_state():
+    """The fixed point of the planar period map (issue 21) with the exact point solver against
+    the 1-D exact steady state, a second method (eq. 10): agree to 1e-10; drift NaN when the
+    search is cut short, never 0."""
+    law = sa.FrictionLaw(1.2, 1.0)
+    s = sa.planar_steady_state(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                               law=law, step=1e-3)
+    assert s.converged and not s.level_changed and s.method == sa.Method.exact
+    one_d = sa.steady_state(PROFILE, law)
+    assert abs(s.drift_x - one_d.v_bar) <= 1e-10
+    assert abs(s.twist_0s.ux - one_d.x_dot_0s) <= 1e-10
+    assert s.drift_y == 0.0
+    cut = sa.planar_steady_state(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                                 law=law, step=1e-3, max_periods=1)
+    assert not cut.converged and math.isnan(cut.drift_x)
+    with pytest.raises(sa.InvalidParameter, match="max_periods"):
+        sa.planar_steady_state(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
+                               step=1e-3, max_periods=0)

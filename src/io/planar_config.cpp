@@ -284,12 +284,20 @@ PlanarSetup load_planar_config(const std::string& path) {
       },
       "field.");
   const Section run = section("run", {"step", "theta", "periods", "pose", "twist", "every",
-                                      "transient", "window"});
+                                      "transient", "window", "steady_periods", "tolerance"});
   st.problem.options.step = u.time(run.required("step"));
   st.problem.options.theta = run.number("theta", 0.5);
   st.periods = run.integer("periods", 10, 1, 1000000);
-  st.transient = run.integer("transient", 50, 0, 100000);
+  st.transient = run.integer("transient", 0, 0, 100000);
+  // Before issue 21 `planar steady` averaged over two windows of `window` periods; it now
+  // finds the fixed point of the period map. The key is still read (and checked) so that
+  // older configs run; the CLI says it is not used.
+  st.window_given = run.has("window");
   st.window = run.integer("window", 10, 1, 100000);
+  st.steady_periods = run.integer("steady_periods", 2000, 1, 1000000);
+  st.tolerance = run.number("tolerance", 0.0);
+  if (!(st.tolerance >= 0 && st.tolerance < 1))
+    throw InvalidParameter(run.key("tolerance"), st.tolerance, "must be in [0, 1) (0: the default)");
   st.every = run.integer("every", 1, 1, 1000000000);
   st.pose = pose_from(run.list("pose", {0, 0, 0}), "run.pose", u);
   const std::vector<double> tw = run.list("twist", {0, 0, 0});

@@ -28,11 +28,7 @@ struct LevelSink : PlanarStepSink {
   double lo = INFINITY, hi = -INFINITY;
   LevelSink(const PlanarField& f, const ContactPatch& p) : field(f), patch(p) {}
   void on_step(const PlanarRigidState& s) override {
-    const double c = std::cos(s.pose.angle), sn = std::sin(s.pose.angle);
-    double level = 0;
-    for (const ContactPoint& r : patch)
-      level += r.load * planar_level(field, s.pose.x + c * r.x - sn * r.y,
-                                     s.pose.y + sn * r.x + c * r.y);
+    const double level = level_under_patch(field, patch, s.pose);
     lo = std::min(lo, level);
     hi = std::max(hi, level);
     if (census) census->on_step(s);
@@ -52,6 +48,15 @@ void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
 }
 
 }  // namespace
+
+double level_under_patch(const PlanarField& field, const ContactPatch& patch,
+                         const PlanarPose& pose) {
+  const double c = std::cos(pose.angle), sn = std::sin(pose.angle);
+  double level = 0;
+  for (const ContactPoint& r : patch)
+    level += r.load * planar_level(field, pose.x + c * r.x - sn * r.y, pose.y + sn * r.x + c * r.y);
+  return level;
+}
 
 void require_planar_steps(const char* name, double periods, const PlanarProblem& p) {
   const double steps = periods * static_cast<double>(steps_per_period(p));

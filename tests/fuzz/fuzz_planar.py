@@ -28,7 +28,7 @@ BASE = {
     "part": {"inertia": "0.01", "shape": '"rectangle"', "length": "0.2", "width": "0.1", "nx": "2", "ny": "2"},
     "friction": {"static": "1.2", "kinetic": "1.0"},
     "field": {"type": '"circle"', "centre": "[0.3, 0.0]", "radius": "0.2", "width": "0.05", "c_mu": "2.5"},
-    "run": {"step": "0.02", "periods": "3", "every": "5", "transient": "2", "window": "1",
+    "run": {"step": "0.02", "periods": "3", "every": "5", "transient": "2", "steady_periods": "3",
             "pose": "[0.0, 0.0, 0.0]", "twist": "[0.1, 0.0, 0.5]"},
     "field_map": {"x": "[0.0, 0.2]", "y": "[0.0]", "angles": "[0.0]", "periods": "1"},
     "stop": {"entries": "[[0.0, 0.0, 0.0]]", "max_periods": "20"},

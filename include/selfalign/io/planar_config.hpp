@@ -29,7 +29,12 @@ struct PlanarSetup {
   // [run]
   PlanarPose pose;
   PlanarTwist twist;
-  int periods = 10, transient = 50, window = 10, every = 1;
+  int periods = 10, every = 1;
+  int transient = 0;          ///< steady: periods before the fixed-point search
+  int steady_periods = 2000;  ///< steady: periods of the search at most
+  double tolerance = 0;       ///< steady: PlanarSteadyStateOptions::tolerance (0: default)
+  int window = 10;            ///< no longer used (the window average before issue 21)
+  bool window_given = false;
   // [field_map]
   std::vector<double> grid_x{0.0}, grid_y{0.0}, grid_angles{0.0};
   int field_periods = 1;

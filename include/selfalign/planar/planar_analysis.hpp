@@ -35,6 +35,11 @@ long long steps_per_period(const PlanarProblem& problem);
 /// time-stepping cap of simulate.hpp (kMaxTimeSteps = 1e9 steps).
 void require_planar_steps(const char* name, double periods, const PlanarProblem& problem);
 
+/// The mean friction level under the patch at `pose`: the load-weighted field level at the
+/// contact points [-] (the planar counterpart of eq. 7's average over the footprint).
+double level_under_patch(const PlanarField& field, const ContactPatch& patch,
+                         const PlanarPose& pose);
+
 /// Steps of each kind.
 struct PlanarCensus {
   long long stick = 0, pivot = 0, slip = 0;
