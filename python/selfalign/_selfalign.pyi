@@ -818,6 +818,8 @@ def sweep_accelerations(
     progress: Progress = None,
     law: FrictionLaw = ...,
     jerk: float = ...,
+    executor: Optional[Any] = None,
+    chunk_size: Optional[int] = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
 class ProfileFamily:
@@ -868,6 +870,8 @@ def sweep_period(
     threads: int = 0,
     progress: Progress = None,
     law: FrictionLaw = ...,
+    executor: Optional[Any] = None,
+    chunk_size: Optional[int] = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 def sweep_stroke(
     family: ProfileFamily,
@@ -878,6 +882,8 @@ def sweep_stroke(
     threads: int = 0,
     progress: Progress = None,
     law: FrictionLaw = ...,
+    executor: Optional[Any] = None,
+    chunk_size: Optional[int] = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
 # ---- stick positions and stopping runs -------------------------------------------------------
@@ -1037,6 +1043,8 @@ def positioning_surfaces(
     options: PositioningOptions = ...,
     threads: int = 0,
     progress: Progress = None,
+    executor: Optional[Any] = None,
+    chunk_size: Optional[int] = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 
 # ---- design ----------------------------------------------------------------------------------

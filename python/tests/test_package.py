@@ -5,6 +5,7 @@ import enum
 import inspect
 import pathlib
 import pickle
+import re
 
 import numpy as np
 
@@ -126,3 +127,71 @@ def test_option_reprs_evaluate_back_to_equal_options():
         again = eval(repr(obj), namespace)
         assert type(again) is type(obj)
         assert repr(again) == repr(obj)
+
+
+def _stub_function_signatures():
+    """name -> set of parameter-name tuples (one per overload) declared in the stub; '*'
+    marks the start of keyword-only parameters."""
+    tree = ast.parse((PACKAGE_DIR / "_selfalign.pyi").read_text())
+    out = {}
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef):
+            a = node.args
+            names = tuple(x.arg for x in a.posonlyargs + a.args)
+            if a.kwonlyargs:
+                names += ("*",) + tuple(x.arg for x in a.kwonlyargs)
+            out.setdefault(node.name, set()).add(names)
+    return out
+
+
+def _built_signatures(name):
+    """The parameter names of every overload of a function of the built module, read off the
+    signature lines pybind11 writes at the top of its docstring (or, for the functions the
+    package wraps in Python, the wrapper's own signature)."""
+    fn = getattr(_selfalign, name)
+    out = set()
+    for line in (fn.__doc__ or "").splitlines():
+        m = re.match(r"^(?:\d+\. )?" + re.escape(name) + r"\((.*)\) ->", line)
+        if not m:
+            continue
+        params, depth, current = [], 0, ""
+        for ch in m.group(1):
+            depth += ch in "([{"
+            depth -= ch in ")]}"
+            if ch == "," and depth == 0:
+                params.append(current.strip())
+                current = ""
+            else:
+                current += ch
+        if current.strip():
+            params.append(current.strip())
+        out.add(tuple(p.split(":")[0].split("=")[0].strip() for p in params))
+    return out
+
+
+def test_stub_signatures_match_the_built_module():
+    """Issue 21: the stub is checked signature by signature against the built module (the
+    parameter names, their order, keyword-only markers and every overload), not only by name."""
+    stub = _stub_function_signatures()
+    checked = 0
+    for name in sorted(public_names(_selfalign)):
+        fn = getattr(_selfalign, name)
+        if isinstance(fn, type) or not callable(fn):
+            continue
+        built = _built_signatures(name)
+        assert built, f"{name}: no signature in its docstring"
+        wrapper = getattr(sa, name)
+        if hasattr(wrapper, "__wrapped__"):
+            # A Python wrapper (executor=, chunk_size=) passes **kwargs on to the extension:
+            # the stub is the extension's signature with the wrapper's own keywords added.
+            own = [p.name for p in inspect.signature(wrapper, follow_wrapped=False)
+                   .parameters.values() if p.kind is not p.VAR_KEYWORD]
+            (declared,) = stub[name]
+            (extension,) = built
+            assert set(own) <= set(declared), f"{name}: {own} not all in the stub"
+            assert [n for n in declared if n not in own] == \
+                [n for n in extension if n not in own], f"{name}: {declared} vs {extension}"
+        else:
+            assert built == stub.get(name), f"{name}: built {built} != stub {stub.get(name)}"
+        checked += 1
+    assert checked > 50
