@@ -1,0 +1,44 @@
+#pragma once
+/// \file state.hpp
+/// The contact core's state (issue 21, first slice): everything that changes, sized from the
+/// model (MuJoCo's mjData): time, the table's pose, per body its pose, twist, contact mode,
+/// solver warm start and work counters, and a status that the step sets instead of throwing
+/// inside its loop.
+
+#include <span>
+#include <vector>
+
+#include "selfalign/core/model.hpp"
+#include "selfalign/planar/patch_impulse.hpp"
+
+namespace selfalign::core {
+
+/// How the last step ended: ok, or a body's state left the finite numbers (the run stops
+/// there; the body is `failed_body`).
+enum class StepStatus { ok, non_finite };
+
+struct BodyState {
+  PlanarPose pose;                    ///< on the table [-], [rad]
+  PlanarTwist twist;                  ///< relative to the table, table axes [-]
+  PatchMode mode = PatchMode::stick;  ///< how the last step ended
+  int pivot = -1;                     ///< the pivot contact (mode pivot)
+  long long sweeps = 0, newton_steps = 0;  ///< impulse-solver work so far
+  PatchImpulseSolver solver;          ///< warm start of the impulse solver
+};
+
+struct State {
+  double t0 = 0, t = 0;          ///< step times are t0 + k h
+  long long step_index = 0;
+  PlanarTablePose table;         ///< the table at t
+  std::vector<BodyState> bodies; ///< one per model body
+  StepStatus status = StepStatus::ok;
+  int failed_body = -1;          ///< the body that left the finite numbers (non_finite)
+  std::vector<std::vector<PatchContact>> contacts;  ///< workspace, one per body (no allocation per step)
+};
+
+/// The state at time t with body i at poses[i] on the table and twists[i] relative to it
+/// (sizes: the model's body count, else InvalidParameter naming "poses" or "twists").
+State make_state(const Model& model, double t, std::span<const PlanarPose> poses,
+                 std::span<const PlanarTwist> twists);
+
+}  // namespace selfalign::core

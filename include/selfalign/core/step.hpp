@@ -1,0 +1,25 @@
+#pragma once
+/// \file step.hpp
+/// The contact core's one staged step (issue 21, first slice), Moreau's scheme of
+/// planar_rigid.hpp for N bodies on one table:
+///   kinematics   the table's pose and twist at t_{k+1}, once for every body
+///   per body     contacts (patch points at the midpoint pose, the field read on the table)
+///                -> normal loads (each point's load fraction; constant for now)
+///                -> friction impulse (PatchImpulseSolver: exact stick; the mass matrix is
+///                   block diagonal over bodies while bodies do not touch, so each block is
+///                   solved on its own)
+///                -> integrate
+///   checks       finiteness: a body whose state is no longer finite sets status non_finite
+///                and the run stops (no exception inside the loop)
+/// A body of an N-body model moves bit for bit as advance_planar_rigid moves it alone: both
+/// run the same body stages (src/planar/rigid_body_step.hpp).
+
+#include "selfalign/core/state.hpp"
+
+namespace selfalign::core {
+
+/// Advances up to `steps` steps (fewer when a check fails: see state.status). Returns the
+/// steps taken. Validates the model and that the state has one entry per body.
+long long step(const Model& model, State& state, long long steps);
+
+}  // namespace selfalign::core

@@ -1,0 +1,78 @@
+#pragma once
+// Internal: one Moreau step of one rigid body on the table, the stages after the table's
+// kinematics (planar_rigid.hpp for the scheme):
+//   contacts    the patch's points at the midpoint pose, their field level read on the table
+//   loads       each point's normal load: its load fraction (constant here; the stage the
+//               feeder issue's normal vibration changes)
+//   impulse     the friction impulse of the patch (PatchImpulseSolver, exact stick)
+//   integrate   pose and twist at t_{k+1}
+// Shared by advance_planar_rigid (one body) and the contact core's step (core/contact_step.hpp,
+// N bodies on one table), so that a body's step is the same arithmetic in both: a body of an
+// N-body model moves bit for bit as it does alone.
+
+#include <array>
+#include <cmath>
+#include <span>
+
+#include "selfalign/friction/friction_law.hpp"
+#include "selfalign/planar/patch_impulse.hpp"
+#include "selfalign/planar/planar_field.hpp"
+#include "selfalign/planar/planar_rigid.hpp"
+
+namespace selfalign::detail {
+
+// BodyState has pose, twist, mode, pivot, sweeps, newton_steps and solver as PlanarRigidState.
+// `tb` is the table at t_k, `tb1` at t_{k+1}; `contacts` a workspace of patch.size() entries.
+template <class BodyState>
+void rigid_body_step(const PlanarField& field, const FrictionLaw& law, const RigidPart& part,
+                     double h, double th, const PlanarTablePose& tb, const PlanarTablePose& tb1,
+                     BodyState& st, std::span<PatchContact> contacts) {
+  const double j = part.inertia;
+  const double s = law.static_coefficient(), k = law.kinetic_forward();
+  const std::size_t n = part.patch.size();
+  const PlanarTwist u = st.twist;
+  // the body's world twist at t_k (world_twist of planar_rigid.hpp)
+  const double c_t = std::cos(tb.angle), s_t = std::sin(tb.angle);
+  const double rx = c_t * st.pose.x - s_t * st.pose.y, ry = s_t * st.pose.x + c_t * st.pose.y;
+  const PlanarTwist v{tb.vx - tb.rate * ry + c_t * u.ux - s_t * u.uy,
+                      tb.vy + tb.rate * rx + s_t * u.ux + c_t * u.uy, tb.rate + u.omega};
+  // contacts: midpoint poses on the table, of the table, in the world
+  const double xi = st.pose.x + 0.5 * h * u.ux, eta = st.pose.y + 0.5 * h * u.uy;
+  const double phi = st.pose.angle + 0.5 * h * u.omega;
+  const double psi = tb.angle + 0.5 * h * tb.rate;
+  const double cp = std::cos(psi), sp = std::sin(psi);
+  const double xm = tb.x + 0.5 * h * tb.vx + cp * xi - sp * eta;
+  const double ym = tb.y + 0.5 * h * tb.vy + sp * xi + cp * eta;
+  const double cf = std::cos(phi), sf = std::sin(phi);
+  const double ca = std::cos(psi + phi), sa = std::sin(psi + phi);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ContactPoint& r = part.patch[i];
+    const double level = planar_level(field, xi + cf * r.x - sf * r.y, eta + sf * r.x + cf * r.y);
+    // loads: the point's load fraction of the (constant) normal load
+    contacts[i] = {ca * r.x - sa * r.y, sa * r.x + ca * r.y, h * s * level * r.load,
+                   h * k * level * r.load};
+  }
+  // impulse: the table's twist at t_{k+1} about X_M, the free relative twist
+  const double tvx = tb1.vx - tb1.rate * (ym - tb1.y), tvy = tb1.vy + tb1.rate * (xm - tb1.x);
+  const std::array<double, 3> rel{v.ux - tvx, v.uy - tvy, v.omega - tb1.rate};
+  // sliding on (the free relative twist keeps the previous one's direction): kinetic bounds
+  // for the stick test too, as the 1-D and point schemes
+  const double pvx = c_t * u.ux - s_t * u.uy, pvy = s_t * u.ux + c_t * u.uy;
+  const bool sliding_on = st.mode != PatchMode::stick &&
+                          rel[0] * pvx + rel[1] * pvy + j * rel[2] * u.omega > 0;
+  if (sliding_on)
+    for (std::size_t i = 0; i < n; ++i) contacts[i].stick_bound = contacts[i].slip_bound;
+  const PatchImpulseResult r = st.solver.solve(contacts.first(n), j, rel);
+  // integrate
+  const double c1 = std::cos(tb1.angle), s1 = std::sin(tb1.angle);
+  const PlanarTwist u1{c1 * r.twist[0] + s1 * r.twist[1], -s1 * r.twist[0] + c1 * r.twist[1],
+                       r.twist[2]};
+  st.pose.x += h * ((1 - th) * u.ux + th * u1.ux);
+  st.pose.y += h * ((1 - th) * u.uy + th * u1.uy);
+  st.pose.angle += h * ((1 - th) * u.omega + th * u1.omega);
+  st.twist = u1;
+  st.mode = r.mode, st.pivot = r.pivot;
+  st.sweeps += r.sweeps, st.newton_steps += r.newton_steps;
+}
+
+}  // namespace selfalign::detail
