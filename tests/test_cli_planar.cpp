@@ -31,8 +31,7 @@ stroke = 0.084
 a2 = 3.0
 a3 = 0.9
 [friction]
-static = 1.5
-kinetic = 1.0
+mu_static = 0.3
 [run]
 step = 0.01
 periods = 3
@@ -119,6 +118,27 @@ TEST(CliPlanar, SteadyAndFieldOnAUniformTableAreTheOneDimensionalSteadyState) {
     ASSERT_EQ(field.exit_code, 0) << field.err;
     EXPECT_NEAR(json::parse(field.out)["largest_drift"].get<double>(), j["drift_x"].get<double>(),
                 1e-12);
+  }
+}
+
+// One coefficient convention (issue 21, F07 of issue 20): [friction] mu_static is absolute, the
+// kinetic coefficient is [scales] mu, as --mu-static and --mu in the 1-D subcommands. The keys of
+// the relative convention before it are refused by name, never read as absolute values; a
+// static coefficient below the kinetic one names both.
+TEST(CliPlanar, FrictionTakesAbsoluteCoefficientsAndRefusesTheOldRelativeKeys) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"static = 1.5\nkinetic = 1.0\n", "friction.static"},
+      {"kinetic = 1.0\n", "friction.kinetic"},
+      {"mu_static = 0.1\n", "friction.mu_static"},  // below [scales] mu = 0.2 (the default)
+  };
+  for (const auto& [friction, name] : cases) {
+    CliSandbox box;
+    std::string text = kBase + kPart;
+    text.replace(text.find("mu_static = 0.3\n"), 16, friction);
+    const std::string cfg = write_config(box, "p.toml", text);
+    expect_clean_failure(box, box.run({"planar", "simulate", "--config", cfg, "--csv", "t.csv",
+                                       "--out", "r.json"}),
+                         {name});
   }
 }
 

@@ -1,6 +1,4 @@
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/analysis/positioning.hpp"
-#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +6,15 @@
 #include <memory>
 
 #include "parallel_cells.hpp"
+#include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
-#include "selfalign/analysis/period_map.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
+#include "selfalign/special_values.hpp"
 
 namespace selfalign {
 void validate(const PositioningOptions& o) {

@@ -1,6 +1,4 @@
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/analysis/sweep.hpp"
-#include "selfalign/special_values.hpp"
 
 #include <tbb/info.h>
 
@@ -11,7 +9,9 @@
 #include "parallel_cells.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/special_values.hpp"
 
 namespace selfalign {
 

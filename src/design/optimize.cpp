@@ -1,4 +1,3 @@
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/design/optimize.hpp"
 
 #include <cmath>
@@ -9,6 +8,7 @@
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 

@@ -1,6 +1,4 @@
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/design/process_design.hpp"
-#include "selfalign/special_values.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +12,8 @@
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
+#include "selfalign/special_values.hpp"
 #include "selfalign/units.hpp"
 
 namespace selfalign {

@@ -1,4 +1,3 @@
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/design/three_phase_design.hpp"
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 #include "selfalign/design/local_search.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 
 namespace selfalign {
 

@@ -1,5 +1,3 @@
-#include "selfalign/special_values.hpp"
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/io/planar_config.hpp"
 
 #include <cmath>
@@ -10,12 +8,15 @@
 #include <nlohmann/json.hpp>
 
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_law.hpp"
 #include "selfalign/io/document.hpp"
 #include "selfalign/io/simulate_config.hpp"  // Dimension, to_dimensionless
 #include "selfalign/io/spelling.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/special_values.hpp"
 
 namespace selfalign {
 namespace {
@@ -210,8 +211,7 @@ const SectionNames kPartNames{{"load_fractions", "part.loads"},
                               {"polygon vertex x", "part.xs"},
                               {"polygon vertex y", "part.ys"},
                               {"polygon", "part.xs, part.ys"}};
-const SectionNames kFrictionNames{{"mu_static", "friction.static"},
-                                  {"mu_kinetic", "friction.kinetic"}};
+const SectionNames kFrictionNames{{"mu_static", "friction.mu_static"}, {"mu", "scales.mu"}};
 const SectionNames kScalesNames{{"length_scale", "scales.length"}};
 const SectionNames kFieldNames{{"centre_x", "field.centre"}, {"centre_y", "field.centre"},
                                {"origin_x", "field.origin"}, {"origin_y", "field.origin"}};
@@ -267,11 +267,21 @@ PlanarSetup load_planar_config(const std::string& path) {
     throw InvalidParameter("part.inertia", inertia, "must be finite and > 0");
   st.problem.part.patch =
       with_user_names(kPartNames.names, [&] { return make_patch(part, u); }, "part.");
-  const Section fr = section("friction", {"static", "kinetic"});
-  const double kinetic = fr.number("kinetic", 1.0);
+  // One convention for coefficients everywhere (issue 21; docs/config.md "Friction law"):
+  // absolute coefficients, the kinetic one being the model's unit [scales] mu, as --mu in the
+  // 1-D subcommands. The keys of the relative convention before it are refused by name, never
+  // read as absolute values (a static = 1.2 would silently become mu_static = 1.2).
+  const Section fr = section("friction", {"mu_static", "static", "kinetic"});
+  for (const char* old : {"static", "kinetic"})
+    if (fr.has(old))
+      throw InvalidParameter(fr.key(old), format_number(fr.number(old, 0.0)),
+                             "[friction] takes absolute coefficients: give mu_static (static "
+                             "times [scales] mu); the kinetic coefficient is [scales] mu");
+  const std::optional<double> mu_static =
+      fr.has("mu_static") ? std::optional<double>(fr.number("mu_static", 0.0)) : std::nullopt;
   st.problem.law = with_user_names(
-      kFrictionNames.names, [&] { return FrictionLaw(fr.number("static", kinetic), kinetic); },
-      "friction.");
+      kFrictionNames.names,
+      [&] { return law_of_coefficients(st.scales.mu(), mu_static, std::nullopt); }, "");
   const Section field = section("field", {"type", "level", "origin", "centre", "angle", "width",
                                           "half_width", "half_length", "radius", "c_mu", "dx",
                                           "dy", "nx", "ny", "levels"});

@@ -1,15 +1,15 @@
-#include "selfalign/special_values.hpp"
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/io/simulate_model.hpp"
 
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_field.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/sampled.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
+#include "selfalign/special_values.hpp"
 
 namespace selfalign {
 namespace {

@@ -1,4 +1,3 @@
-#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/robust/process_uncertainty.hpp"
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
+#include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/units.hpp"
 

@@ -26,7 +26,7 @@ BASE = {
     "table.y": {"profile": '"fourier"', "period": "0.5", "cos": "[0.01]", "sin": "[0.0]"},
     "table.rotation": {"profile": '"fourier"', "period": "1.0", "cos": "[0.02]", "sin": "[0.0]"},
     "part": {"inertia": "0.01", "shape": '"rectangle"', "length": "0.2", "width": "0.1", "nx": "2", "ny": "2"},
-    "friction": {"static": "1.2", "kinetic": "1.0"},
+    "friction": {"mu_static": "0.24"},
     "field": {"type": '"circle"', "centre": "[0.3, 0.0]", "radius": "0.2", "width": "0.05", "c_mu": "2.5"},
     "run": {"step": "0.02", "periods": "3", "every": "5", "transient": "2", "steady_periods": "3",
             "pose": "[0.0, 0.0, 0.0]", "twist": "[0.1, 0.0, 0.5]"},
