@@ -791,7 +791,9 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
       simulate_doc.c_str());
 
   static const std::string steady_doc = doc(R"doc(
-The steady drift of a part: from `pose` with `twist` at t = 0, runs `transient` table periods
+The window-average drift of a part (kept for comparison; the steady state is
+planar_steady_state(), the fixed point of the period map, which the CLI's `planar steady` uses):
+from `pose` with `twist` at t = 0, runs `transient` table periods
 ([0, 100000]), then two windows of `window` periods ([1, 100000]); returns a PlanarSteadyResult
 with the last window's mean drift velocity and spin relative to the table, its PlanarCensus, the
 change of the drift between the two windows, and the end pose. The step must divide the period
