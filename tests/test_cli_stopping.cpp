@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -338,6 +339,41 @@ const MisuseCase kMisuseCases[] = {
 
 INSTANTIATE_TEST_SUITE_P(Stopping, CliStoppingMisuse, ::testing::ValuesIn(kMisuseCases),
                          [](const auto& test) { return test.param.name; });
+
+// stop takes any friction field (issue 21): it ran on the default two-region table with the
+// --field-file it offered silently ignored. A field of steps, level 1 then 3 from x = 0.3,
+// averaged over the footprint w = 0.05 (eq. 7), is the two-region table (x_mu 0.3, c_mu 3):
+// its x_stick,min is eq. (41)'s x_mu + w (y2'' - 1)/(c_mu - 1) = 0.3325 for the default
+// y2'' = 2.3, and the run ends where `stop --x-mu 0.3 --c-mu 3` ends (at or beyond it).
+TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
+  CliSandbox box;
+  const std::string field = box.file("field.csv");
+  std::ofstream(field) << "0,1\n0.3,3\n";
+  const CliResult on_field = box.run({"stop", "--field-file", field, "--json"});
+  ASSERT_EQ(on_field.exit_code, 0) << on_field.err;
+  const json f = json::parse(on_field.out);
+  EXPECT_EQ(f["friction"]["kind"].get<std::string>(), "field");
+  EXPECT_NEAR(f["x_mu"].get<double>(), 0.3, kSameFormula);  // the rise of the level
+  EXPECT_TRUE(f["c_mu"].is_null());
+  const double eq41 = 0.3 + 0.05 * (2.3 - 1) / (3 - 1);
+  EXPECT_NEAR(f["x_stick_min"].get<double>(), eq41, kSameFormula);
+  EXPECT_GE(f["end_position"].get<double>(), eq41);  // it stops at or beyond x_stick,min
+  const CliResult two = box.run({"stop", "--x-mu", "0.3", "--c-mu", "3", "--json"});
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_NEAR(f["end_position"].get<double>(),
+              json::parse(two.out)["end_position"].get<double>(), 1e-9);
+  // accuracy and accumulation are written for the two-region table (eqs. 41, 59): a field is
+  // refused by name, not replaced; a field key beside another friction map is refused too.
+  expect_clean_failure(box, box.run({"accuracy", "--field-file", field}), {"friction"});
+  expect_clean_failure(box, box.run({"accumulation", "--field-file", field}), {"friction"});
+  expect_clean_failure(
+      box, box.run({"simulate", "--friction", "two-region", "--field-file", field, "--periods", "1"}),
+      {"field_file"});
+  // simulate with a field file alone runs on the field.
+  const CliResult sim = box.run({"simulate", "--field-file", field, "--periods", "1"});
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  EXPECT_EQ(json::parse(sim.out)["friction"]["kind"].get<std::string>(), "field");
+}
 
 #endif  // SELFALIGN_CLI_PATH
 

@@ -79,7 +79,7 @@ json accumulation_json(const SimulateModel& model, const StickPositionMap& map, 
   const OutputUnits u = model.output_units();
   const TwoRegionFriction& f = two_region(model);
   const double x_stick_min = stick_position_min(f, model.profile->peak_acceleration());
-  json j = stopping_context_json(model, f, true);
+  json j = stopping_context_json(model, true);
   j["fixed_point"] = u.length(map.fixed_point());           // eq. (60)
   j["x_stick_min"] = length_or_null(u, x_stick_min);       // eq. (41)
   j["fixed_point_minus_x_stick_min"] = length_or_null(u, map.fixed_point() - x_stick_min);
@@ -144,7 +144,7 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
   if (f.n < 1 || f.n > kMaxGridPoints) throw InvalidParameter("n", f.n, "must be in [1, 1e6]");
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
-  const SimulateModel model = stopping_model(config);
+  const SimulateModel model = stopping_model(config, "accumulation");
   // Eq. (59) is derived for the paper's law; a law from a config file is refused, not ignored
   // (D28: the report was byte-identical whatever the law keys said).
   if (!model.law.is_unit())

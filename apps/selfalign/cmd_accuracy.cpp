@@ -44,7 +44,7 @@ std::string entries_csv(const PositioningAccuracy& a, const OutputUnits& u) {
 
 json accuracy_json(const SimulateModel& model, const PositioningAccuracy& a, int max_periods) {
   const OutputUnits u = model.output_units();
-  json j = stopping_context_json(model, two_region(model), false);
+  json j = stopping_context_json(model, false);
   j["reaches"] = a.reaches;
   j["case"] = static_cast<int>(a.steady.motion_case);
   j["case_name"] = describe(a.steady.motion_case);
@@ -91,7 +91,7 @@ std::string accuracy_table(const json& j, UnitSystem units) {
 void run_accuracy(const ConfigFlags& flags, const AccuracyFlags& f) {
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
-  const SimulateModel model = stopping_model(config);
+  const SimulateModel model = stopping_model(config, "accuracy");
   const TwoRegionFriction& friction = two_region(model);
   PositioningOptions options;
   options.entries = f.entries;

@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "report.hpp"
+#include "selfalign/analysis/stick_position.hpp"
 #include "stopping_common.hpp"
 
 namespace selfalign::cli {
@@ -51,8 +52,7 @@ std::string phase_portrait_csv(const Trajectory& tr, const OutputUnits& u) {
 
 json stop_json(const SimulateModel& model, const StoppingOptions& o, const StoppingRun& r) {
   const OutputUnits u = model.output_units();
-  const TwoRegionFriction& f = two_region(model);
-  json j = stopping_context_json(model, f, true);
+  json j = stopping_context_json(model, true);
   const bool stopped = r.kind != StopKind::not_stopped;
   j["stop"] = to_string(r.kind);
   j["accumulation_proven"] = r.kind == StopKind::accumulation && r.accumulation_proven;
@@ -66,12 +66,15 @@ json stop_json(const SimulateModel& model, const StoppingOptions& o, const Stopp
   j["stick_positions"] = json::array();
   for (double x : r.stick_positions) j["stick_positions"].push_back(u.length(x));
   j["fractions"] = json::array();
+  // Where stopping_run measures the fractions from: x_mu, or the rise of a field's level.
+  const TwoRegionFriction* two = model.friction->two_region();
+  const double x_mu = two ? two->x_mu() : friction_rise(*model.friction->piecewise_affine());
   for (std::size_t k = 0; k < o.fractions.size(); ++k) {
     const double p = o.fractions[k];
     const int periods = r.periods_to_fraction[k];
     j["fractions"].push_back(
         {{"p", p},
-         {"position", length_or_null(u, f.x_mu() + p * (r.x_stick_min - f.x_mu()))},
+         {"position", length_or_null(u, x_mu + p * (r.x_stick_min - x_mu))},
          {"time", number_or_null(u.time(r.time_to_fraction[k]))},
          {"periods_from_entry", periods < 0 ? json(nullptr) : json(periods)}});
   }
@@ -111,8 +114,8 @@ std::string stop_table(const json& j, UnitSystem units) {
 void run_stop(const ConfigFlags& flags, const StopFlags& f) {
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
-  const SimulateModel model = stopping_model(config);
-  const TwoRegionFriction& friction = two_region(model);
+  const SimulateModel model = stopping_model(config, "stop", true);
+  const FrictionMap& friction = *model.friction;  // two-region, or the config's field
   StoppingOptions options;
   options.max_periods = f.max_periods;
   options.fractions = f.fractions;
@@ -136,7 +139,8 @@ void run_stop(const ConfigFlags& flags, const StopFlags& f) {
 void add_stop_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "stop",
-      "One stopping run on the two-region table (Sect. 7): from (t0, x0, v0) until the object "
+      "One stopping run on the two-region table, or on a friction field given by --field-file "
+      "(its rise stands for x_mu) (Sect. 7): from (t0, x0, v0) until the object "
       "sticks for good (eq. 40) or its stick positions provably accumulate at x_stick,min "
       "(eqs. 41, 59, 60); times to reach x_mu + p (x_stick,min - x_mu) for good. --out: the "
       "trajectory CSV t,x,x_dot,stick (Fig. 16). Needs a piecewise-constant table "
@@ -163,3 +167,4 @@ void add_stop_command(CLI::App& app) {
 }
 
 }  // namespace selfalign::cli
+

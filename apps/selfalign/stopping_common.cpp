@@ -3,6 +3,9 @@
 #include <string_view>
 
 #include "report.hpp"
+#include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/friction/friction_field.hpp"
+#include "selfalign/io/summary_json.hpp"
 
 namespace selfalign::cli {
 
@@ -22,11 +25,21 @@ void add_max_periods_option(CLI::App& command, int& max_periods) {
       ->group("Solver");
 }
 
-SimulateModel stopping_model(const SimulateConfig& config) {
-  SimulateConfig two_region = config;
-  two_region.friction = "two-region";
-  two_region.method = "exact";
-  return build_simulate_model(two_region);
+SimulateModel stopping_model(const SimulateConfig& config, const std::string& command,
+                             bool field_allowed) {
+  SimulateConfig c = config;
+  const bool field = config.friction ? *config.friction == "field" : config.field_file.has_value();
+  if (field && !field_allowed)
+    throw InvalidParameter("friction", "field",
+                           command + " needs the two-region table (eqs. 41, 59: --x-mu, --width, "
+                                     "--c-mu); `stop` takes a field");
+  if (config.friction && *config.friction == "uniform")
+    throw InvalidParameter("friction", "uniform",
+                           command + " needs a rise of friction: two-region" +
+                               (field_allowed ? " or field" : ""));
+  if (!field) c.friction = "two-region";
+  c.method = "exact";
+  return build_simulate_model(c);
 }
 
 const TwoRegionFriction& two_region(const SimulateModel& model) {
@@ -36,15 +49,25 @@ const TwoRegionFriction& two_region(const SimulateModel& model) {
   return *two;
 }
 
-nlohmann::json stopping_context_json(const SimulateModel& model, const TwoRegionFriction& f,
-                                     bool with_x_mu) {
+nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu) {
   const OutputUnits u = model.output_units();
   nlohmann::json j;
   j["units"] = to_string(model.units);
   j["profile"] = model.profile->kind();
-  if (with_x_mu) j["x_mu"] = u.length(f.x_mu());
-  j["width"] = u.length(f.width());
-  j["c_mu"] = f.c_mu();
+  if (const TwoRegionFriction* f = model.friction->two_region()) {
+    if (with_x_mu) j["x_mu"] = u.length(f->x_mu());
+    j["width"] = u.length(f->width());
+    j["c_mu"] = f->c_mu();
+    return j;
+  }
+  // A field: the rise of its level stands for x_mu (stopping.hpp), no single c_mu.
+  const PiecewiseAffineFriction* pieces = model.friction->piecewise_affine();
+  if (with_x_mu) j["x_mu"] = pieces ? length_or_null(u, friction_rise(*pieces)) : nullptr;
+  const FieldFriction* field = model.friction->field_friction();
+  const auto* uniform = field ? std::get_if<UniformFootprint>(&field->footprint()) : nullptr;
+  j["width"] = uniform ? nlohmann::json(u.length(uniform->width)) : nlohmann::json(nullptr);
+  j["c_mu"] = nullptr;
+  j["friction"] = friction_json(*model.friction, u);
   return j;
 }
 

@@ -25,18 +25,25 @@ std::shared_ptr<ConfigFlags> add_stopping_config_flags(CLI::App& command,
 /// Adds --max-periods (StoppingOptions::max_periods, >= 1) with its default.
 void add_max_periods_option(CLI::App& command, int& max_periods);
 
-/// The run's model on the two-region table (friction = two-region, method = exact, whatever the
-/// config says), validated by build_simulate_model: x_mu, width, c_mu, t0, x0, v0 and
-/// output_step in [-], errors restated in SI for SI runs; a case-0 request is an error.
-SimulateModel stopping_model(const SimulateConfig& config);
+/// The run's model on the two-region table, or on the config's friction field where the
+/// command takes one (`field_allowed`: stop) and the config names it (friction = field, or a
+/// field_file, which implies it); method exact. A field given to a command without
+/// `field_allowed` (accuracy, accumulation: eqs. 41 and 59 are written for the two-region
+/// table) and friction = uniform (no rise: nothing stops) are refused naming "friction", never
+/// replaced by the default table. Validated by build_simulate_model: x_mu, width, c_mu, t0, x0,
+/// v0 and output_step in [-], errors restated in SI for SI runs; a case-0 request is an error.
+SimulateModel stopping_model(const SimulateConfig& config, const std::string& command,
+                             bool field_allowed = false);
 
-/// The model's friction map, which stopping_model made two-region.
+/// The model's friction map, which stopping_model made two-region (commands without a field).
 const TwoRegionFriction& two_region(const SimulateModel& model);
 
 /// The unit system and the table's friction parameters of a report: "units", "profile",
 /// "x_mu" (omitted when `with_x_mu` is false), "width", "c_mu"; lengths in the run's units.
-nlohmann::json stopping_context_json(const SimulateModel& model, const TwoRegionFriction& f,
-                                     bool with_x_mu);
+/// On a field: "x_mu" is the rise of its level (friction_rise: where stopping_run measures
+/// from), "width" the footprint's (null for a point), "c_mu" null, and "friction" the field's
+/// description (summary_json's friction_json).
+nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu);
 
 /// A position [-] in the run's units, or null when not finite (x_stick,min = +inf when the
 /// peak acceleration exceeds c_mu; NaN where there is none).

@@ -182,8 +182,17 @@ void require_moderate_numbers(const SimulateConfig& c) {
 }
 }  // namespace
 
-SimulateConfig resolve_simulate_config(const SimulateConfig& config) {
-  require_moderate_numbers(config);
+SimulateConfig resolve_simulate_config(const SimulateConfig& in) {
+  require_moderate_numbers(in);
+  // field_file belongs to friction = field: alone it implies it; with another friction map
+  // named it would be ignored, so it is refused (issue 21: `stop --field-file` ran on the
+  // default two-region table without a word).
+  SimulateConfig config = in;
+  if (config.field_file && !config.friction) config.friction = "field";
+  if (config.friction && *config.friction != "field" && config.field_file)
+    throw InvalidParameter("field_file", *config.field_file,
+                           "belongs to friction = field, but friction = " + *config.friction +
+                               ": give friction = field or drop field_file");
   const SimulateConfig defaults = simulate_config_defaults();
   const SimulateConfig given = merge(defaults, config);  // dimensionless defaults under config
   if (parse_unit_system(*given.units) == UnitSystem::dimensionless) return given;

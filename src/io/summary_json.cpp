@@ -48,24 +48,6 @@ json profile_json(const TableProfile& p, const OutputUnits& u) {
   return j;
 }
 
-json friction_json(const FrictionMap& f, const OutputUnits& u) {
-  if (const TwoRegionFriction* two = f.two_region())
-    return {{"kind", "two-region"},
-            {"x_mu", u.length(two->x_mu())},    // [-] | [m]
-            {"width", u.length(two->width())},  // [-] | [m]
-            {"c_mu", two->c_mu()}};             // [-]
-  if (const FieldFriction* field = f.field_friction()) {
-    const auto* uniform = std::get_if<UniformFootprint>(&field->footprint());
-    return {{"kind", "field"},
-            {"x_mu", nullptr},
-            {"width", uniform ? json(u.length(uniform->width)) : json(nullptr)},
-            {"c_mu", nullptr},
-            {"footprint", uniform ? "uniform" : "point"},
-            {"field_nodes", field->field().nodes().size()},
-            {"exact", field->piecewise_affine() != nullptr}};
-  }
-  return {{"kind", "uniform"}, {"x_mu", nullptr}, {"width", nullptr}, {"c_mu", nullptr}};
-}
 
 json state_json(const ObjectState& s, const OutputUnits& u) {
   return {{"t", u.time(s.t)}, {"x", u.length(s.x)}, {"x_dot", u.velocity(s.xd)}};
@@ -84,6 +66,25 @@ json scales_json(const SimulateModel& m) {
 }
 
 }  // namespace
+
+json friction_json(const FrictionMap& f, const OutputUnits& u) {
+  if (const TwoRegionFriction* two = f.two_region())
+    return {{"kind", "two-region"},
+            {"x_mu", u.length(two->x_mu())},    // [-] | [m]
+            {"width", u.length(two->width())},  // [-] | [m]
+            {"c_mu", two->c_mu()}};             // [-]
+  if (const FieldFriction* field = f.field_friction()) {
+    const auto* uniform = std::get_if<UniformFootprint>(&field->footprint());
+    return {{"kind", "field"},
+            {"x_mu", nullptr},
+            {"width", uniform ? json(u.length(uniform->width)) : json(nullptr)},
+            {"c_mu", nullptr},
+            {"footprint", uniform ? "uniform" : "point"},
+            {"field_nodes", field->field().nodes().size()},
+            {"exact", field->piecewise_affine() != nullptr}};
+  }
+  return {{"kind", "uniform"}, {"x_mu", nullptr}, {"width", nullptr}, {"c_mu", nullptr}};
+}
 
 json law_json(const FrictionLaw& law, const OutputUnits& u, double mu) {
   const bool stribeck = law.stribeck_velocity() > 0;

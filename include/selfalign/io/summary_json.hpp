@@ -26,6 +26,11 @@ nlohmann::json law_json(const FrictionLaw& law, const OutputUnits& units, double
 nlohmann::json integrator_json(Method method, const IntegratorOptions& options,
                                const IntegratorStatistics& statistics);
 
+/// The friction map as JSON: kind "two-region" (x_mu, width, c_mu), "field" (footprint, its
+/// width, the field's node count, whether the exact solver takes it) or "uniform"; lengths in
+/// the run's units.
+nlohmann::json friction_json(const FrictionMap& f, const OutputUnits& units);
+
 nlohmann::json simulate_summary_json(const SimulateModel& model, const SimulationResult& result,
                                      const std::optional<std::string>& trajectory_file);
 
