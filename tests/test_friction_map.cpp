@@ -64,4 +64,6 @@ TEST(FrictionCapabilities, EachMapAnswersForItselfOnly) {
   EXPECT_EQ(two.field_friction(), nullptr);
   EXPECT_EQ(uniform.two_region(), nullptr);
   EXPECT_EQ(uniform.field_friction(), nullptr);
+  EXPECT_EQ(uniform.uniform(), &uniform);
+  EXPECT_EQ(two.uniform(), nullptr);
 }

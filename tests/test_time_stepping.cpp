@@ -18,6 +18,7 @@
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/simulate.hpp"
+#include "opaque_profile.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 using namespace selfalign;
@@ -130,4 +131,23 @@ TEST(TimeStepping, WholeStepsEndTheRunExactly) {
   EXPECT_NEAR(r.trajectory.t.back(), 0.25 + 0.7, 1e-15);
   o.step = 0.35;  // a whole number of steps (2) keeps h
   EXPECT_EQ(simulate(profile, friction, {0.25, 0.0, 0.0}, o).work, 2u);
+}
+
+// The fast path of the common case (a piecewise-polynomial profile on a uniform level: the
+// velocity inlined, the level read once) is the general loop bit for bit: the same profile
+// hidden behind the tests' Opaque wrapper takes the general loop (virtual velocity, bound()).
+TEST(TimeStepping, TheUniformFastPathIsTheGeneralLoopBitForBit) {
+  const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
+  const testing_support::Opaque hidden(profile);
+  const UniformFriction friction(1.3);
+  for (const FrictionLaw& law : {FrictionLaw(1.2, 1.0, 0.8), FrictionLaw(1.2, 1.0).with_stribeck(0.05)}) {
+    TimeSteppingState fast = make_time_stepping_state(profile, {0.0, 0.1, 0.05});
+    TimeSteppingState general = make_time_stepping_state(hidden, {0.0, 0.1, 0.05});
+    advance_time_stepping(profile, friction, law, {1e-4, 0.5}, fast, 30000);
+    advance_time_stepping(hidden, friction, law, {1e-4, 0.5}, general, 30000);
+    EXPECT_EQ(fast.object.x, general.object.x);
+    EXPECT_EQ(fast.object.xd, general.object.xd);
+    EXPECT_EQ(fast.object.t, general.object.t);
+    EXPECT_NE(fast.object.x, 0.1);  // it moved
+  }
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -21,9 +22,14 @@ TimeSteppingState make_time_stepping_state(const TableProfile& profile, const Ob
   return s;
 }
 
-void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
-                           const FrictionLaw& law, const TimeSteppingOptions& o,
-                           TimeSteppingState& state, long long steps, StepSink* sink) {
+namespace {
+
+// Moreau's step (time_stepping.hpp) over `steps` steps, the table velocity and the friction
+// level read through `velocity` and `bound`: the same arithmetic whichever they are.
+template <class Velocity, class Bound>
+void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLaw& law,
+                  const TimeSteppingOptions& o, TimeSteppingState& state, long long steps,
+                  StepSink* sink) {
   const double h = o.step, theta = o.theta;
   const double s = law.static_coefficient(), kf = law.kinetic_forward(),
                kb = law.kinetic_backward();
@@ -33,9 +39,9 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
   for (long long i = 0; i < steps; ++i) {
     ++k;
     const double t = state.t0 + static_cast<double>(k) * h;
-    const double yd1 = profile.velocity(t);
+    const double yd1 = velocity(t);
     const double x_mid = x + 0.5 * h * v;
-    const double m = friction.bound(x_mid);
+    const double m = bound(x_mid);
     const double v_free = v - (yd1 - yd);  // velocity without friction
     // Largest friction impulses: static to hold or catch, kinetic while sliding on.
     const bool sliding_on = (v > 0 && v_free > 0) || (v < 0 && v_free < 0);
@@ -68,6 +74,26 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
   state.step_index = k;
   state.table_velocity = yd;
   state.stick = v == 0;
+}
+
+}  // namespace
+
+void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
+                           const FrictionLaw& law, const TimeSteppingOptions& o,
+                           TimeSteppingState& state, long long steps, StepSink* sink) {
+  // The common case of every sweep: a piecewise-polynomial profile on a uniform level. Its
+  // velocity is called without virtual dispatch (inlined) and the level read once; the
+  // numbers are the general loop's, bit for bit (the same functions, the same arithmetic).
+  const PiecewisePolynomialProfile* pp = profile.piecewise_polynomial();
+  const UniformFriction* uniform = friction.uniform();
+  if (pp && uniform) {
+    const double level = uniform->level();
+    moreau_steps([pp](double t) { return pp->PiecewisePolynomialProfile::velocity(t); },
+                 [level](double) { return level; }, law, o, state, steps, sink);
+    return;
+  }
+  moreau_steps([&profile](double t) { return profile.velocity(t); },
+               [&friction](double x) { return friction.bound(x); }, law, o, state, steps, sink);
 }
 
 }  // namespace selfalign

@@ -16,6 +16,7 @@ namespace selfalign {
 
 class TwoRegionFriction;
 class FieldFriction;
+class UniformFriction;
 
 /// One affine piece of a friction map: m(x) = bound_at_begin + slope (x - begin) for
 /// begin <= x < end. Positions [-], bound [-], slope [1/-].
@@ -66,6 +67,9 @@ class FrictionMap {
   /// The map as a friction field averaged over a footprint (friction_field.hpp), when it is
   /// one. nullptr otherwise. (Capability queries: no caller casts a friction map.)
   virtual const FieldFriction* field_friction() const { return nullptr; }
+  /// The map as one constant level, when it is one (UniformFriction): time-stepping then reads
+  /// it once instead of calling bound() every step. nullptr otherwise.
+  virtual const UniformFriction* uniform() const { return nullptr; }
 };
 
 /// Uniform Coulomb friction: m(x) = level (1 on the paper's low-friction table).
@@ -75,6 +79,7 @@ class UniformFriction final : public FrictionMap {
   explicit UniformFriction(double level = 1.0);
   double bound(double) const override { return level_; }
   const PiecewiseAffineFriction* piecewise_affine() const override { return &affine_; }
+  const UniformFriction* uniform() const override { return this; }
   double level() const noexcept { return level_; }
 
  private:
