@@ -67,8 +67,7 @@ json stop_json(const SimulateModel& model, const StoppingOptions& o, const Stopp
   for (double x : r.stick_positions) j["stick_positions"].push_back(u.length(x));
   j["fractions"] = json::array();
   // Where stopping_run measures the fractions from: x_mu, or the rise of a field's level.
-  const TwoRegionFriction* two = model.friction->two_region();
-  const double x_mu = two ? two->x_mu() : friction_rise(*model.friction->piecewise_affine());
+  const double x_mu = friction_rise(*model.friction);
   for (std::size_t k = 0; k < o.fractions.size(); ++k) {
     const double p = o.fractions[k];
     const int periods = r.periods_to_fraction[k];

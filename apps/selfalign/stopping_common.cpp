@@ -28,7 +28,8 @@ void add_max_periods_option(CLI::App& command, int& max_periods) {
 SimulateModel stopping_model(const SimulateConfig& config, const std::string& command,
                              bool field_allowed) {
   SimulateConfig c = config;
-  const bool field = config.friction ? *config.friction == "field" : config.field_file.has_value();
+  // friction as the config resolves it (a field_file alone implies field: simulate_config.cpp)
+  const bool field = *resolve_simulate_config(config).friction == "field";
   if (field && !field_allowed)
     throw InvalidParameter("friction", "field",
                            command + " needs the two-region table (eqs. 41, 59: --x-mu, --width, "
@@ -61,8 +62,7 @@ nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu)
     return j;
   }
   // A field: the rise of its level stands for x_mu (stopping.hpp), no single c_mu.
-  const PiecewiseAffineFriction* pieces = model.friction->piecewise_affine();
-  if (with_x_mu) j["x_mu"] = pieces ? length_or_null(u, friction_rise(*pieces)) : nullptr;
+  if (with_x_mu) j["x_mu"] = length_or_null(u, friction_rise(*model.friction));
   const FieldFriction* field = model.friction->field_friction();
   const auto* uniform = field ? std::get_if<UniformFootprint>(&field->footprint()) : nullptr;
   j["width"] = uniform ? nlohmann::json(u.length(uniform->width)) : nlohmann::json(nullptr);

@@ -23,6 +23,15 @@ bool sticks_permanently(const FrictionMap& friction, const FrictionLaw& law,
   return law.static_coefficient() * friction.bound(x) >= peak_acceleration;
 }
 
+double friction_rise(const FrictionMap& friction) {
+  if (const TwoRegionFriction* two = friction.two_region()) return two->x_mu();
+  const PiecewiseAffineFriction* pieces = friction.piecewise_affine();
+  if (!pieces)
+    throw InvalidParameter("friction", "not piecewise affine",
+                           "the rise of the level needs a piecewise-affine friction level");
+  return friction_rise(*pieces);
+}
+
 double friction_rise(const PiecewiseAffineFriction& f) {
   const auto pieces = f.pieces();
   for (const AffinePiece& p : pieces)

@@ -133,7 +133,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   // general forms (the rise of the level, s m(x) >= peak), and no accumulation proof.
   const TwoRegionFriction* two = friction.two_region();
   const bool paper = two && law.is_unit();
-  const double x_mu = two ? two->x_mu() : friction_rise(*pieces);
+  const double x_mu = friction_rise(friction);
   StoppingRun r;
   r.x_stick_min = paper ? stick_position_min(*two, peak) : stick_position_min(*pieces, law, peak);
   r.entry_time = kNaN;

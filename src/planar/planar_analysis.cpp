@@ -10,30 +10,13 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps
+#include "step_sinks.hpp"
 
 namespace selfalign {
 namespace {
 
-struct CensusSink : PlanarStepSink {
-  PlanarCensus census;
-  void on_step(const PlanarRigidState& s) override { census.add(s.mode); }
-};
-
-// The patch's mean friction level at each step's pose: the load-weighted field level under the
-// contact points, its least and largest value over the steps seen.
-struct LevelSink : PlanarStepSink {
-  const PlanarField& field;
-  const ContactPatch& patch;
-  CensusSink* census = nullptr;  // also counts the steps' modes when given
-  double lo = INFINITY, hi = -INFINITY;
-  LevelSink(const PlanarField& f, const ContactPatch& p) : field(f), patch(p) {}
-  void on_step(const PlanarRigidState& s) override {
-    const double level = level_under_patch(field, patch, s.pose);
-    lo = std::min(lo, level);
-    hi = std::max(hi, level);
-    if (census) census->on_step(s);
-  }
-};
+using detail::CensusSink;
+using detail::LevelSink;
 
 std::string compact(double v) {
   char text[32];

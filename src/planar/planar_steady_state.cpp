@@ -9,6 +9,7 @@
 #include "selfalign/error.hpp"
 #include "selfalign/planar/planar_exact_point.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "step_sinks.hpp"
 
 namespace selfalign {
 namespace {
@@ -36,20 +37,6 @@ struct PeriodResult {
   PlanarTwist twist;
   double level_min = 0, level_max = 0;
   PlanarCensus census;
-};
-
-struct StepLevels final : PlanarStepSink {
-  const PlanarField& field;
-  const ContactPatch& patch;
-  double lo = HUGE_VAL, hi = -HUGE_VAL;
-  PlanarCensus census;
-  StepLevels(const PlanarField& f, const ContactPatch& p) : field(f), patch(p) {}
-  void on_step(const PlanarRigidState& s) override {
-    const double level = level_under_patch(field, patch, s.pose);
-    lo = std::min(lo, level);
-    hi = std::max(hi, level);
-    census.add(s.mode);
-  }
 };
 
 }  // namespace
@@ -89,20 +76,21 @@ PlanarSteadyState planar_steady_state(const PlanarProblem& p, const PlanarPose& 
       out.twist = {point.ux, point.uy, twist.omega};
       out.level_min = out.level_max = uniform->level;
     } else {
-      StepLevels levels(p.field, p.part.patch);
+      detail::LevelSink levels(p.field, p.part.patch);
+      detail::CensusSink census;
+      levels.census = &census;
       advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, rigid, steps, &levels);
       out.pose = rigid.pose;
       out.twist = rigid.twist;
       out.level_min = levels.lo;
       out.level_max = levels.hi;
-      out.census = levels.census;
+      out.census = census.census;
     }
     return out;
   };
 
   const double start_level = level_under_patch(p.field, p.part.patch, pose);
   r.level_min = r.level_max = start_level;
-  auto changed = [](double lo, double hi) { return hi - lo > 1e-9 * std::max(hi, 1e-300); };
   PlanarPose before = pose;
   PlanarTwist twist_before = twist;
   double dx0 = NAN, dy0 = NAN, da0 = NAN, e_prev = HUGE_VAL;
@@ -124,7 +112,7 @@ PlanarSteadyState planar_steady_state(const PlanarProblem& p, const PlanarPose& 
     const double scale = 1 + std::max({std::abs(period.twist.ux), std::abs(period.twist.uy),
                                        std::abs(period.twist.omega), std::abs(dx) / P,
                                        std::abs(dy) / P, std::abs(da) / P});
-    const bool level_held = !changed(period.level_min, period.level_max);
+    const bool level_held = !levels_differ(period.level_min, period.level_max);
     // z needs a previous period's displacement: the first period of the search gives none.
     if (n > o.transient_periods + 1 && level_held) {
       r.residual = e;
@@ -157,7 +145,7 @@ PlanarSteadyState planar_steady_state(const PlanarProblem& p, const PlanarPose& 
     twist_before = period.twist;
     dx0 = dx, dy0 = dy, da0 = da;
   }
-  r.level_changed = changed(r.level_min, r.level_max);
+  r.level_changed = levels_differ(r.level_min, r.level_max);
   return r;
 }
 

@@ -31,6 +31,9 @@ bool sticks_permanently(const FrictionMap& friction, const FrictionLaw& law,
 /// The general x_mu: the start of the first piece whose level differs from the level far
 /// behind (x -> -inf); +inf for a uniform level.
 double friction_rise(const PiecewiseAffineFriction& friction);
+/// Where a stopping run measures from: the two-region table's x_mu, else the rise of the
+/// piecewise-affine level (InvalidParameter naming "friction" for a map without pieces).
+double friction_rise(const FrictionMap& friction);
 /// The general eq. (41): the smallest x >= friction_rise from which s m(x') >= peak for every
 /// x' >= x (exact on the affine pieces); +inf when the level far ahead is too low.
 double stick_position_min(const PiecewiseAffineFriction& friction, const FrictionLaw& law,

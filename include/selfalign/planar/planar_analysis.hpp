@@ -7,6 +7,7 @@
 /// orientation error, over a set of entry poses. Every time is a whole number of table periods;
 /// absent values (a part that never stops) are NaN.
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -40,6 +41,11 @@ void require_planar_steps(const char* name, double periods, const PlanarProblem&
 double level_under_patch(const PlanarField& field, const ContactPatch& patch,
                          const PlanarPose& pose);
 
+/// Whether a level under the patch that ranged over [lo, hi] changed: by more than 1e-9 of it.
+inline bool levels_differ(double lo, double hi) noexcept {
+  return hi - lo > 1e-9 * std::max(hi, 1e-300);
+}
+
 /// Steps of each kind.
 struct PlanarCensus {
   long long stick = 0, pivot = 0, slip = 0;
@@ -59,8 +65,8 @@ struct PlanarSteadyResult {
   /// way; apart when the part met a friction change while the drift was averaged, and then the
   /// drift and rotation rate are no steady state (level_changed()).
   double level_min = 0, level_max = 0;
-  /// Whether the level under the patch changed during the windows (by more than 1e-9 of it).
-  bool level_changed() const noexcept { return level_max - level_min > 1e-9 * level_max; }
+  /// Whether the level under the patch changed during the windows (levels_differ).
+  bool level_changed() const noexcept { return levels_differ(level_min, level_max); }
 };
 
 /// Runs `transient_periods` periods from (pose, twist) at t = 0, then two windows of
