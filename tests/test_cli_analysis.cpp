@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -282,6 +283,42 @@ TEST(CliConverge, SummaryToStdoutWithoutOut) {
   EXPECT_TRUE(s["csv_file"].is_null());
   EXPECT_EQ(s["v1"], 0.5);  // library defaults
   EXPECT_EQ(s["v2"], -0.5);
+}
+
+// converge under a Stribeck law ran the slip integrator at its default tolerances whatever
+// --relative-tolerance / --absolute-tolerance said (offered, then ignored). The loose run must
+// differ from the tight one, and by no more than its tolerance allows (largest |dv| <= 1e-2 at
+// rtol = atol = 1e-4 over 3 periods: the error grows at most linearly with the events, ~10).
+TEST(CliConverge, SlipIntegratorTolerancesAreUsed) {
+  CliSandbox box;
+  const std::vector<std::string> law = {"converge", "--mu-static", "0.36",
+                                        "--stribeck-velocity", "0.1", "--periods", "3"};
+  // v1 by sample time (the uniform samples; rows at the runs' own event times differ).
+  auto velocities = [&](const std::vector<std::string>& extra, const std::string& out) {
+    std::vector<std::string> args = law;
+    args.insert(args.end(), extra.begin(), extra.end());
+    args.insert(args.end(), {"--out", out});
+    const CliResult r = box.run(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    std::map<std::string, double> v;
+    const std::vector<std::string> rows = lines(read_text(box.work_file(out)));
+    for (std::size_t i = 1; i < rows.size(); ++i)
+      v[csv_text(rows[i], 0)] = std::stod(csv_text(rows[i], 1));
+    return v;
+  };
+  const auto tight = velocities({}, "tight.csv");
+  const auto loose =
+      velocities({"--relative-tolerance", "1e-4", "--absolute-tolerance", "1e-4"}, "loose.csv");
+  double largest = 0;
+  std::size_t common = 0;
+  for (const auto& [t, v] : tight)
+    if (const auto it = loose.find(t); it != loose.end()) {
+      ++common;
+      largest = std::max(largest, std::abs(v - it->second));
+    }
+  EXPECT_GE(common, 600u);  // 200 samples per period over 3 periods
+  EXPECT_GT(largest, 0.0) << "the tolerances changed nothing: ignored";
+  EXPECT_LE(largest, 1e-2);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -82,8 +82,8 @@ TEST(CliCompletion, BashZshAndManListEverySubcommandAndFlagOfHelp) {
   const auto r = box.run({"completion", "bash", "--out", script});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::vector<std::vector<std::string>> queries = {
-      {"des"}, {"sweep", "acc"}, {"planar", "st"}, {"steady", "--c-"},
-      {"steady", "--a2", "3", "--c-"},
+      {"des"}, {"sweep", "acc"}, {"planar", "st"}, {"simulate", "--c-"},
+      {"simulate", "--a2", "3", "--c-"},
       {"steady", "--config", ""}};  // after a FILE flag, files: the work folder holds none
   for (const std::string& command : kCommands) {
     queries.push_back(split(command));

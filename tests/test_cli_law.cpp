@@ -140,7 +140,7 @@ TEST(CliLaw, StribeckRunsReportTheIntegrator) {
   const std::vector<std::string> law = {"--mu-static", "0.39", "--stribeck-velocity", "0.01",
                                         "--viscous", "0.1", "--json"};
   for (const std::string command : {"steady", "floquet"}) {
-    std::vector<std::string> args{command, "--friction", "uniform"};
+    std::vector<std::string> args{command};
     args.insert(args.end(), law.begin(), law.end());
     const auto r = box.run(args);
     ASSERT_EQ(r.exit_code, 0) << r.err;

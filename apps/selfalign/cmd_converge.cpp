@@ -40,6 +40,7 @@ ConvergenceOptions convergence_options(const SimulateConfig& resolved, const Pro
   if (periods > 1e6) throw InvalidParameter("periods", periods, "must be in (0, 1e6] for converge");
   o.duration = periods * model.profile->period();
   o.samples_per_period = f.samples_per_period;
+  o.integrator = model.integrator;
   return o;
 }
 
@@ -105,11 +106,12 @@ void add_converge_command(CLI::App& app) {
       "V = (v1 - v2)^2/2 (eq. 35); CSV t,v1,v2,V (--out) and a JSON summary. Needs a "
       "piecewise-constant table acceleration.");
   auto flags = add_config_flags(
-      *sub,
-      {{"out", "CSV file of t,v1,v2,V (default: none written)"},
-       {"summary", "summary JSON file, - for stdout (default: <out without extension>"
-                   ".summary.json when out is given, else stdout)"},
-       {"v0", ""}});
+      *sub, without_uniform_table_keys(
+                {{"out", "CSV file of t,v1,v2,V (default: none written)"},
+                 {"summary", "summary JSON file, - for stdout (default: <out without extension>"
+                             ".summary.json when out is given, else stdout)"},
+                 {"v0", ""}},
+                {"t0", "periods"}));
   auto f = std::make_shared<ConvergeFlags>();
   const std::string unit = ". Unit: [-], SI [m/s]. Default: ";
   f->v1_option = sub->add_option("--v1", f->v1,

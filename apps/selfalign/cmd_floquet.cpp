@@ -122,8 +122,9 @@ void add_floquet_command(CLI::App& app) {
       "matrices and by finite differences. Needs a piecewise-constant table acceleration "
       "(three-phase, quadratic-sequence, samples with constant interpolation).");
   auto flags = add_config_flags(
-      *sub, {{"out", "write the JSON report to this file instead of printing (nothing printed)"},
-             {"summary", ""}});
+      *sub, without_uniform_table_keys(
+                {{"out", "write the JSON report to this file instead of printing (nothing printed)"},
+                 {"summary", ""}}));
   auto f = std::make_shared<FloquetFlags>();
   sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table)")
       ->group("Output");

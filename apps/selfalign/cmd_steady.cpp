@@ -134,10 +134,12 @@ void add_steady_command(CLI::App& app) {
       "Steady state on the uniform low-friction table (Sects. 4.3, 5.1): motion case (Table 1; "
       "a priori too for three-phase profiles), average velocity v_bar (eq. 10), objective f "
       "(eq. 11) and the steady initial velocity x'_0s. A non-physical three-phase request is "
-      "reported as case 0. Friction, initial-state and solver keys are ignored.");
+      "reported as case 0. Takes no friction-map, initial-state or time-stepping flags (a config "
+      "file may hold those keys; they are ignored).");
   auto flags = add_config_flags(
-      *sub, {{"out", "write the JSON report to this file instead of printing (nothing printed)"},
-             {"summary", ""}});
+      *sub, without_uniform_table_keys(
+                {{"out", "write the JSON report to this file instead of printing (nothing printed)"},
+                 {"summary", ""}}));
   auto as_json = std::make_shared<bool>(false);
   sub->add_flag("--json", *as_json, "print the report as JSON (default: a table)")
       ->group("Output");

@@ -96,7 +96,7 @@ void add_sweep_accelerations_command(CLI::App& sweep) {
       "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status; rows a2-major; a cell "
       "that cannot be computed has status failed (reason in the summary).");
   auto f = std::make_shared<AccelerationFlags>();
-  f->common = add_sweep_flags(*sub);
+  f->common = add_sweep_flags(*sub, {"a2", "a3"});
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->callback([f] { run_sweep_accelerations(*f); });
 }

@@ -116,7 +116,7 @@ void add_sweep_family_command(CLI::App& sweep, SweptParameter swept) {
                   "period (Fig. 5). CSV period,stroke,physical,case,v_bar,f,status.");
   auto f = std::make_shared<FamilyFlags>();
   f->swept = swept;
-  f->common = add_sweep_flags(*sub);
+  f->common = add_sweep_flags(*sub, {by_period ? std::string_view("period") : std::string_view("stroke")});
   sub->add_option("--range", f->range,
                   by_period ? "period grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [s]"
                             : "stroke grid LO:HI:N (N values, LO, HI > 0). Unit: [-], SI [m]")

@@ -122,7 +122,7 @@ void add_sweep_positioning_command(CLI::App& sweep) {
       "(eq. 39) from N steady-state entries per cell. CSV a2,a3,case,f,accumulates,dx_d,"
       "accumulating_entries,max_periods_p99,max_periods_p999; rows a2-major.");
   auto f = std::make_shared<PositioningFlags>();
-  f->common = add_sweep_flags(*sub);
+  f->common = add_sweep_flags(*sub, {"a2", "a3"}, {"width", "c_mu"});
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->add_option("--entries", f->entries,
                   "steady-state entries x_0s per cell, in [1, 1e5]. Default: " +

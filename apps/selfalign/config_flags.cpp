@@ -33,7 +33,31 @@ const KeyFlag* find_override(const std::vector<KeyFlag>& overrides, std::string_
   return nullptr;
 }
 
+template <class List>
+bool contains(const List& list, std::string_view x) {
+  for (std::string_view y : list)
+    if (y == x) return true;
+  return false;
+}
+
 }  // namespace
+
+std::vector<KeyFlag> without_groups(std::vector<KeyFlag> overrides,
+                                    std::initializer_list<std::string_view> groups,
+                                    const std::vector<std::string_view>& keep) {
+  for (const ConfigKey& k : simulate_config_keys())
+    if (contains(groups, k.group) && !contains(keep, k.name) && !find_override(overrides, k.name))
+      overrides.push_back({k.name, ""});
+  return overrides;
+}
+
+std::vector<KeyFlag> without_uniform_table_keys(std::vector<KeyFlag> overrides,
+                                                std::vector<std::string_view> keep) {
+  if (!contains(keep, "method") && !find_override(overrides, "method"))
+    overrides.push_back({"method", ""});
+  keep.insert(keep.end(), {"relative_tolerance", "absolute_tolerance"});
+  return without_groups(std::move(overrides), {"friction", "initial", "solver"}, keep);
+}
 
 std::shared_ptr<ConfigFlags> add_config_flags(CLI::App& command,
                                               const std::vector<KeyFlag>& overrides) {

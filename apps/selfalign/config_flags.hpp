@@ -3,6 +3,7 @@
 // --c-mu) plus --config FILE, shared by every subcommand that describes a table motion, so all
 // take the same flags. Flags override the file.
 
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -27,6 +28,21 @@ struct KeyFlag {
   std::string_view key;   ///< config key name, e.g. "out"
   std::string_view help;  ///< help text replacing the key table's; empty: no flag for this key
 };
+
+/// `overrides` plus a flag-less entry for every key of `groups` except those in `keep`: how a
+/// command that reads no friction map (steady, floquet, ...) leaves those flags out instead of
+/// offering flags it would ignore. Typing one is then an error that says the command does not
+/// use it (typo_hint); a --config file shared between commands may still hold the keys.
+std::vector<KeyFlag> without_groups(std::vector<KeyFlag> overrides,
+                                    std::initializer_list<std::string_view> groups,
+                                    const std::vector<std::string_view>& keep = {});
+
+/// `overrides` without the keys a steady-state analysis on the uniform table does not read:
+/// the friction map, the initial state, the solver choice and its time-stepping keys (the slip
+/// integrator's tolerances stay: Stribeck and viscous laws use them), except those in `keep`.
+/// Used by steady, floquet, converge and the sweeps.
+std::vector<KeyFlag> without_uniform_table_keys(std::vector<KeyFlag> overrides,
+                                                std::vector<std::string_view> keep = {});
 
 /// Adds --config and one flag per config key to `command`, in the key table's groups.
 /// `overrides` rewords or removes keys whose meaning differs for this command (a key without a

@@ -61,12 +61,18 @@ nlohmann::json case_counts(const std::vector<StickSlipCase>& cases) {
   return counts;
 }
 
-std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command) {
+std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command,
+                                            std::initializer_list<std::string_view> swept,
+                                            std::vector<std::string_view> keep) {
   auto flags = std::make_shared<SweepFlags>();
-  flags->config = add_config_flags(
-      command, {{"out", "CSV file of the results (default: standard output)"},
-                {"summary", "summary JSON file, - for stdout (default: <out without extension>"
-                            ".summary.json when out is given, else none)"}});
+  std::vector<KeyFlag> overrides = {
+      {"out", "CSV file of the results (default: standard output)"},
+      {"summary", "summary JSON file, - for stdout (default: <out without extension>"
+                  ".summary.json when out is given, else none)"}};
+  for (std::string_view key : swept) overrides.push_back({key, ""});
+  overrides = without_groups(std::move(overrides), {"profile"},
+                             {"period", "stroke", "a2", "a3", "jerk"});
+  flags->config = add_config_flags(command, without_uniform_table_keys(overrides, keep));
   command.add_option("--threads", flags->threads,
                      "worker threads, >= 0; 0: all cores (more are capped at the cores)")
       ->type_name("INT")

@@ -75,7 +75,12 @@ struct SweepFlags {
 };
 
 /// Adds the config-key flags (--out: the CSV) and --threads, --quiet, --log to `command`.
-std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command);
+/// Only the keys a sweep reads get a flag: the three-phase profile's (the sweeps always run
+/// three-phase profiles) except the `swept` ones, which the grid replaces, the law and the
+/// scales; `keep` adds keys a sweep reads beyond those (positioning: width, c_mu).
+std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command,
+                                            std::initializer_list<std::string_view> swept,
+                                            std::vector<std::string_view> keep = {});
 
 /// A (y2'', y3'') grid as given (the run's units) and in model units [-].
 struct AccelerationGrid {

@@ -3,6 +3,7 @@
 #include <string_view>
 #include <vector>
 
+#include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/spelling.hpp"
 
 namespace selfalign::cli {
@@ -40,6 +41,23 @@ std::vector<std::string> subcommand_names(CLI::App& app) {
   return names;
 }
 
+// "selfalign sweep accelerations": the command path of `app`.
+std::string command_path(const CLI::App* app) {
+  std::string path = app->get_name();
+  for (const CLI::App* up = app->get_parent(); up; up = up->get_parent())
+    path = up->get_name() + " " + path;
+  return path;
+}
+
+// The flag of the config key `name` names ("c_mu" and "c-mu" both name --c-mu), or "".
+std::string config_key_flag(std::string name) {
+  for (char& c : name)
+    if (c == '_') c = '-';
+  for (const ConfigKey& k : simulate_config_keys())
+    if (config_flag(k) == "--" + name) return "--" + name;
+  return {};
+}
+
 }  // namespace
 
 std::string typo_hint(CLI::App& app, int argc, const char* const* argv) {
@@ -54,6 +72,10 @@ std::string typo_hint(CLI::App& app, int argc, const char* const* argv) {
         if (name == r.flag)
           return "unknown flag --" + name + " (replaced by " + std::string(r.replacement) + ")";
       const std::string best = closest_name(name, flag_names(*at));
+      const std::string key_flag = config_key_flag(name);
+      if (!key_flag.empty() && !at->get_option_no_throw(key_flag))  // a key it does not read
+        return key_flag + " is not used by " + command_path(at) +
+               " (a --config file may hold the key; it is ignored there)";
       if (!best.empty()) return "unknown flag --" + name + " (did you mean --" + best + "?)";
     } else if (takes_subcommand && !word.empty() && word[0] != '-') {
       const std::string best = closest_name(word, subcommand_names(*at));

@@ -783,6 +783,7 @@ class ConvergenceOptions:
     t0: float
     duration: float
     samples_per_period: int
+    integrator: IntegratorOptions
     def __init__(
         self,
         *,
@@ -791,6 +792,7 @@ class ConvergenceOptions:
         t0: float = 0.0,
         duration: float = 10.0,
         samples_per_period: int = 200,
+        integrator: IntegratorOptions = ...,
     ) -> None: ...
     def to_dict(self) -> dict[str, Any]: ...
 

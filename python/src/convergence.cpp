@@ -83,24 +83,31 @@ float64 views: samples on a uniform grid plus every event of either trajectory.)
   using O = ConvergenceOptions;
   py::class_<O> options(m, "ConvergenceOptions", "Options of velocity_convergence().");
   options
-      .def(py::init([](double v1, double v2, double t0, double duration, int samples_per_period) {
-             return ConvergenceOptions{v1, v2, t0, duration, samples_per_period};
+      .def(py::init([](double v1, double v2, double t0, double duration, int samples_per_period,
+                       const IntegratorOptions& integrator) {
+             return ConvergenceOptions{v1, v2, t0, duration, samples_per_period, integrator};
            }),
            py::kw_only(), py::arg("v1") = d.v1, py::arg("v2") = d.v2, py::arg("t0") = d.t0,
-           py::arg("duration") = d.duration, py::arg("samples_per_period") = d.samples_per_period)
+           py::arg("duration") = d.duration, py::arg("samples_per_period") = d.samples_per_period,
+           py::arg("integrator") = d.integrator)
       .def_readwrite("v1", &ConvergenceOptions::v1, "initial velocity of trajectory 1 [-]")
       .def_readwrite("v2", &ConvergenceOptions::v2, "initial velocity of trajectory 2 [-]")
       .def_readwrite("t0", &ConvergenceOptions::t0, "common start time [-]")
       .def_readwrite("duration", &ConvergenceOptions::duration, "simulated time [-], > 0")
       .def_readwrite("samples_per_period", &ConvergenceOptions::samples_per_period,
                      "uniform samples per table period, >= 1")
+      .def_readwrite("integrator", &ConvergenceOptions::integrator,
+                     "IntegratorOptions: the slip integrator's tolerances (Stribeck, viscous "
+                     "laws)")
       .def("__repr__", [](const ConvergenceOptions& o) {
         return Repr("ConvergenceOptions")("v1", o.v1)("v2", o.v2)("t0", o.t0)(
                    "duration", o.duration)("samples_per_period", o.samples_per_period)
+            .raw("integrator", py::repr(py::cast(o.integrator)).cast<std::string>())
             .str();
       });
   def_record(options, field("v1", &O::v1), field("v2", &O::v2), field("t0", &O::t0),
-             field("duration", &O::duration), field("samples_per_period", &O::samples_per_period));
+             field("duration", &O::duration), field("samples_per_period", &O::samples_per_period),
+             field("integrator", &O::integrator));
 
   m.def("velocity_convergence",
         py::overload_cast<const TableProfile&, const ConvergenceOptions&>(&velocity_convergence), py::arg("profile"),

@@ -81,7 +81,7 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Fric
                            "gives more than 1e7 samples over the run (periods x "
                            "samples_per_period <= 1e7)");
 
-  const PeriodMap map(profile, law);
+  const PeriodMap map(profile, law, PeriodMapOptions{.integrator = o.integrator});
   const double t_end = o.t0 + o.duration;
   // Both responses need at least one arc: a run shorter than the rounding of t0 has none
   // (t0 = 1e-300 with duration 5e-324 read past an empty arc list; Python API fuzz, seed 8).

@@ -16,6 +16,7 @@
 #include "selfalign/profiles/table_profile.hpp"
 
 #include "selfalign/friction/friction_law.hpp"
+#include "selfalign/simulate/slip_integrator.hpp"
 
 namespace selfalign {
 
@@ -41,6 +42,7 @@ struct ConvergenceOptions {
   double duration = 10;          ///< simulated time [-], in [1e-9 Δt, 1e6 Δt]; |t0| <= 1e8 Δt
   int samples_per_period = 200;  ///< uniform samples per table period, in [1, 1e6]; at most
                                  ///< 1e7 samples over the run
+  IntegratorOptions integrator{};  ///< slip integrator's tolerances (Stribeck, viscous laws)
 };
 
 /// Runs both trajectories with the exact solver (the profile must be piecewise constant).

@@ -125,7 +125,7 @@ CORPUS = [
                                            "--field-interpolation", "cubic"],
      [_f("f.csv", repr(b"0,1\n1,2\n"))], ["f.csv"], False, ("refused", "field-interpolation")),
     ("subcommand typo", ["desing"], [], [], False, ("hint",)),
-    ("flag typo --c_mu", ["steady", "--c_mu", "2"], [], [], False, ("hint",)),
+    ("flag typo --c_mu", ["simulate", "--c_mu", "2"], [], [], False, ("hint",)),
     ("montecarlo nothing uncertain", MC_NO_UNCERTAIN, [], [], False, ("refused", "uncertain")),
     ("--mu-static without --mu (F07)", ["steady", "--mu-static", "0.36", "--json"], [], [], False,
      ("runs",)),

@@ -23,6 +23,11 @@ _FIELD = ["field-file", "field-interpolation", "footprint"]
 _SCALES = ["mu", "g", "length-scale", "mass"]
 _MODEL = (_PROFILE + ["method", "friction"] + _FIELD + ["x-mu", "width", "c-mu"] + LAW + _SCALES
           + ["t0", "x0", "v0", "periods", "step", "theta", "output-step"])
+# A steady state on the uniform table reads no friction map, initial state or time-stepping keys
+# (its flags are the profile, the law with the integrator's tolerances, the scales).
+_UNIFORM = _PROFILE + LAW + _SCALES
+# The sweeps always run three-phase profiles: no profile choice, and no flag for the swept values.
+_THREE_PHASE = ["config", "units", "period", "stroke", "a2", "a3", "jerk"] + LAW + _SCALES
 _SECT7 = _PROFILE + _FIELD + ["width", "c-mu"] + LAW + _SCALES
 _SWEEP = ["out", "summary", "threads", "quiet", "log"]
 _REQUEST = ["mass", "width", "mu", "c-mu", "g", "distance", "stroke-max", "frequency-min",
@@ -31,20 +36,21 @@ _REQUEST = ["mass", "width", "mu", "c-mu", "g", "distance", "stroke-max", "frequ
 
 FLAGS = {  # as `selfalign SUBCOMMAND --help` lists them (fuzz_cli.py checks it at start)
     "simulate": _MODEL + ["out", "summary"],
-    "steady": _MODEL + ["out", "json"],
-    "floquet": _MODEL + ["fd-step", "out", "json"],
-    "converge": [f for f in _MODEL if f != "v0"] + ["v1", "v2", "out", "summary",
-                                                    "samples-per-period"],
+    "steady": _UNIFORM + ["out", "json"],
+    "floquet": _UNIFORM + ["fd-step", "out", "json"],
+    "converge": _UNIFORM + ["t0", "periods", "v1", "v2", "out", "summary", "samples-per-period"],
     "stop": _SECT7 + ["x-mu", "t0", "x0", "v0", "output-step", "fractions", "max-periods", "out",
                       "summary", "json"],
     "accuracy": _SECT7 + ["out", "summary", "json", "entries", "max-periods"],
     # accumulation: eq. (59) is the paper's law's, so no law flags (issue 20, D28)
     "accumulation": [f for f in _SECT7 if f not in LAW] + ["x-mu", "out", "summary", "json", "x1",
                                                           "from", "to", "n"],
-    "sweep accelerations": _MODEL + _SWEEP + ["a2-range", "a3-range"],
-    "sweep period": _MODEL + _SWEEP + ["range", "family"],
-    "sweep stroke": _MODEL + _SWEEP + ["range", "family"],
-    "sweep positioning": _MODEL + _SWEEP + ["a2-range", "a3-range", "entries", "max-periods"],
+    "sweep accelerations": [f for f in _THREE_PHASE if f not in ("a2", "a3")] + _SWEEP
+    + ["a2-range", "a3-range"],
+    "sweep period": [f for f in _THREE_PHASE if f != "period"] + _SWEEP + ["range", "family"],
+    "sweep stroke": [f for f in _THREE_PHASE if f != "stroke"] + _SWEEP + ["range", "family"],
+    "sweep positioning": [f for f in _THREE_PHASE if f not in ("a2", "a3")] + _SWEEP
+    + ["width", "c-mu", "a2-range", "a3-range", "entries", "max-periods"],
     "optimize": ["family", "period", "stroke", "velocity-max", "acceleration-max", "jerk-max", "mu",
                  "mu-static", "mu-backward", "order", "segments", "starts", "max-evaluations",
                  "seed", "threads", "json", "quiet", "out"],
