@@ -1,5 +1,5 @@
 #pragma once
-// Every arc an exact solver delivers, in order (an ArcSink for the tests).
+// Every arc an exact solver delivers, in order (a MotionObserver for the tests).
 
 #include <vector>
 
@@ -7,9 +7,12 @@
 
 namespace selfalign::testing_support {
 
-struct ArcList final : ArcSink {
+struct ArcList final : MotionObserver {
   std::vector<Arc> arcs;
-  void on_arc(const Arc& a) override { arcs.push_back(a); }
+  void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
+    arcs.push_back(a);
+  }
 };
 
 }  // namespace selfalign::testing_support

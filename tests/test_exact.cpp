@@ -22,17 +22,21 @@ constexpr double kStateTol = 1e-13;
 constexpr double kEventRelTol = 1e-14;
 
 // Counts the closed-form arc kinds a run used.
-struct KindCount final : ArcSink {
+struct KindCount final : MotionObserver {
   int harmonic = 0, hyperbolic = 0;
-  void on_arc(const Arc& a) override {
+  void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
     harmonic += a.kind() == ArcKind::harmonic;
     hyperbolic += a.kind() == ArcKind::hyperbolic;
   }
 };
 
-struct Recorder final : ArcSink {
+struct Recorder final : MotionObserver {
   std::vector<Arc> arcs;
-  void on_arc(const Arc& a) override { arcs.push_back(a); }
+  void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
+    arcs.push_back(a);
+  }
 };
 
 ObjectState state_at(const ExactSetup& setup, ObjectState start, double t) {

@@ -187,10 +187,10 @@ namespace selfalign {
 namespace {
 
 // Counts arcs and stops a run that makes no progress (a Zeno loop at one instant).
-struct ArcBudget final : ArcSink {
+struct ArcBudget final : MotionObserver {
   long long arcs = 0, limit = 0;
   explicit ArcBudget(long long l) : limit(l) {}
-  void on_arc(const Arc&) override {
+  void on_motion(const MotionInterval&, const Arc*) override {
     if (++arcs > limit) throw std::runtime_error("arc budget exceeded: no progress");
   }
 };

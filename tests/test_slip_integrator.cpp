@@ -41,9 +41,9 @@ namespace {
 // velocity-dependent in form, so every solver path takes the integrator.
 FrictionLaw coulomb_through_integrator(double k) { return FrictionLaw(k, k).with_stribeck(1.0, 1.0); }
 
-struct IntervalList final : IntervalSink {
+struct IntervalList final : MotionObserver {
   std::vector<MotionInterval> intervals;
-  void on_interval(const MotionInterval& i) override { intervals.push_back(i); }
+  void on_motion(const MotionInterval& i, const Arc*) override { intervals.push_back(i); }
 };
 
 const ThreePhaseProfile& three_phase() {

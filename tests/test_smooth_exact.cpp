@@ -135,9 +135,10 @@ TEST(SmoothExact, OrderTwelveSteadyStateConvergesAndAgreesWithTimeStepping) {
 }
 
 namespace {
-struct AffineCount final : ArcSink {
+struct AffineCount final : MotionObserver {
   int harmonic = 0, hyperbolic = 0;
-  void on_arc(const Arc& a) override {
+  void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
     if (const auto* s = std::get_if<DrivenAffineArc>(&a.shape)) ++(s->kappa > 0 ? harmonic : hyperbolic);
   }
 };
@@ -239,9 +240,12 @@ TEST(SmoothExact, LongerStepsFindTheSameEventsAsSafeStepsAlone) {
     double jerk_bound() const override { return p.jerk_bound(); }
     double snap_bound() const override { return p.snap_bound(); }
   };
-  struct Count final : ArcSink {
+  struct Count final : MotionObserver {
     std::vector<Arc> arcs;
-    void on_arc(const Arc& a) override { arcs.push_back(a); }
+    void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
+    arcs.push_back(a);
+  }
   };
   std::vector<double> a, b;
   const ThreePhaseProfile three({0.072, 0.021, 1000, 80});

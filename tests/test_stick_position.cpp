@@ -13,9 +13,10 @@
 using namespace selfalign;
 
 namespace {
-struct StopPositions final : ArcSink {
+struct StopPositions final : MotionObserver {
   std::vector<double> x;
-  void on_arc(const Arc& a) override {
+  void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
     if (a.end == ArcEnd::velocity_zero) x.push_back(a.x1);
   }
 };

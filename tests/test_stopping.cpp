@@ -26,14 +26,15 @@ double brute_force_end(const ThreePhaseProfile& profile, const TwoRegionFriction
 }
 // Over the exact arcs, for each (time, target): the lowest x from that time on, and the first
 // time x reaches the target (arcs are monotone in x, so their ends bound them).
-struct LowestAfter final : ArcSink {
+struct LowestAfter final : MotionObserver {
   std::vector<double> from, targets, lowest, first_crossing;
   LowestAfter(std::vector<double> times, std::vector<double> xs)
       : from(std::move(times)),
         targets(std::move(xs)),
         lowest(from.size(), 1e300),
         first_crossing(from.size(), 1e300) {}
-  void on_arc(const Arc& a) override {
+  void on_motion(const MotionInterval&, const Arc* arc) override {
+    const Arc& a = *arc;
     for (std::size_t k = 0; k < from.size(); ++k) {
       if (a.t1 > from[k]) lowest[k] = std::min({lowest[k], a.t0 >= from[k] ? a.x0 : a.x1, a.x1});
       if (first_crossing[k] == 1e300 && std::max(a.x0, a.x1) >= targets[k])

@@ -538,6 +538,8 @@ class ArcEnd(enum.IntEnum):
     velocity_zero = 1
     friction_boundary = 2
     horizon = 3
+    stick_break = 4
+    time_step = 5
 
 class ExactState:
     object: ObjectState

@@ -62,11 +62,12 @@ double arc_center(const Arc& a) {
 }
 
 // Collects arcs column-wise.
-struct ArcColumns final : ArcSink {
+struct ArcColumns final : MotionObserver {
   std::vector<double> t0, t1, x0, xd0, x1, xd1, table_accel, bound0, slope, alpha, omega, center;
   std::vector<std::int8_t> kind, direction, end;
   std::vector<std::int64_t> segment, piece;
-  void on_arc(const Arc& a) override {
+  void on_motion(const MotionInterval&, const Arc* arc) override { add(*arc); }
+  void add(const Arc& a) {
     if (static_cast<double>(t0.size()) >= kMaxRecordedSamples)  // sized before it grows
       throw InvalidParameter("duration", a.t1,
                              "the run has more than 1e7 arcs to return: shorten duration");
@@ -116,11 +117,15 @@ What ended an arc (an enum.IntEnum).
   acceleration_switch = 0  the table acceleration changed (segment end)
   velocity_zero       = 1  x' reached 0 (the stick/slip decision follows)
   friction_boundary   = 2  x reached the end of a friction piece (e.g. x_mu or x_mu + w)
-  horizon             = 3  the requested end time)doc",
+  horizon             = 3  the requested end time
+  stick_break         = 4  |y''| reached the static bound s m(x) inside a segment (finite jerk)
+  time_step           = 5  one step of Moreau's time-stepping scheme ended)doc",
                         {{"acceleration_switch", ArcEnd::acceleration_switch},
                          {"velocity_zero", ArcEnd::velocity_zero},
                          {"friction_boundary", ArcEnd::friction_boundary},
-                         {"horizon", ArcEnd::horizon}});
+                         {"horizon", ArcEnd::horizon},
+                         {"stick_break", ArcEnd::stick_break},
+                         {"time_step", ArcEnd::time_step}});
 
   py::class_<ExactState> state(m, "ExactState",
                                "Mutable state of the exact solver: the object state plus where "
@@ -260,7 +265,7 @@ map. Raises InvalidParameter on bad options or steps outside [0, 1e9].)doc");
 // Every arc of `arcs` as the column dict of exact_arcs.
 py::dict arc_dict(const std::vector<Arc>& arcs) {
   ArcColumns columns;
-  for (const Arc& a : arcs) columns.on_arc(a);
+  for (const Arc& a : arcs) columns.add(a);
   return std::move(columns).to_dict();
 }
 

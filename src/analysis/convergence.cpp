@@ -11,11 +11,8 @@
 namespace selfalign {
 namespace {
 
-struct ResponseArcs final : ArcSink {
+struct ResponseArcs {
   std::vector<Arc> arcs;
-  void on_arc(const Arc& a) override {
-    if (a.t1 > a.t0) arcs.push_back(a);
-  }
   // The arc containing t (arcs are contiguous and sorted); t in [t0, t_end].
   const Arc& at(double t) const {
     auto it = std::upper_bound(arcs.begin(), arcs.end(), t,
@@ -29,11 +26,8 @@ int friction_class(const Arc& a) { return a.kind() == ArcKind::stick ? 0 : a.dir
 
 // One response under the slip integrator (speed-dependent laws): its stick and slip intervals,
 // contiguous and sorted, with their friction class (the interval's direction).
-struct IntervalList final : IntervalSink {
+struct IntervalList {
   std::vector<MotionInterval> intervals;
-  void on_interval(const MotionInterval& i) override {
-    if (i.t1 > i.t0) intervals.push_back(i);
-  }
   const MotionInterval& at(double t) const {
     auto it = std::upper_bound(intervals.begin(), intervals.end(), t,
                                [](double value, const MotionInterval& i) { return value < i.t1; });
@@ -45,10 +39,15 @@ struct IntervalList final : IntervalSink {
 // (closed form at any t), or the integrator's intervals (class) and a second run that stops at
 // every sample time (velocity; the integrator places its events the same way whatever the
 // stops, to its tolerance).
-struct Response {
+struct Response final : MotionObserver {
   ResponseArcs arcs;
   IntervalList intervals;
   std::vector<double> v;  // at the sample times (integrator)
+  void on_motion(const MotionInterval& piece, const Arc* arc) override {
+    if (piece.t1 <= piece.t0) return;
+    if (arc) arcs.arcs.push_back(*arc);
+    else intervals.intervals.push_back(piece);
+  }
   int friction_class_at(double t, bool exact) const {
     return exact ? friction_class(arcs.at(t)) : intervals.at(t).direction;
   }
@@ -96,8 +95,7 @@ VelocityConvergence velocity_convergence(const TableProfile& profile, const Fric
   Response r1, r2;
   for (auto [resp, v0] : {std::pair{&r1, o.v1}, std::pair{&r2, o.v2}}) {
     PeriodMap::Run run = map.start({o.t0, 0, v0});
-    if (exact) run.advance_to(t_end, &resp->arcs);
-    else run.advance_to(t_end, &resp->intervals, {});
+    run.advance_to(t_end, resp);
   }
 
   // Breakpoints: every arc (interval) boundary of either trajectory.

@@ -33,12 +33,16 @@ StickSlipCase predict_case(const ThreePhaseParameters& p) {
   return back_speed < T1 ? StickSlipCase::general_stick_slip : StickSlipCase::slip_slip;
 }
 
-void MotionCensus::on_arc(const Arc& a) {
+void MotionCensus::on_motion(const MotionInterval& a, const Arc*) {
   if (a.t1 <= a.t0) return;
+  if (a.end == ArcEnd::time_step) {
+    zero_steps_ = a.direction == 0 ? zero_steps_ + 1 : 0;
+    if (a.direction == 0 && zero_steps_ != 2) return;
+  }
   char c = 0;
-  if (a.kind() == ArcKind::stick) ++stick, c = '0';
+  if (a.direction == 0) ++stick, c = '0';
   else if (a.direction > 0) ++forward, c = '+';
-  else if (a.direction < 0) ++backward, c = '-';
+  else ++backward, c = '-';
   if (c && (sequence.empty() || sequence.back() != c)) sequence.push_back(c);
 }
 

@@ -9,50 +9,19 @@ namespace selfalign {
 
 namespace {
 
-struct ArcList final : ArcSink {
+struct ArcList final : MotionObserver {
   std::vector<Arc> arcs;
-  void on_arc(const Arc& a) override { arcs.push_back(a); }
+  void on_motion(const MotionInterval&, const Arc* arc) override { arcs.push_back(*arc); }
 };
 
-struct CensusSink final : ArcSink {
-  ArcSink* inner;
-  MotionCensus* census;
-  void on_arc(const Arc& a) override {
-    if (census) census->on_arc(a);
-    if (inner) inner->on_arc(a);
-  }
-};
-
-// Time-stepping census: a stick counts once x' = 0 holds for two consecutive steps: a slip
-// reversal can land one step on x' = 0 (|v*| <= h m while the velocity crosses zero), which is
-// not a stick of the response.
-struct SampleCensus final : StepSink {
-  MotionCensus* census;
-  int zero_run = 0;
-  void on_step(const TimeSteppingState& s) override {
-    const double v = s.object.xd;
-    zero_run = v == 0 ? zero_run + 1 : 0;
-    if (v != 0 || zero_run == 2) {
-      Arc a;
-      a.t0 = s.object.t;
-      a.t1 = s.object.t + 1;  // a class sample, not a timed arc
-      if (v != 0) a.shape = PolynomialArc{};
-      a.direction = static_cast<std::int8_t>(v > 0 ? 1 : v < 0 ? -1 : 0);
-      census->on_arc(a);
-    }
-  }
-};
-
-// The integrator's intervals as census samples (a class and a direction, no closed form).
-struct IntervalCensus final : IntervalSink {
-  MotionCensus* census;
-  void on_interval(const MotionInterval& i) override {
-    Arc a;
-    a.t0 = i.t0;
-    a.t1 = i.t1;
-    if (i.direction != 0) a.shape = PolynomialArc{};
-    a.direction = i.direction;
-    census->on_arc(a);
+// The census and the caller's observer, both fed every piece.
+struct Both final : MotionObserver {
+  MotionObserver* first;
+  MotionObserver* second;
+  Both(MotionObserver* a, MotionObserver* b) : first(a), second(b) {}
+  void on_motion(const MotionInterval& piece, const Arc* arc) override {
+    first->on_motion(piece, arc);
+    if (second) second->on_motion(piece, arc);
   }
 };
 
@@ -121,40 +90,17 @@ const ExactSetup& PeriodMap::exact_setup() const {
   return *exact;
 }
 
-ObjectState PeriodMap::operator()(double x0, double v0, ArcSink* sink,
+ObjectState PeriodMap::operator()(double x0, double v0, MotionObserver* observer,
                                   MotionCensus* census) const {
-  if (sink && !has_arcs())  // a sink would stay empty (D22, D27)
-    throw InvalidParameter("method", to_string(method()),
-                           "has no closed-form arcs: only the exact solvers deliver them");
-  const double P = profile_.period();
   StepperState state = make_state(stepper_, {0, x0, v0});
-  // The census listens to the arcs (closed forms), the intervals (integrator) or the steps
-  // (time-stepping); the map itself goes through the one advance().
-  if (census) {
-    if (const auto* integrator = std::get_if<IntegratorSetup>(&stepper_)) {
-      IntervalCensus intervals;
-      intervals.census = census;
-      IntegratorStatistics stats;
-      advance_integrated(*integrator, std::get<ObjectState>(state), P, &intervals, &stats);
-      add(stats);
-      return object_of(state);
-    }
-    if (const auto* ts = std::get_if<TimeSteppingSetup>(&stepper_)) {
-      SampleCensus samples;
-      samples.census = census;
-      advance_time_stepping(ts->profile, ts->friction, ts->law, ts->options,
-                            std::get<TimeSteppingState>(state), options_.steps_per_period,
-                            &samples);
-      return object_of(state);
-    }
-    CensusSink both;
-    both.inner = sink;
-    both.census = census;
-    advance(stepper_, state, P, &both);
-    return object_of(state);
-  }
   IntegratorStatistics stats;
-  advance(stepper_, state, P, sink, &stats);
+  if (census) {
+    census->begin_window();
+    Both both(census, observer);
+    advance(stepper_, state, profile_.period(), &both, &stats);
+  } else {
+    advance(stepper_, state, profile_.period(), observer, &stats);
+  }
   if (method() == Method::integrator) add(stats);
   return object_of(state);
 }
@@ -189,12 +135,20 @@ Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const FrictionLaw& law)
     }
     case ArcEnd::acceleration_switch:
     case ArcEnd::horizon:
+    case ArcEnd::time_step:  // (time steps have no arcs)
       break;
   }
   return s;
 }
 
-void SaltationProduct::on_arc(const Arc& a) {
+void SaltationProduct::on_motion(const MotionInterval&, const Arc* arc) {
+  if (!arc)
+    throw InvalidParameter("method", "not exact",
+                           "saltation matrices need the closed-form arcs of an exact solver");
+  add(*arc);
+}
+
+void SaltationProduct::add(const Arc& a) {
   if (count_ == 0) first_ = a;
   else product_ = saltation(last_, a, *law_) * product_;
   const Transition t = a.transition();
@@ -212,7 +166,7 @@ Eigen::Matrix2d SaltationProduct::finish(const Arc& next) const {
 Eigen::Matrix2d PeriodMap::saltation_monodromy(double x0, double v0) const {
   // The arc that follows the period's last one is the next period's first.
   SaltationProduct product(law_);
-  for (const Arc& a : arcs(x0, v0)) product.on_arc(a);
+  for (const Arc& a : arcs(x0, v0)) product.add(a);
   return product.finish_periodic();
 }
 
@@ -237,21 +191,10 @@ const ExactState& PeriodMap::Run::exact_state() const noexcept {
   return exact ? *exact : none;
 }
 
-const ObjectState& PeriodMap::Run::advance_to(double t_end, IntervalSink* sink,
+const ObjectState& PeriodMap::Run::advance_to(double t_end, MotionObserver* observer,
                                               std::span<const double> watch) {
-  const auto* integrator = std::get_if<IntegratorSetup>(&map_->stepper_);
-  if (!integrator)
-    throw InvalidParameter("method", to_string(map_->method()),
-                           "intervals and watched crossings come from the slip integrator only");
   IntegratorStatistics stats;
-  advance_integrated(*integrator, std::get<ObjectState>(state_), t_end, sink, &stats, watch);
-  map_->add(stats);
-  return state();
-}
-
-const ObjectState& PeriodMap::Run::advance_to(double t_end, ArcSink* sink) {
-  IntegratorStatistics stats;
-  advance(map_->stepper_, state_, t_end, sink, &stats);
+  advance(map_->stepper_, state_, t_end, observer, &stats, watch);
   if (map_->method() == Method::integrator) map_->add(stats);
   return state();
 }

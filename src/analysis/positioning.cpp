@@ -28,22 +28,13 @@ void validate(const PositioningOptions& o) {
 namespace {
 
 
-// Largest x over the arcs, or over the slip integrator's intervals (x is monotone on each:
-// both end at every velocity zero, so the ends suffice).
-struct MaxPosition final : ArcSink, IntervalSink {
-  double max_x = -std::numeric_limits<double>::infinity();
-  void on_arc(const Arc& a) override { max_x = std::max({max_x, a.x0, a.x1}); }
-  void on_interval(const MotionInterval& i) override { max_x = std::max({max_x, i.x0, i.x1}); }
-};
-
 // Δx of Sect. 7.1: the largest displacement in one period from x = 0, x' = v0 at phase 0, by
 // the exact solver's arcs or the slip integrator's intervals (D27: under a speed-dependent
 // law the arcs were asked of the integrator, which has none, and Δx came out as -inf).
 double largest_displacement(const PeriodMap& map, double v0) {
-  MaxPosition max_position;
-  if (map.has_arcs()) map(0, v0, &max_position);
-  else map.start({0, 0, v0}).advance_to(map.period(), &max_position, {});
-  return max_position.max_x;
+  Reach reach;
+  map(0, v0, &reach);
+  return reach.x;
 }
 
 }  // namespace

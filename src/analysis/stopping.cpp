@@ -30,7 +30,7 @@ namespace {
 // from which x stays at or beyond it (reset whenever an arc ends below it). It takes the exact
 // solver's arcs (crossings by bisection on their closed form) and the slip integrator's
 // intervals (crossings located by the integrator as events on its dense output: watch()).
-struct StopWatch final : ArcSink, IntervalSink {
+struct StopWatch final : MotionObserver {
   double x_mu;
   std::vector<double> targets;  // positions to time
   StoppingRun& run;
@@ -62,7 +62,7 @@ struct StopWatch final : ArcSink, IntervalSink {
   // One arc or interval from x0 to x1 (x monotone on it), ending at t1 with `end`; crossing(X)
   // is the first time at which x >= X on it, called only when x0 < X <= x1.
   template <class Crossing>
-  void on_motion(double x0, double x1, double t1, ArcEnd end, Crossing crossing) {
+  void record(double x0, double x1, double t1, ArcEnd end, Crossing crossing) {
     const double x_hi = std::max(x0, x1);
     if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(x_mu);
     for (std::size_t k = 0; k < targets.size(); ++k) {
@@ -79,15 +79,15 @@ struct StopWatch final : ArcSink, IntervalSink {
     }
   }
 
-  void on_arc(const Arc& a) override {
-    on_motion(a.x0, a.x1, a.t1, a.end, [&](double X) { return crossing(a, X); });
-  }
-
   void on_crossing(double position, double time, int direction) override {
     if (direction > 0) crossed.emplace_back(position, time);
   }
-  void on_interval(const MotionInterval& i) override {
-    on_motion(i.x0, i.x1, i.t1, i.end, [&](double X) {
+  void on_motion(const MotionInterval& i, const Arc* arc) override {
+    if (arc) {
+      record(i.x0, i.x1, i.t1, i.end, [&](double X) { return crossing(*arc, X); });
+      return;
+    }
+    record(i.x0, i.x1, i.t1, i.end, [&](double X) {
       if (i.x0 >= X) return i.t0;
       for (const auto& [position, time] : crossed)
         if (position == X) return time;
@@ -178,8 +178,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   long long look = n_first;
   auto advance_to_look = [&] {  // the next look (phase t1)
     const double t_look = static_cast<double>(look++) * P_segments + phase;
-    if (integrated) run.advance_to(t_look, static_cast<IntervalSink*>(&watch), watched);
-    else run.advance_to(t_look, static_cast<ArcSink*>(&watch));
+    run.advance_to(t_look, &watch, watched);
   };
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
     advance_to_look();

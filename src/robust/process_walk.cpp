@@ -3,16 +3,6 @@
 #include <algorithm>
 
 namespace selfalign {
-namespace {
-
-// The farthest the part has been: x is monotone on an arc, so the ends of the arcs bound it.
-struct Reach final : ArcSink {
-  double x;
-  explicit Reach(double x0) : x(x0) {}
-  void on_arc(const Arc& a) override { x = std::max({x, a.x0, a.x1}); }
-};
-
-}  // namespace
 
 ProcessWalk::ProcessWalk(const DesignRequest& q, const Process& p, const InputValues& v,
                          int max_periods)

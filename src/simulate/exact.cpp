@@ -13,7 +13,9 @@ namespace {
 
 using detail::kInf;
 
-[[gnu::noinline]] void emit(ArcSink& sink, const Arc& arc) { sink.on_arc(arc); }
+[[gnu::noinline]] void emit(MotionObserver& observer, const Arc& arc) {
+  observer.on_motion(arc, &arc);
+}
 
 std::size_t piece_for_direction(const PiecewiseAffineFriction& f, double x, int sigma) {
   const auto pieces = f.pieces();
@@ -51,7 +53,7 @@ namespace {
 // purpose: sharing it through a lambda-taking template measured 1.23-1.26x the bare loop per
 // period (bench_simulate, exact_per_period/case1_uniform) against 1.09x for this copy.
 std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t_end,
-                            ArcSink* sink) {
+                            MotionObserver* observer) {
   const auto segs = setup.profile.segments();
   const std::size_t nseg = segs.size();
   const double P = setup.profile.period();
@@ -74,7 +76,7 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
 
     while (t < t_stop) {  // one arc per pass
       // The commonest arc: at rest and held for the rest of the segment.
-      if (v == 0 && !sink && decide_at_rest(A, m_static) == 0) {
+      if (v == 0 && !observer && decide_at_rest(A, m_static) == 0) {
         ++count;
         t = t_stop;
         break;
@@ -101,13 +103,13 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
         if ((v1 > 0 && sigma < 0) || (v1 < 0 && sigma > 0)) v1 = 0;
         if (end != stop_end) t1 = t + tau;
       }
-      if (sink) [[unlikely]] {
-        Arc arc{t, t1, x, v, x1, v1, A, 0.0, m, 0.0, StickArc{}};
+      if (observer) [[unlikely]] {
+        Arc arc{{t, t1, x, v, x1, v1}, A, 0.0, m, 0.0, StickArc{}};
         if (sigma != 0) arc.shape = PolynomialArc{alpha, 0.0};
         arc.direction = static_cast<std::int8_t>(sigma);
         arc.end = end;
         arc.segment = si;
-        emit(*sink, arc);
+        emit(*observer, arc);
       }
       ++count;
       t = t1;
@@ -129,7 +131,7 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
 // affine in time on each segment (finite jerk). One arc per pass; the arc's shape is chosen by
 // the stick/slip decision and the friction piece, its next event by the shape (arc_events.hpp).
 std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t_end,
-                            ArcSink* sink) {
+                            MotionObserver* observer) {
   const auto segs = setup.profile.segments();
   const auto pieces = setup.friction.pieces();
   const FrictionLaw& law = setup.law;
@@ -225,13 +227,13 @@ std::size_t advance_general(const ExactSetup& setup, ExactState& state, double t
         breaking = J > 0 ? -1 : 1;  // |A| grows through s m: slip against the push
       }
 
-      if (sink) [[unlikely]] {
-        Arc arc{t, t1, x, v, x1, v1, A, J, m0, k, shape};
+      if (observer) [[unlikely]] {
+        Arc arc{{t, t1, x, v, x1, v1}, A, J, m0, k, shape};
         arc.direction = static_cast<std::int8_t>(sigma);
         arc.end = end;
         arc.segment = si;
         arc.piece = pi;
-        emit(*sink, arc);
+        emit(*observer, arc);
       }
       ++count;
       stalled = sigma != 0 && v == 0 && v1 == 0 && t1 == t && x1 == x;
@@ -273,14 +275,14 @@ void require_placed(const ExactSetup& setup, const ExactState& state) {
 }  // namespace
 
 std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
-                          ArcSink* sink) {
+                          MotionObserver* observer) {
   require_placed(setup, state);
   if (std::isinf(t_end)) throw InvalidParameter("t_end", t_end, "must be finite");
   const auto pieces = setup.friction.pieces();
   const bool uniform = pieces.size() == 1 && pieces[0].slope == 0;
   return uniform && setup.profile.piecewise_constant()
-             ? advance_uniform(setup, state, t_end, sink)
-             : advance_general(setup, state, t_end, sink);
+             ? advance_uniform(setup, state, t_end, observer)
+             : advance_general(setup, state, t_end, observer);
 }
 
 }  // namespace selfalign

@@ -196,7 +196,7 @@ bool integrable_profile(const TableProfile& profile) noexcept {
 }
 
 std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
-                               IntervalSink* sink, IntegratorStatistics* stats,
+                               MotionObserver* observer, IntegratorStatistics* stats,
                                std::span<const double> watch) {
   if (!std::is_sorted(watch.begin(), watch.end()))
     throw InvalidParameter("watch", "unsorted", "watched positions must be sorted ascending");
@@ -227,7 +227,8 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
   int breaking = 0;  // after a stick break: the direction of the slip that follows
   std::size_t count = 0;
   auto emit = [&](double t1, double x1, double v1, int direction, ArcEnd end) {
-    if (sink) sink->on_interval({t, t1, x, v, x1, v1, static_cast<std::int8_t>(direction), end});
+    if (observer)
+      observer->on_motion({t, t1, x, v, x1, v1, static_cast<std::int8_t>(direction), end}, nullptr);
     ++count;
     if (end != ArcEnd::horizon && end != ArcEnd::acceleration_switch) ++st.events;
     t = t1;
@@ -345,7 +346,7 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
         }
         // Watched positions passed on (prev_t, min(ts, t1)]: reported, the slip goes on. Each
         // one ahead of x(prev_t) (the earlier ones were reported at earlier samples).
-        for (const double upto = done ? t1 : ts; sink && watch_index != kNoWatch;) {
+        for (const double upto = done ? t1 : ts; observer && watch_index != kNoWatch;) {
           const double W = watch[watch_index];
           State z;
           dense.calc_state(upto, z);
@@ -356,7 +357,7 @@ std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state,
             dense.calc_state(tt, q2);
             return tt == upto ? sigma * (z[0] - W) : sigma * (q2[0] - W);
           };
-          sink->on_crossing(W, refine(position, prev_t, upto), sigma);
+          observer->on_crossing(W, refine(position, prev_t, upto), sigma);
           watch_index = next_watch(watch_index);
         }
         if (done) break;

@@ -203,7 +203,7 @@ bool smooth_solver_applies(const SmoothMotion& motion,
 }
 
 std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
-                           ArcSink* sink) {
+                           MotionObserver* observer) {
   if (!smooth_solver_applies(setup.motion, setup.friction))
     throw InvalidParameter("friction", "sloped pieces",
                            "the smooth-profile solver takes sloped friction pieces under a Fourier "
@@ -253,12 +253,12 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       m = pc.bound(x);
       const AffineSlip r = slip_on_affine_piece(*M.fourier_series(), pc, law, sigma, from_break,
                                                 {t, x, v}, d0, t_end);
-      if (sink) {
-        Arc a{t, r.t1, x, v, r.x1, r.v1, d0[2], d0[3], m, pc.slope, r.arc};
+      if (observer) {
+        Arc a{{t, r.t1, x, v, r.x1, r.v1}, d0[2], d0[3], m, pc.slope, r.arc};
         a.direction = static_cast<std::int8_t>(sigma);
         a.end = r.end;
         a.piece = pi;
-        sink->on_arc(a);
+        observer->on_motion(a, &a);
       }
       ++count;
       t = r.t1;
@@ -346,12 +346,12 @@ std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double 
       shape = arc;
     }
 
-    if (sink) {
-      Arc a{t, t1, x, v, x1, v1, d0[2], d0[3], m, 0.0, shape};
+    if (observer) {
+      Arc a{{t, t1, x, v, x1, v1}, d0[2], d0[3], m, 0.0, shape};
       a.direction = static_cast<std::int8_t>(sigma);
       a.end = end;
       a.piece = pi;
-      sink->on_arc(a);
+      observer->on_motion(a, &a);
     }
     ++count;
     t = t1;

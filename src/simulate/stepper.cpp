@@ -110,30 +110,30 @@ const ObjectState& object_of(const StepperState& state) noexcept {
                     state);
 }
 
-std::size_t advance(const Stepper& stepper, StepperState& state, double t_end, ArcSink* sink,
-                    IntegratorStatistics* stats) {
-  // Only the closed-form steppers have arcs: a sink given to another would stay empty (D22:
-  // the convergence analysis read past an empty arc list under a Stribeck law).
-  if (sink && !has_arcs(stepper))
+std::size_t advance(const Stepper& stepper, StepperState& state, double t_end,
+                    MotionObserver* observer, IntegratorStatistics* stats,
+                    std::span<const double> watch) {
+  if (!watch.empty() && !std::holds_alternative<IntegratorSetup>(stepper))
     throw InvalidParameter("method", to_string(method_of(stepper)),
-                           "has no closed-form arcs: only the exact solvers deliver them");
+                           "watched crossings come from the slip integrator only");
   return std::visit(
       Overloaded{
           [&](const ExactSetup& s) -> std::size_t {
-            return advance_exact(s, std::get<ExactState>(state), t_end, sink);
+            return advance_exact(s, std::get<ExactState>(state), t_end, observer);
           },
           [&](const SmoothSetup& s) -> std::size_t {
-            return advance_smooth(s, std::get<ObjectState>(state), t_end, sink);
+            return advance_smooth(s, std::get<ObjectState>(state), t_end, observer);
           },
           [&](const IntegratorSetup& s) -> std::size_t {
-            return advance_integrated(s, std::get<ObjectState>(state), t_end, nullptr, stats);
+            return advance_integrated(s, std::get<ObjectState>(state), t_end, observer, stats,
+                                      watch);
           },
           [&](const TimeSteppingSetup& s) -> std::size_t {
             TimeSteppingState& ts = std::get<TimeSteppingState>(state);
             const long long target = std::llround((t_end - ts.t0) / s.options.step);
             if (target <= ts.step_index) return 0;
             const long long steps = target - ts.step_index;
-            advance_time_stepping(s.profile, s.friction, s.law, s.options, ts, steps);
+            advance_time_stepping(s.profile, s.friction, s.law, s.options, ts, steps, observer);
             return static_cast<std::size_t>(steps);
           }},
       stepper);

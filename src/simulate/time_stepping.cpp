@@ -29,7 +29,7 @@ namespace {
 template <class Velocity, class Bound>
 void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLaw& law,
                   const TimeSteppingOptions& o, TimeSteppingState& state, long long steps,
-                  StepSink* sink) {
+                  MotionObserver* observer) {
   const double h = o.step, theta = o.theta;
   const double s = law.static_coefficient(), kf = law.kinetic_forward(),
                kb = law.kinetic_backward();
@@ -59,16 +59,14 @@ void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLa
       else if (!sliding_on && std::abs(v_free) > hold)
         v1 = v_free - sigma * h * law.kinetic(sigma, 0.0) * m;
     }
-    x += h * ((1 - theta) * v + theta * v1);
+    const double x1 = x + h * ((1 - theta) * v + theta * v1);
+    if (observer) {
+      const auto direction = static_cast<std::int8_t>(v1 > 0 ? 1 : v1 < 0 ? -1 : 0);
+      observer->on_motion({t - h, t, x, v, x1, v1, direction, ArcEnd::time_step}, nullptr);
+    }
+    x = x1;
     v = v1;
     yd = yd1;
-    if (sink) {
-      state.object = {t, x, v};
-      state.step_index = k;
-      state.table_velocity = yd;
-      state.stick = v == 0;
-      sink->on_step(state);
-    }
   }
   state.object = {state.t0 + static_cast<double>(k) * h, x, v};
   state.step_index = k;
@@ -80,7 +78,8 @@ void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLa
 
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
                            const FrictionLaw& law, const TimeSteppingOptions& o,
-                           TimeSteppingState& state, long long steps, StepSink* sink) {
+                           TimeSteppingState& state, long long steps,
+                           MotionObserver* observer) {
   // The common case of every sweep: a piecewise-polynomial profile on a uniform level. Its
   // velocity is called without virtual dispatch (inlined) and the level read once; the
   // numbers are the general loop's, bit for bit (the same functions, the same arithmetic).
@@ -89,11 +88,11 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
   if (pp && uniform) {
     const double level = uniform->level();
     moreau_steps([pp](double t) { return pp->PiecewisePolynomialProfile::velocity(t); },
-                 [level](double) { return level; }, law, o, state, steps, sink);
+                 [level](double) { return level; }, law, o, state, steps, observer);
     return;
   }
   moreau_steps([&profile](double t) { return profile.velocity(t); },
-               [&friction](double x) { return friction.bound(x); }, law, o, state, steps, sink);
+               [&friction](double x) { return friction.bound(x); }, law, o, state, steps, observer);
 }
 
 }  // namespace selfalign

@@ -38,14 +38,21 @@ std::string describe(StickSlipCase c);
 /// Throws InvalidParameter on misuse (non-positive or NaN parameters).
 StickSlipCase predict_case(const ThreePhaseParameters& p);
 
-/// What kinds of motion the arcs of a time window contain (feed it a steady-state period).
-struct MotionCensus final : ArcSink {
-  int stick = 0;     ///< stick arcs of positive length
-  int forward = 0;   ///< forward-slip arcs (x' > 0)
-  int backward = 0;  ///< backward-slip arcs (x' < 0)
+/// What kinds of motion the pieces of a time window contain (feed it a steady-state period),
+/// from any stepper: arcs, the integrator's intervals, or time steps. A time step ending at
+/// x' = 0 counts as a stick only when the step before also did: a slip reversal can land one
+/// step on x' = 0 (|v*| <= h m while the velocity crosses zero), which is no stick of the
+/// response.
+struct MotionCensus final : MotionObserver {
+  int stick = 0;     ///< stick pieces of positive length (time-stepping: runs of x' = 0)
+  int forward = 0;   ///< forward-slip pieces (x' > 0)
+  int backward = 0;  ///< backward-slip pieces (x' < 0)
   /// The window's classes in time order, consecutive repeats merged: 0 stick, +1, -1 slip.
   std::string sequence;
-  void on_arc(const Arc& a) override;
+  void on_motion(const MotionInterval& piece, const Arc* arc) override;
+  /// A new window begins (PeriodMap calls it for each period): the run of time steps at
+  /// x' = 0 starts afresh.
+  void begin_window() noexcept { zero_steps_ = 0; }
   /// Table 1 case of the window: 5 only stick, 4 no stick, 1 no backward, 2 no forward, else 3.
   StickSlipCase motion_case() const;
   /// The window's stick/slip sequence as a cyclic pattern (a period: the first class merged
@@ -54,6 +61,9 @@ struct MotionCensus final : ArcSink {
   /// backward" (a pattern Table 1 has no name for: two sticks a period, possible with
   /// static > kinetic or finite jerk). Empty for an empty window.
   std::string pattern() const;
+
+ private:
+  int zero_steps_ = 0;  // consecutive time steps that ended at x' = 0
 };
 
 }  // namespace selfalign

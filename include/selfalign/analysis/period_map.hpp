@@ -73,10 +73,10 @@ class PeriodMap {
   /// Time-stepping's options (a zero step for the other methods).
   const TimeSteppingOptions& stepping() const noexcept;
 
-  /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). A sink (exact only:
-  /// given to another map it throws InvalidParameter naming "method") receives every arc; a
-  /// census (any method) the stick/slip classes of the period.
-  ObjectState operator()(double x0, double v0, ArcSink* sink = nullptr,
+  /// State at t0 + Δt from (x0, x'0) at t0 (t0 = 0: the profile's phase 0). The observer
+  /// receives every piece of the period's motion (arcs with their closed form when the map is
+  /// exact); a census the stick/slip classes of the period. Any method.
+  ObjectState operator()(double x0, double v0, MotionObserver* observer = nullptr,
                          MotionCensus* census = nullptr) const;
   /// The arcs of one period from (x0, x'0) at phase 0 (has_arcs() only; throws otherwise).
   std::vector<Arc> arcs(double x0, double v0) const;
@@ -89,14 +89,12 @@ class PeriodMap {
   /// A run from `start` across as many periods as wanted (stopping, positioning, convergence).
   class Run {
    public:
-    /// Advances to t_end >= the current time; every arc goes to sink (exact only: a sink given
-    /// to a map without arcs throws InvalidParameter naming "method"; the time-stepping run
-    /// takes whole steps, ending at the step nearest t_end).
-    const ObjectState& advance_to(double t_end, ArcSink* sink = nullptr);
-    /// The same for the integrator's map: every stick and slip interval goes to sink, and
-    /// every crossing of a position in `watch` (sorted) to sink->on_crossing (integrator only;
-    /// throws for other methods).
-    const ObjectState& advance_to(double t_end, IntervalSink* sink, std::span<const double> watch);
+    /// Advances to t_end >= the current time (time-stepping: whole steps, ending at the step
+    /// nearest t_end); every piece of the motion goes to observer, and every crossing of a
+    /// position in `watch` (sorted) to observer->on_crossing (a non-empty watch: integrator
+    /// only; throws InvalidParameter naming "method" for other methods).
+    const ObjectState& advance_to(double t_end, MotionObserver* observer = nullptr,
+                                  std::span<const double> watch = {});
     const ObjectState& state() const noexcept { return object_of(state_); }
     /// The exact solver's state (segment and period index; exact only, else a default one).
     const ExactState& exact_state() const noexcept;
@@ -130,16 +128,19 @@ class PeriodMap {
 const PiecewisePolynomialProfile& require_exact_profile(const TableProfile& profile,
                                                         const std::string& analysis);
 
-/// The monodromy matrix of a stream of arcs (an ArcSink): each arc's transition matrix, coupled
+/// The monodromy matrix of a stream of arcs (a MotionObserver of a closed-form stepper; a
+/// piece without its arc throws InvalidParameter naming "method"): each arc's transition matrix, coupled
 /// to the next arc's by the saltation matrix of the event between them,
 ///   M = S(a_n, a_1) Φ_n ... S(a_1, a_2) Φ_1,
 /// the last event coupled to `next` given to finish() (a period's own first arc for a periodic
 /// solution, as saltation_monodromy() does). Used where the arcs are computed anyway: the
 /// steady-state search reads dP/dx'0 = M(1, 1) off the period it simulates.
-class SaltationProduct final : public ArcSink {
+class SaltationProduct final : public MotionObserver {
  public:
   explicit SaltationProduct(const FrictionLaw& law) : law_(&law) {}
-  void on_arc(const Arc& a) override;
+  void on_motion(const MotionInterval& piece, const Arc* arc) override;
+  /// The next arc.
+  void add(const Arc& a);
   /// The product so far with the saltation of the last arc's end into `next`. Identity when
   /// no arc was received.
   Eigen::Matrix2d finish(const Arc& next) const;

@@ -23,6 +23,7 @@
 #include <variant>
 
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/motion_observer.hpp"
 #include "selfalign/simulate/object_state.hpp"
 
 namespace selfalign {
@@ -136,26 +137,14 @@ using ArcShape =
 /// The shape's index, for tables and bindings (ArcKind(shape.index())).
 enum class ArcKind : std::uint8_t { stick, parabolic, harmonic, hyperbolic, driven, driven_affine };
 
-/// What ended an arc.
-enum class ArcEnd : std::uint8_t {
-  acceleration_switch,  ///< the table acceleration's segment ended
-  velocity_zero,        ///< x' reached 0 (the stick/slip decision follows)
-  friction_boundary,    ///< x reached the end of a friction piece (e.g. x_mu or x_mu + w)
-  horizon,              ///< the requested end time
-  stick_break           ///< |y''| reached the static bound s m(x) inside a segment (finite jerk)
-};
-
-struct Arc {
-  double t0 = 0, t1 = 0;    ///< start and end time [-]
-  double x0 = 0, xd0 = 0;   ///< state at t0 [-]
-  double x1 = 0, xd1 = 0;   ///< state at t1 [-]
+/// One piece of the motion (t0, t1, states, direction, end: motion_observer.hpp) with its
+/// closed form.
+struct Arc : MotionInterval {
   double table_accel = 0;   ///< table acceleration A = y'' at t0 [-]
   double table_jerk = 0;    ///< table jerk J = y''' on the arc [-]
   double bound0 = 0;        ///< friction level m(x0) of the field over the footprint [-]
   double slope = 0;         ///< dm/dx on the arc's friction piece [-]
   ArcShape shape;           ///< the closed-form solution
-  std::int8_t direction = 0;  ///< slip direction sigma: +1, -1, or 0 for stick
-  ArcEnd end = ArcEnd::horizon;
   std::size_t segment = 0;  ///< index of the table-acceleration segment
   std::size_t piece = 0;    ///< index of the friction piece
 

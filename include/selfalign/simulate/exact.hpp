@@ -25,13 +25,6 @@
 
 namespace selfalign {
 
-/// Receives every arc of an exact solution as it is computed.
-class ArcSink {
- public:
-  virtual ~ArcSink() = default;
-  virtual void on_arc(const Arc& arc) = 0;
-};
-
 /// The fixed system the exact solver integrates: a profile and a friction map, both borrowed
 /// (they must outlive the setup), and the friction law (the paper's static = kinetic = 1 by
 /// default).
@@ -52,11 +45,12 @@ struct ExactState {
 /// InvalidParameter for a non-finite state or |t| beyond 1e15 periods.
 ExactState make_exact_state(const ExactSetup& setup, const ObjectState& object);
 
-/// Advances state to time t_end (>= state.object.t), calling sink (if any) for every arc.
+/// Advances state to time t_end (>= state.object.t), calling observer->on_motion(arc, &arc) (if
+/// any) for every arc.
 /// Returns the number of arcs computed. Allocates nothing. Throws InvalidParameter for an
 /// infinite t_end, or a state whose segment / period_index do not hold its time (a state not
 /// made by make_exact_state or advance_exact).
 std::size_t advance_exact(const ExactSetup& setup, ExactState& state, double t_end,
-                          ArcSink* sink = nullptr);
+                          MotionObserver* observer = nullptr);
 
 }  // namespace selfalign

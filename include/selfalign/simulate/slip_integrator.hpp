@@ -74,25 +74,6 @@ struct IntegratorStatistics {
   IntegratorStatistics& operator-=(const IntegratorStatistics& o) noexcept;
 };
 
-/// One stick or slip interval of the integrated motion.
-struct MotionInterval {
-  double t0 = 0, t1 = 0;      ///< start and end time [-]
-  double x0 = 0, xd0 = 0;     ///< state at t0 [-]
-  double x1 = 0, xd1 = 0;     ///< state at t1 [-]
-  std::int8_t direction = 0;  ///< +1 forward slip, -1 backward slip, 0 stick
-  ArcEnd end = ArcEnd::horizon;
-};
-
-class IntervalSink {
- public:
-  virtual ~IntervalSink() = default;
-  virtual void on_interval(const MotionInterval& interval) = 0;
-  /// A watched position crossed at `time` during the slip in `direction` (+1, -1) that the
-  /// next on_interval call closes; located on the dense output like the other events.
-  virtual void on_crossing(double position, double time, int direction) {
-    (void)position, (void)time, (void)direction;
-  }
-};
 
 /// What the integrator solves: a profile (piecewise polynomial or smooth; borrowed), a
 /// piecewise-affine friction level (borrowed), a law (any; velocity-dependent is its purpose)
@@ -107,15 +88,17 @@ struct IntegratorSetup {
 /// True when the integrator can take this profile: it is piecewise polynomial or smooth.
 bool integrable_profile(const TableProfile& profile) noexcept;
 
-/// Advances `state` to t_end (>= state.t), calling sink (if any) for every interval and adding
-/// to stats (if any). Returns the number of intervals. With a sink, every crossing of a
-/// position in `watch` (sorted ascending) by a slip is reported to sink->on_crossing (stopping
-/// runs time their targets so). Throws InvalidParameter for a profile that is neither piecewise
+/// Advances `state` to t_end (>= state.t), calling observer->on_motion (if any) for every stick
+/// or slip interval (no closed form: arc = nullptr) and adding to stats (if any). Returns the
+/// number of intervals. With an observer, every crossing of a position in `watch` (sorted
+/// ascending) by a slip is reported to observer->on_crossing, located on the dense output like
+/// the other events (stopping runs time their targets so). Throws InvalidParameter for a profile that is neither piecewise
 /// polynomial nor smooth, bad options, a non-finite state or t_end, an unsorted watch; and
 /// when the work budget (options.max_steps_per_period) is spent or the state leaves the finite
 /// numbers (a stiff slip), naming "viscous", "stribeck_velocity" or "relative_tolerance".
 std::size_t advance_integrated(const IntegratorSetup& setup, ObjectState& state, double t_end,
-                               IntervalSink* sink = nullptr, IntegratorStatistics* stats = nullptr,
+                               MotionObserver* observer = nullptr,
+                               IntegratorStatistics* stats = nullptr,
                                std::span<const double> watch = {});
 
 }  // namespace selfalign

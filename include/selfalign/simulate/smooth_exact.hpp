@@ -53,11 +53,12 @@ bool piecewise_constant_level(const PiecewiseAffineFriction& friction) noexcept;
 bool smooth_solver_applies(const SmoothMotion& motion,
                            const PiecewiseAffineFriction& friction) noexcept;
 
-/// Advances `state` to t_end (>= state.t), calling sink (if any) for every arc (DrivenArc for
+/// Advances `state` to t_end (>= state.t), calling observer->on_motion(arc, &arc) (if any) for
+/// every arc (DrivenArc for
 /// slips on constant pieces, DrivenAffineArc on sloped ones, StickArc for sticks). Returns the
 /// number of arcs. Throws InvalidParameter for a level with sloped pieces under a motion that
 /// is not a Fourier series, a non-finite state or t_end.
 std::size_t advance_smooth(const SmoothSetup& setup, ObjectState& state, double t_end,
-                           ArcSink* sink = nullptr);
+                           MotionObserver* observer = nullptr);
 
 }  // namespace selfalign

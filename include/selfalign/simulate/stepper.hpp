@@ -6,7 +6,7 @@
 /// advance(), whatever the solver:
 ///   Stepper s = choose_stepper(profile, friction, law, request);
 ///   StepperState st = make_state(s, start);
-///   advance(s, st, t_end, sink);            // object_of(st) is the state at t_end
+///   advance(s, st, t_end, observer);        // object_of(st) is the state at t_end
 /// The closed set of steppers (a std::variant, visited; no if-chains over pointers):
 ///   ExactSetup        piecewise-polynomial y'' on a piecewise-affine level (exact.hpp)
 ///   SmoothSetup       smooth motion on a level the smooth solver takes (smooth_exact.hpp)
@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <variant>
 
 #include "selfalign/friction/friction_law.hpp"
@@ -24,6 +25,7 @@
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/method.hpp"
+#include "selfalign/simulate/motion_observer.hpp"
 #include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/simulate/smooth_exact.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
@@ -76,11 +78,14 @@ StepperState make_state(const Stepper& stepper, const ObjectState& start);
 /// The object's state held in a stepper state.
 const ObjectState& object_of(const StepperState& state) noexcept;
 
-/// Advances `state` to t_end (time-stepping: the step nearest t_end). Every arc goes to sink
-/// (closed-form steppers only: a sink given to another throws InvalidParameter naming
-/// "method"); the integrator's work is added to stats (if any). Returns the arcs, intervals or
-/// steps computed.
+/// Advances `state` to t_end (time-stepping: the step nearest t_end). Every piece of the motion
+/// goes to observer (motion_observer.hpp: arcs with their closed form, the integrator's
+/// intervals, time steps); the integrator's work is added to stats (if any). `watch` (sorted
+/// positions) asks the slip integrator to report their crossings to observer->on_crossing; a
+/// non-empty watch given to another stepper throws InvalidParameter naming "method". Returns the
+/// arcs, intervals or steps computed.
 std::size_t advance(const Stepper& stepper, StepperState& state, double t_end,
-                    ArcSink* sink = nullptr, IntegratorStatistics* stats = nullptr);
+                    MotionObserver* observer = nullptr, IntegratorStatistics* stats = nullptr,
+                    std::span<const double> watch = {});
 
 }  // namespace selfalign

@@ -29,6 +29,7 @@
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/motion_observer.hpp"
 #include "selfalign/simulate/object_state.hpp"
 
 namespace selfalign {
@@ -50,25 +51,20 @@ struct TimeSteppingState {
   bool stick = false;        ///< whether the last step ended in stick
 };
 
-/// Observer of each completed step (for recording).
-class StepSink {
- public:
-  virtual ~StepSink() = default;
-  virtual void on_step(const TimeSteppingState& state) = 0;
-};
-
 /// Starts a stepper at an object state.
 TimeSteppingState make_time_stepping_state(const TableProfile& profile, const ObjectState& object);
 
-/// Advances by `steps` steps under `law`; calls sink (if any) after each. Allocates nothing.
+/// Advances by `steps` steps under `law`; calls observer->on_motion (if any) with each completed
+/// step (end = ArcEnd::time_step, arc = nullptr). Allocates nothing.
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
                            const FrictionLaw& law, const TimeSteppingOptions& options,
-                           TimeSteppingState& state, long long steps, StepSink* sink = nullptr);
+                           TimeSteppingState& state, long long steps,
+                           MotionObserver* observer = nullptr);
 /// The same under the paper's law (static = kinetic = 1).
 inline void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
                                   const TimeSteppingOptions& options, TimeSteppingState& state,
-                                  long long steps, StepSink* sink = nullptr) {
-  advance_time_stepping(profile, friction, FrictionLaw{}, options, state, steps, sink);
+                                  long long steps, MotionObserver* observer = nullptr) {
+  advance_time_stepping(profile, friction, FrictionLaw{}, options, state, steps, observer);
 }
 
 }  // namespace selfalign

@@ -1,0 +1,69 @@
+#pragma once
+/// \file motion_observer.hpp
+/// The one observer of a 1-D motion, whatever solver computes it.
+///
+/// Every 1-D stepper (simulate/stepper.hpp) hands the motion it computes to a MotionObserver,
+/// one piece at a time and in time order:
+///   exact, smooth exact   one piece per arc, with the arc itself (its closed form: shape,
+///                         transition matrix, ...) as the optional payload
+///   slip integrator       one piece per stick or slip interval (no closed form), and the
+///                         crossings of watched positions (on_crossing)
+///   time-stepping         one piece per time step (end = ArcEnd::time_step, no closed form)
+/// An observer that needs the closed form (saltation matrices, arc lists) reads `arc` and is
+/// given to the closed-form steppers only (PeriodMap::arcs() checks); every other observer
+/// (census, stopping, positioning, convergence, reach) works with any stepper.
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+namespace selfalign {
+
+struct Arc;
+
+/// What ended a piece of the motion.
+enum class ArcEnd : std::uint8_t {
+  acceleration_switch,  ///< the table acceleration's segment ended
+  velocity_zero,        ///< x' reached 0 (the stick/slip decision follows)
+  friction_boundary,    ///< x reached the end of a friction piece (e.g. x_mu or x_mu + w)
+  horizon,              ///< the requested end time
+  stick_break,          ///< |y''| reached the static bound s m(x) inside a segment (finite jerk)
+  time_step             ///< one step of Moreau's time-stepping scheme ended
+};
+
+/// One piece of the motion: a stick, or a slip in one direction, from t0 to t1.
+struct MotionInterval {
+  double t0 = 0, t1 = 0;      ///< start and end time [-]
+  double x0 = 0, xd0 = 0;     ///< state at t0 [-]
+  double x1 = 0, xd1 = 0;     ///< state at t1 [-]
+  /// +1 forward slip, -1 backward slip, 0 stick. A time step's direction is that of x' at its
+  /// end (0: the step ended at rest).
+  std::int8_t direction = 0;
+  ArcEnd end = ArcEnd::horizon;
+};
+
+/// The one observer interface of the 1-D steppers.
+class MotionObserver {
+ public:
+  virtual ~MotionObserver() = default;
+  /// The next piece of the motion. `arc` is its closed form when the stepper has one (exact and
+  /// smooth-exact solvers: then `piece` is `*arc`), nullptr otherwise.
+  virtual void on_motion(const MotionInterval& piece, const Arc* arc) = 0;
+  /// A watched position crossed at `time` by the slip in `direction` (+1, -1) that the next
+  /// on_motion call closes (slip integrator, asked to watch positions).
+  virtual void on_crossing(double position, double time, int direction) {
+    (void)position, (void)time, (void)direction;
+  }
+};
+
+/// The farthest forward the motion reached: x is monotone on every piece (each ends at every
+/// velocity zero; a time step is one straight move), so the ends of the pieces bound it.
+struct Reach final : MotionObserver {
+  double x;  ///< the largest x seen so far [-]
+  explicit Reach(double x0 = -std::numeric_limits<double>::infinity()) : x(x0) {}
+  void on_motion(const MotionInterval& piece, const Arc*) override {
+    x = std::max({x, piece.x0, piece.x1});
+  }
+};
+
+}  // namespace selfalign
