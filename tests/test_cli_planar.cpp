@@ -81,6 +81,16 @@ TEST(CliPlanar, SimulateSteadyFieldAndStopRun) {
   const json stop = json::parse(box.run({"planar", "stop", "--config", cfg, "--json"}).out);
   EXPECT_EQ(stop["stopped"].get<int>(), 2);  // peak |y''| 3 < s c_mu = 3.75: held in the rough region
   EXPECT_GT(stop["mean_end"]["x"].get<double>(), 0.3);
+  // Each row says whether it was computed; the report counts the ones that were not.
+  EXPECT_EQ(stop["failures"]["count"].get<int>(), 0);
+  for (const char* cmd : {"field", "stop"}) {
+    const std::string csv = std::string(cmd) + ".csv";
+    ASSERT_EQ(box.run({"planar", cmd, "--config", cfg, "--csv", csv}).exit_code, 0);
+    const std::vector<std::string> rows = lines(read_text(box.work_file(csv)));
+    ASSERT_GE(rows.size(), 2u);
+    EXPECT_EQ(rows[0].substr(rows[0].rfind(',')), ",status") << cmd;
+    EXPECT_EQ(rows[1].substr(rows[1].rfind(',')), ",ok") << cmd;
+  }
 }
 
 // planar steady and planar field against a second method (issue 21: they were checked by

@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
+#include "sweep_common.hpp"  // cell_status, failures_json
 #include "warnings.hpp"
 #include "selfalign/planar/planar_steady_state.hpp"
 #include "selfalign/error.hpp"
@@ -188,22 +189,27 @@ void run_field(const PlanarFlags& f) {
   bar.finish();
   std::ostringstream csv;
   csv << "x" << si.u("_m", "") << ",y" << si.u("_m", "") << ",angle_rad,drift_x" << si.u("_m_per_s", "")
-      << ",drift_y" << si.u("_m_per_s", "") << ",rotation_rate" << si.u("_rad_per_s", "") << ",stick,pivot,slip\n";
+      << ",drift_y" << si.u("_m_per_s", "") << ",rotation_rate" << si.u("_rad_per_s", "")
+      << ",stick,pivot,slip,status\n";
   double largest = 0;
   for (const auto& d : samples) {
     csv << csv_number(si.length(d.x)) << ',' << csv_number(si.length(d.y)) << ',' << csv_number(d.angle) << ','
         << csv_number(si.velocity(d.drift_x)) << ',' << csv_number(si.velocity(d.drift_y)) << ','
         << csv_number(si.rate(d.rotation_rate)) << ',' << d.census.stick << ',' << d.census.pivot << ','
-        << d.census.slip << '\n';
-    largest = std::max(largest, std::hypot(d.drift_x, d.drift_y));
+        << d.census.slip << ',' << cell_status(d.failure) << '\n';
+    if (d.failure.empty()) largest = std::max(largest, std::hypot(d.drift_x, d.drift_y));
   }
   json r = header(s);
   r["command"] = "planar field";
   r["samples"] = samples.size();
   r["periods_per_sample"] = s.field_periods;
   r["largest_drift"] = si.velocity(largest);
+  r["failures"] = failures_json(samples, [&si](const PlanarDriftSample& d) {
+    return json{{"x", si.length(d.x)}, {"y", si.length(d.y)}, {"angle", d.angle}};
+  });
   TextTable t;
-  t.row("samples", std::to_string(samples.size()));
+  t.row("samples", std::to_string(samples.size()) + " (" +
+                       table_text(r["failures"]["count"]) + " failed)");
   t.row("largest drift [" + si.u("m/s", "-") + "]", table_text(r["largest_drift"]));
   deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.str());
 }
@@ -217,16 +223,21 @@ void run_stop(const PlanarFlags& f) {
   bar.finish();
   std::ostringstream csv;
   csv << "entry_x" << si.u("_m", "") << ",entry_y" << si.u("_m", "") << ",entry_angle_rad,stopped,end_x"
-      << si.u("_m", "") << ",end_y" << si.u("_m", "") << ",end_angle_rad,process_time" << si.u("_s", "") << '\n';
+      << si.u("_m", "") << ",end_y" << si.u("_m", "") << ",end_angle_rad,process_time" << si.u("_s", "")
+      << ",status\n";
   for (const auto& run : sum.runs)
     csv << csv_number(si.length(run.entry.x)) << ',' << csv_number(si.length(run.entry.y)) << ','
         << csv_number(run.entry.angle) << ',' << (run.stopped ? "true" : "false") << ','
         << csv_number(si.length(run.end.x)) << ',' << csv_number(si.length(run.end.y)) << ','
-        << csv_number(run.end.angle) << ',' << csv_number(si.time(run.process_time)) << '\n';
+        << csv_number(run.end.angle) << ',' << csv_number(si.time(run.process_time)) << ','
+        << cell_status(run.failure) << '\n';
   json r = header(s);
   r["command"] = "planar stop";
   r["runs"] = sum.runs.size();
   r["stopped"] = sum.stopped;
+  r["failures"] = failures_json(sum.runs, [&si](const PlanarStopRun& run) {
+    return json{{"entry", pose_json(run.entry, si)}};
+  });
   r["max_periods"] = s.max_periods;
   r["mean_end"] = pose_json({sum.mean_x, sum.mean_y, sum.mean_angle}, si);
   r["end_region"] = {{"min_x", number_or_null(si.length(sum.min_x))}, {"max_x", number_or_null(si.length(sum.max_x))},
@@ -235,7 +246,8 @@ void run_stop(const PlanarFlags& f) {
   r["orientation_error_rad"] = number_or_null(sum.angle_range);
   r["max_process_time"] = number_or_null(si.time(sum.max_process_time));
   TextTable t;
-  t.row("stopped", std::to_string(sum.stopped) + " of " + std::to_string(sum.runs.size()));
+  t.row("stopped", std::to_string(sum.stopped) + " of " + std::to_string(sum.runs.size()) + " (" +
+                       std::to_string(sum.failed) + " failed)");
   t.row("mean end x, y [" + si.u("m", "-") + "]", table_text(r["mean_end"]["x"]) + ", " + table_text(r["mean_end"]["y"]));
   t.row("end region radius [" + si.u("m", "-") + "]", table_text(r["end_region"]["radius"]));
   t.row("orientation error [rad]", table_text(r["orientation_error_rad"]));

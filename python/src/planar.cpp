@@ -518,14 +518,19 @@ A twist of the part relative to the table, in table axes: the centre of mass's v
       .def_readonly("drift_y", &DS::drift_y, "mean velocity along table y [-]")
       .def_readonly("rotation_rate", &DS::rotation_rate, "mean spin relative to the table [-]")
       .def_readonly("census", &DS::census, "PlanarCensus over the sampled periods")
+      .def_readonly("failure", &DS::failure,
+                    "'' when computed; otherwise why the sample could not be (its numbers are "
+                    "then NaN; a failed sample never aborts the field)")
       .def("__repr__", [](const DS& d) {
         return Repr("PlanarDriftSample")("x", d.x)("y", d.y)("angle", d.angle)(
                    "drift_x", d.drift_x)("drift_y", d.drift_y)("rotation_rate", d.rotation_rate)
+            .raw("failure", py::repr(py::str(d.failure)).cast<std::string>())
             .str();
       });
   def_record(drift, field("x", &DS::x), field("y", &DS::y), field("angle", &DS::angle),
              field("drift_x", &DS::drift_x), field("drift_y", &DS::drift_y),
-             field("rotation_rate", &DS::rotation_rate), field("census", &DS::census));
+             field("rotation_rate", &DS::rotation_rate), field("census", &DS::census),
+             field("failure", &DS::failure));
 
   using RUN = PlanarStopRun;
   py::class_<RUN> run(m, "PlanarStopRun", "One run of planar_stop().");
@@ -535,16 +540,20 @@ A twist of the part relative to the table, in table axes: the centre of mass's v
       .def_readonly("process_time", &RUN::process_time,
                     "T_p: start of the first whole period of stick [-]; NaN when not stopped")
       .def_readonly("periods", &RUN::periods, "table periods simulated")
+      .def_readonly("failure", &RUN::failure,
+                    "'' when computed; otherwise why the run could not be (stopped is then "
+                    "False; a failed run never aborts the study)")
       .def("__repr__", [](const RUN& r) {
         return Repr("PlanarStopRun")
             .raw("entry", py::repr(py::cast(r.entry)))("stopped", r.stopped)
             .raw("end", py::repr(py::cast(r.end)))("process_time", r.process_time)(
                 "periods", r.periods)
+            .raw("failure", py::repr(py::str(r.failure)).cast<std::string>())
             .str();
       });
   def_record(run, field("entry", &RUN::entry), field("stopped", &RUN::stopped),
              field("end", &RUN::end), field("process_time", &RUN::process_time),
-             field("periods", &RUN::periods));
+             field("periods", &RUN::periods), field("failure", &RUN::failure));
 
   using SUM = PlanarStopSummary;
   py::class_<SUM> summary(m, "PlanarStopSummary", R"doc(
@@ -553,6 +562,8 @@ The outcome of planar_stop(): every run, and over the stopped ones the positioni
 (range of end angles). NaN where no run stopped.)doc");
   summary.def_readonly("runs", &SUM::runs, "a list of PlanarStopRun, one per entry (a copy)")
       .def_readonly("stopped", &SUM::stopped, "runs that stopped")
+      .def_readonly("failed", &SUM::failed,
+                    "runs that could not be computed (each run's failure says why)")
       .def_readonly("mean_x", &SUM::mean_x, "mean end x [-]")
       .def_readonly("mean_y", &SUM::mean_y, "mean end y [-]")
       .def_readonly("mean_angle", &SUM::mean_angle, "mean end angle [rad]")
@@ -671,13 +682,6 @@ struct PlanarRecorder final : PlanarStepSink {
     return d;
   }
 };
-
-// Runs f on `threads` workers (0: all cores).
-template <class F>
-auto in_arena(int threads, F&& f) {
-  tbb::task_arena arena(worker_threads(threads));
-  return arena.execute(std::forward<F>(f));
-}
 
 // The (x, y, angle) rows of an N x 3 array-like, or a list of PlanarPose.
 std::vector<PlanarPose> entries_of(const py::handle& h) {
@@ -864,6 +868,8 @@ angles [rad]), the mean drift over `periods` table periods ([1, 100000]), in par
                   (len(ys), len(xs), len(angles)): the start pose and the mean velocity
                   along table x, y [-] and the mean spin relative to the table [-]
   stick, pivot, slip  int64 arrays of that shape: steps of each PatchMode
+  failed          bool array of that shape: samples that could not be computed (their
+                  numbers NaN, each sample's failure says why); the others are computed
   samples         the same as a list of PlanarDriftSample (angle fastest, then x, then y)
 `progress(done, total)`, if given, is called as samples complete (from worker threads, one
 call at a time, holding the GIL); Ctrl-C stops the study with KeyboardInterrupt.
@@ -882,15 +888,14 @@ call at a time, holding the GIL); Ctrl-C stops the study with KeyboardInterrupt.
                                   angles = to_vector(angles_in, "angles");
         const PythonProgress progress(progress_in);
         const std::vector<PlanarDriftSample> samples = progress.run([&] {
-          return in_arena(threads, [&] {
-            return planar_drift_field(p, xs, ys, angles, periods, progress.callback());
-          });
+          return planar_drift_field(p, xs, ys, angles, periods, progress.callback(), threads);
         });
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(ys.size()),
                                              static_cast<py::ssize_t>(xs.size()),
                                              static_cast<py::ssize_t>(angles.size())};
         py::array_t<double> x(shape), y(shape), angle(shape), dx(shape), dy(shape), rate(shape);
         py::array_t<std::int64_t> stick(shape), pivot(shape), slip(shape);
+        py::array_t<bool> failed(shape);
         py::list list;
         for (std::size_t i = 0; i < samples.size(); ++i) {
           const PlanarDriftSample& s = samples[i];
@@ -900,6 +905,7 @@ call at a time, holding the GIL); Ctrl-C stops the study with KeyboardInterrupt.
           rate.mutable_data()[i] = s.rotation_rate;
           stick.mutable_data()[i] = s.census.stick, pivot.mutable_data()[i] = s.census.pivot;
           slip.mutable_data()[i] = s.census.slip;
+          failed.mutable_data()[i] = !s.failure.empty();
           list.append(py::cast(s));
         }
         py::dict d;
@@ -908,6 +914,7 @@ call at a time, holding the GIL); Ctrl-C stops the study with KeyboardInterrupt.
         d["x"] = x, d["y"] = y, d["angle"] = angle;
         d["drift_x"] = dx, d["drift_y"] = dy, d["rotation_rate"] = rate;
         d["stick"] = stick, d["pivot"] = pivot, d["slip"] = slip;
+        d["failed"] = failed;
         d["samples"] = list;
         return d;
       },
@@ -937,10 +944,8 @@ planar_drift_field, per entry; Ctrl-C stops the study after the runs under way.
                                            y_direction, field, part, law, step, theta);
         const std::vector<PlanarPose> entries = entries_of(entries_in);
         const PythonProgress progress(progress_in);
-        return progress.run([&] {
-          return in_arena(threads,
-                          [&] { return planar_stop(p, entries, max_periods, progress.callback()); });
-        });
+        return progress.run(
+            [&] { return planar_stop(p, entries, max_periods, progress.callback(), threads); });
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},

@@ -192,10 +192,13 @@ def test_drift_field_arrays_match_its_samples_and_stop_in_a_rough_region():
         assert s.drift_x == d["drift_x"][iy, ix, ia] and s.census.stick == d["stick"][iy, ix, ia]
     assert np.all(d["drift_x"][:, 0, :] > 0)  # smooth region: walks along +x
     assert np.all(d["drift_x"][:, 1, :] == 0)  # deep in the rough region: held
+    assert d["failed"].shape == (3, 2, 2) and not d["failed"].any()
+    assert all(s.failure == "" for s in d["samples"])
     summary = sa.planar_stop(PROFILE, field=field, part=sa.RigidPart(), step=0.005,
                              entries=np.array([[0.0, 0.0, 0.0], [0.1, 0.2, 0.5]]),
                              max_periods=60, threads=1)
     assert summary.stopped == 2 and all(run.stopped for run in summary.runs)
+    assert summary.failed == 0 and all(run.failure == "" for run in summary.runs)
     assert 0.3 <= summary.min_x <= summary.max_x < 0.3 + field.width
     assert summary.min_y == 0.0 and summary.max_y == 0.2 and summary.angle_range == 0.5
     assert summary.max_process_time == max(run.process_time for run in summary.runs)

@@ -1,13 +1,12 @@
 #include "selfalign/planar/planar_analysis.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
+#include "../analysis/parallel_cells.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps
 #include "step_sinks.hpp"
@@ -28,6 +27,25 @@ void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
                  PlanarStepSink* sink = nullptr) {
   advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
                        periods * steps_per_period(p), sink);
+}
+
+// A study's cell fails (kept with this message, the others computed) when its state or the
+// table's motion left the finite numbers: inputs near overflow, or a profile that returns NaN
+// (the step's stick test is false for NaN, so such a run would otherwise report a stop).
+void require_finite(const PlanarRigidState& s, double t) {
+  const double values[] = {s.pose.x,   s.pose.y,   s.pose.angle, s.twist.ux,   s.twist.uy,
+                           s.twist.omega, s.table.vx, s.table.vy,  s.table.rate};
+  for (double v : values)
+    if (!std::isfinite(v))
+      throw std::runtime_error("the state or the table motion left the finite numbers by t = " +
+                               compact(t));
+}
+
+SweepOptions cells_options(const ProgressCallback& progress, int threads) {
+  SweepOptions o;
+  o.threads = threads;
+  o.progress = progress;
+  return o;
 }
 
 }  // namespace
@@ -109,7 +127,7 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
                                                   const std::vector<double>& xs,
                                                   const std::vector<double>& ys,
                                                   const std::vector<double>& angles, int periods,
-                                                  const ProgressCallback& progress) {
+                                                  const ProgressCallback& progress, int threads) {
   validate(p);
   if (periods < 1 || periods > 100000)
     throw InvalidParameter("periods", std::to_string(periods), "must be in [1, 100000]");
@@ -125,26 +143,34 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
   for (double v : angles) require_moderate("grid angle", v);
   std::vector<PlanarDriftSample> out(xs.size() * ys.size() * angles.size());
   const double span = periods * planar_period(p.motion);
-  std::atomic<std::size_t> done{0};
-  tbb::parallel_for(std::size_t{0}, out.size(), [&](std::size_t i) {
+  for (std::size_t i = 0; i < out.size(); ++i) {
     const std::size_t ia = i % angles.size(), ix = (i / angles.size()) % xs.size(),
                       iy = i / (angles.size() * xs.size());
-    PlanarDriftSample& d = out[i];
-    d.x = xs[ix], d.y = ys[iy], d.angle = angles[ia];
-    PlanarRigidState s = make_planar_rigid_state(p.motion, 0, {d.x, d.y, d.angle}, {});
-    CensusSink census;
-    run_periods(p, s, periods, &census);
-    d.drift_x = (s.pose.x - d.x) / span;
-    d.drift_y = (s.pose.y - d.y) / span;
-    d.rotation_rate = (s.pose.angle - d.angle) / span;
-    d.census = census.census;
-    if (progress) progress(++done, out.size());
-  });
+    out[i].x = xs[ix], out[i].y = ys[iy], out[i].angle = angles[ia];
+  }
+  detail::parallel_cells(
+      out.size(), cells_options(progress, threads),
+      [&](std::size_t i) {
+        PlanarDriftSample& d = out[i];
+        PlanarRigidState s = make_planar_rigid_state(p.motion, 0, {d.x, d.y, d.angle}, {});
+        CensusSink census;
+        run_periods(p, s, periods, &census);
+        require_finite(s, span);
+        d.drift_x = (s.pose.x - d.x) / span;
+        d.drift_y = (s.pose.y - d.y) / span;
+        d.rotation_rate = (s.pose.angle - d.angle) / span;
+        d.census = census.census;
+      },
+      [&](std::size_t i, const std::string& why) {
+        out[i].drift_x = out[i].drift_y = out[i].rotation_rate = NAN;
+        out[i].census = {};
+        out[i].failure = why;
+      });
   return out;
 }
 
 PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPose>& entries,
-                              int max_periods, const ProgressCallback& progress) {
+                              int max_periods, const ProgressCallback& progress, int threads) {
   validate(p);
   if (max_periods < 1 || max_periods > 1000000)
     throw InvalidParameter("max_periods", std::to_string(max_periods), "must be in [1, 1000000]");
@@ -154,27 +180,38 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
   require_planar_steps("max_periods", max_periods, p);
   PlanarStopSummary sum;
   sum.runs.resize(entries.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    sum.runs[i].entry = entries[i];
+    sum.runs[i].end = {NAN, NAN, NAN};
+  }
   const double period = planar_period(p.motion);
-  std::atomic<std::size_t> done{0};
-  tbb::parallel_for(std::size_t{0}, entries.size(), [&](std::size_t i) {
-    PlanarStopRun& run = sum.runs[i];
-    run.entry = entries[i];
-    run.end = {NAN, NAN, NAN};
-    PlanarRigidState s = make_planar_rigid_state(p.motion, 0, entries[i], {});
-    for (long long k = 1; k <= max_periods; ++k) {
-      CensusSink census;
-      run_periods(p, s, 1, &census);
-      run.periods = k;
-      if (census.census.stick == census.census.total()) {
-        run.stopped = true;
-        run.end = s.pose;
-        run.process_time = (k - 1) * period;
-        break;
-      }
-    }
-    if (progress) progress(++done, entries.size());
-  });
+  detail::parallel_cells(
+      entries.size(), cells_options(progress, threads),
+      [&](std::size_t i) {
+        PlanarStopRun& run = sum.runs[i];
+        PlanarRigidState s = make_planar_rigid_state(p.motion, 0, entries[i], {});
+        for (long long k = 1; k <= max_periods; ++k) {
+          CensusSink census;
+          run_periods(p, s, 1, &census);
+          require_finite(s, static_cast<double>(k) * period);
+          run.periods = k;
+          if (census.census.stick == census.census.total()) {
+            run.stopped = true;
+            run.end = s.pose;
+            run.process_time = static_cast<double>(k - 1) * period;
+            break;
+          }
+        }
+      },
+      [&](std::size_t i, const std::string& why) {
+        PlanarStopRun& run = sum.runs[i];
+        run.stopped = false;
+        run.end = {NAN, NAN, NAN};
+        run.process_time = NAN;
+        run.failure = why;
+      });
   double sx = 0, sy = 0, sa = 0;
+  for (const auto& r : sum.runs) sum.failed += !r.failure.empty();
   for (const auto& r : sum.runs)
     if (r.stopped) {
       ++sum.stopped;

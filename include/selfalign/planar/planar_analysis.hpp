@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "selfalign/analysis/sweep.hpp"  // ProgressCallback
@@ -80,18 +81,24 @@ PlanarSteadyResult planar_steady(const PlanarProblem& problem, const PlanarPose&
 /// One drift-field sample: from rest at (x, y, angle), the mean drift over `periods` periods.
 struct PlanarDriftSample {
   double x = 0, y = 0, angle = 0;
-  double drift_x = 0, drift_y = 0, rotation_rate = 0;  ///< [-]
+  double drift_x = NAN, drift_y = NAN, rotation_rate = NAN;  ///< [-]; NaN when it failed
   PlanarCensus census;
+  /// Empty when computed; otherwise why this sample could not be (e.g. the state left the
+  /// finite numbers). A failed sample never aborts the field.
+  std::string failure;
 };
 
 /// The drift field on the grid xs x ys x angles (angle fastest, then x, then y), in parallel
-/// (oneTBB; results independent of the thread count). `progress` (optional, thread-safe
-/// calls) gets (samples done, samples).
+/// on `threads` workers (0: all cores) through the studies' one parallel loop (each sample
+/// computed into its own slot: results independent of the thread count; a sample that fails
+/// is kept with its failure, the others computed). `progress` (optional, one call at a time)
+/// gets (samples done, samples); an exception it throws stops the study and propagates.
 std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& problem,
                                                   const std::vector<double>& xs,
                                                   const std::vector<double>& ys,
                                                   const std::vector<double>& angles, int periods,
-                                                  const ProgressCallback& progress = {});
+                                                  const ProgressCallback& progress = {},
+                                                  int threads = 0);
 
 /// One stopping run.
 struct PlanarStopRun {
@@ -100,6 +107,8 @@ struct PlanarStopRun {
   PlanarPose end;               ///< NaN when it did not stop
   double process_time = NAN;    ///< T_p: start of the first whole period of stick [-]
   long long periods = 0;        ///< periods simulated
+  /// Empty when the run was computed; otherwise why it could not be (then stopped is false).
+  std::string failure;
 };
 
 /// The positioning error over the stopped runs: the 2-D region of end positions (bounding box,
@@ -107,6 +116,7 @@ struct PlanarStopRun {
 struct PlanarStopSummary {
   std::vector<PlanarStopRun> runs;
   long long stopped = 0;
+  long long failed = 0;          ///< runs that could not be computed (their failure says why)
   double mean_x = NAN, mean_y = NAN, mean_angle = NAN;
   double min_x = NAN, max_x = NAN, min_y = NAN, max_y = NAN;
   double radius = NAN;           ///< max |end - mean| [-]
@@ -115,8 +125,10 @@ struct PlanarStopSummary {
 };
 
 /// From rest at each entry pose, runs until the part sticks for a whole period (stopped) or
-/// max_periods pass. `progress` (optional) gets (entries done, entries).
+/// max_periods pass; the entries in parallel as planar_drift_field's samples (a failed run kept
+/// with its failure). `progress` (optional) gets (entries done, entries).
 PlanarStopSummary planar_stop(const PlanarProblem& problem, const std::vector<PlanarPose>& entries,
-                              int max_periods, const ProgressCallback& progress = {});
+                              int max_periods, const ProgressCallback& progress = {},
+                              int threads = 0);
 
 }  // namespace selfalign

@@ -1,0 +1,110 @@
+// Tests for the planar studies of planar/planar_analysis.hpp (drift field, stopping) on the
+// studies' one parallel loop: each sample against the same run done alone (a plain loop over
+// advance_planar_rigid, the second method), independence of the thread count, a failed
+// sample kept with its failure instead of aborting the study, and a progress callback that
+// stops it (a front end's Ctrl-C).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "planar_profiles.hpp"
+#include "selfalign/planar/planar_analysis.hpp"
+
+namespace selfalign {
+namespace {
+
+using testing_support::kPaper;
+
+PlanarProblem rough_region_problem() {
+  PlanarProblem p;
+  p.motion.first = &kPaper;
+  p.field = HalfPlaneStepField{0.3, 0.0, 0.0, 0.05, 4.0};
+  p.part.patch = rectangle_patch(0.04, 0.02, 3, 2);
+  p.options.step = 1.0 / 200;
+  return p;
+}
+
+// A table motion whose velocity is not a number: every run leaves the finite numbers.
+class NotANumber final : public TableProfile {
+ public:
+  double period() const override { return 1.0; }
+  TableState state(double) const override {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan};
+  }
+  double velocity(double) const override { return std::numeric_limits<double>::quiet_NaN(); }
+  double peak_acceleration() const override { return 1.0; }
+  double stroke() const override { return 1.0; }
+  std::string kind() const override { return "not-a-number"; }
+};
+
+TEST(PlanarStudies, EachDriftSampleIsItsRunAloneOnAnyThreadCount) {
+  const PlanarProblem p = rough_region_problem();
+  const std::vector<double> xs{0.0, 0.5}, ys{-0.1, 0.1}, angles{0.0, 0.7};
+  const int periods = 2;
+  const auto one = planar_drift_field(p, xs, ys, angles, periods, {}, 1);
+  const auto two = planar_drift_field(p, xs, ys, angles, periods, {}, 2);
+  ASSERT_EQ(one.size(), 8u);
+  ASSERT_EQ(two.size(), 8u);
+  const double span = periods * kPaper.period();  // the study's averaging time
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_TRUE(one[i].failure.empty()) << one[i].failure;
+    EXPECT_EQ(one[i].drift_x, two[i].drift_x) << i;
+    EXPECT_EQ(one[i].drift_y, two[i].drift_y) << i;
+    EXPECT_EQ(one[i].rotation_rate, two[i].rotation_rate) << i;
+    // The second method: the same run alone, stepped here.
+    PlanarRigidState s =
+        make_planar_rigid_state(p.motion, 0, {one[i].x, one[i].y, one[i].angle}, {});
+    const long long steps = periods * steps_per_period(p);
+    advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s, steps);
+    EXPECT_EQ(one[i].drift_x, (s.pose.x - one[i].x) / span) << i;
+    EXPECT_EQ(one[i].drift_y, (s.pose.y - one[i].y) / span) << i;
+    EXPECT_EQ(one[i].census.total(), steps) << i;
+  }
+  // The samples differ: the smooth region walks, the rough one holds (not a vacuous match).
+  EXPECT_GT(one[0].drift_x, 0.0);
+  EXPECT_EQ(one[2].drift_x, 0.0);
+}
+
+TEST(PlanarStudies, AFailedSampleIsKeptAndTheStudyGoesOn) {
+  const NotANumber nan_motion;
+  PlanarProblem p = rough_region_problem();
+  p.motion.first = &nan_motion;
+  p.motion.second = nullptr;
+  const auto field = planar_drift_field(p, {0.0, 0.1}, {0.0}, {0.0}, 1, {}, 2);
+  ASSERT_EQ(field.size(), 2u);
+  for (const PlanarDriftSample& d : field) {
+    EXPECT_NE(d.failure.find("finite"), std::string::npos) << d.failure;
+    EXPECT_TRUE(std::isnan(d.drift_x) && std::isnan(d.drift_y) && std::isnan(d.rotation_rate));
+  }
+  const PlanarStopSummary stop = planar_stop(p, {{0, 0, 0}, {0.1, 0, 0}}, 5, {}, 2);
+  EXPECT_EQ(stop.failed, 2);
+  EXPECT_EQ(stop.stopped, 0);
+  for (const PlanarStopRun& r : stop.runs) {
+    EXPECT_FALSE(r.stopped);
+    EXPECT_TRUE(std::isnan(r.end.x));
+    EXPECT_NE(r.failure.find("finite"), std::string::npos) << r.failure;
+  }
+  EXPECT_TRUE(std::isnan(stop.mean_x));
+}
+
+TEST(PlanarStudies, AProgressCallbackThatThrowsStopsTheStudy) {
+  const PlanarProblem p = rough_region_problem();
+  const std::vector<double> xs(40, 0.0);
+  int calls = 0;
+  const ProgressCallback cancel = [&calls](std::size_t, std::size_t) {
+    ++calls;
+    throw std::runtime_error("interrupted");
+  };
+  EXPECT_THROW(planar_drift_field(p, xs, {0.0}, {0.0}, 1, cancel, 1), std::runtime_error);
+  EXPECT_EQ(calls, 1);
+  EXPECT_THROW(planar_stop(p, {{0, 0, 0}, {0.1, 0, 0}}, 3, cancel, 1), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace selfalign
