@@ -170,6 +170,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     PlanarDriftSample,
     PlanarStopRun,
     PlanarStopSummary,
+    PlanarProblem,
     simulate_planar,
     planar_steady,
     planar_steady_state,

@@ -1841,6 +1841,43 @@ class PlanarStopRun:
     def failure(self) -> str: ...
     def to_dict(self) -> dict[str, Any]: ...
 
+class PlanarProblem:
+    def __init__(
+        self,
+        x_profile: Optional[TableProfile] = None,
+        y_profile: Optional[TableProfile] = None,
+        rotation: Optional[TableProfile] = None,
+        *,
+        field: PlanarField,
+        part: RigidPart,
+        law: FrictionLaw = ...,
+        step: float,
+        theta: float = 0.5,
+        x_direction: tuple[float, float] = (1.0, 0.0),
+        y_direction: tuple[float, float] = (0.0, 1.0),
+    ) -> None: ...
+    @property
+    def x_profile(self) -> Optional[TableProfile]: ...
+    @property
+    def y_profile(self) -> Optional[TableProfile]: ...
+    @property
+    def rotation(self) -> Optional[TableProfile]: ...
+    @property
+    def x_direction(self) -> tuple[float, float]: ...
+    @property
+    def y_direction(self) -> tuple[float, float]: ...
+    @property
+    def field(self) -> PlanarField: ...
+    @property
+    def part(self) -> RigidPart: ...
+    @property
+    def law(self) -> FrictionLaw: ...
+    @property
+    def step(self) -> float: ...
+    @property
+    def theta(self) -> float: ...
+    def to_dict(self) -> dict[str, Any]: ...
+
 class PlanarStopSummary:
     @property
     def runs(self) -> list[PlanarStopRun]: ...
@@ -1873,6 +1910,17 @@ class PlanarStopSummary:
 PoseLike: TypeAlias = Union[PlanarPose, tuple[float, float, float], ArrayLike]
 TwistLike: TypeAlias = Union[PlanarTwist, tuple[float, float, float], ArrayLike]
 
+@overload
+def simulate_planar(
+    problem: PlanarProblem,
+    *,
+    periods: Optional[int] = None,
+    duration: Optional[float] = None,
+    pose: PoseLike = (0.0, 0.0, 0.0),
+    twist: TwistLike = (0.0, 0.0, 0.0),
+    every: int = 1,
+) -> dict[str, npt.NDArray[np.generic]]: ...
+@overload
 def simulate_planar(
     x_profile: Optional[TableProfile] = None,
     y_profile: Optional[TableProfile] = None,
@@ -1891,6 +1939,16 @@ def simulate_planar(
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
 ) -> dict[str, npt.NDArray[np.generic]]: ...
+@overload
+def planar_steady(
+    problem: PlanarProblem,
+    *,
+    pose: PoseLike = (0.0, 0.0, 0.0),
+    twist: TwistLike = (0.0, 0.0, 0.0),
+    transient: int = 20,
+    window: int = 5,
+) -> PlanarSteadyResult: ...
+@overload
 def planar_steady(
     x_profile: Optional[TableProfile] = None,
     y_profile: Optional[TableProfile] = None,
@@ -1908,6 +1966,17 @@ def planar_steady(
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
 ) -> PlanarSteadyResult: ...
+@overload
+def planar_steady_state(
+    problem: PlanarProblem,
+    *,
+    pose: PoseLike = (0.0, 0.0, 0.0),
+    twist: TwistLike = (0.0, 0.0, 0.0),
+    transient_periods: int = 0,
+    max_periods: int = 2000,
+    tolerance: float = 0.0,
+) -> PlanarSteadyState: ...
+@overload
 def planar_steady_state(
     x_profile: Optional[TableProfile] = None,
     y_profile: Optional[TableProfile] = None,
@@ -1926,6 +1995,18 @@ def planar_steady_state(
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
 ) -> PlanarSteadyState: ...
+@overload
+def planar_drift_field(
+    problem: PlanarProblem,
+    *,
+    xs: ArrayLike,
+    ys: ArrayLike,
+    angles: ArrayLike = (0.0,),
+    periods: int,
+    threads: int = 0,
+    progress: Progress = None,
+) -> dict[str, Any]: ...
+@overload
 def planar_drift_field(
     x_profile: Optional[TableProfile] = None,
     y_profile: Optional[TableProfile] = None,
@@ -1941,10 +2022,20 @@ def planar_drift_field(
     angles: ArrayLike = (0.0,),
     periods: int,
     threads: int = 0,
+    progress: Progress = None,
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
-    progress: Progress = None,
 ) -> dict[str, Any]: ...
+@overload
+def planar_stop(
+    problem: PlanarProblem,
+    *,
+    entries: Union[ArrayLike, list[PlanarPose]],
+    max_periods: int,
+    threads: int = 0,
+    progress: Progress = None,
+) -> PlanarStopSummary: ...
+@overload
 def planar_stop(
     x_profile: Optional[TableProfile] = None,
     y_profile: Optional[TableProfile] = None,
@@ -1958,7 +2049,7 @@ def planar_stop(
     entries: Union[ArrayLike, list[PlanarPose]],
     max_periods: int,
     threads: int = 0,
+    progress: Progress = None,
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
-    progress: Progress = None,
 ) -> PlanarStopSummary: ...

@@ -647,6 +647,131 @@ PlanarProblem problem_of(const TableProfile* x_profile, const TableProfile* y_pr
   return p;
 }
 
+// Python's PlanarProblem: C++'s PlanarProblem (planar_analysis.hpp) with the profiles it
+// borrows held alive by the Python object.
+struct PyPlanarProblem {
+  py::object x_profile, y_profile, rotation;  // a TableProfile or None each
+  PlanarProblem problem;
+};
+
+// None, or a TableProfile (TypeError naming `name` otherwise).
+const TableProfile* profile_or_null(const py::object& o, const char* name) {
+  if (o.is_none()) return nullptr;
+  if (!py::isinstance<TableProfile>(o))
+    throw py::type_error(std::string(name) + ": expected a TableProfile or None, got " +
+                         py::str(py::type::of(o).attr("__name__")).cast<std::string>());
+  return o.cast<const TableProfile*>();
+}
+
+// The checked PlanarProblem (the constructor, and unpickling).
+PyPlanarProblem make_problem(const py::object& x_profile, const py::object& y_profile,
+                             const py::object& rotation, const PlanarField& field,
+                             const RigidPart& part, const FrictionLaw& law, double step,
+                             double theta, const py::object& x_direction,
+                             const py::object& y_direction) {
+  PyPlanarProblem pp{x_profile, y_profile, rotation,
+                     problem_of(profile_or_null(x_profile, "x_profile"),
+                                profile_or_null(y_profile, "y_profile"),
+                                profile_or_null(rotation, "rotation"), x_direction, y_direction,
+                                field, part, law, step, theta)};
+  validate(pp.problem.field);
+  validate(pp.problem.part);
+  validate(pp.problem.options);
+  require_planar_law(pp.problem.law);
+  return pp;
+}
+
+void bind_problem(py::module_& m) {
+  const auto none = py::none();
+  py::class_<PyPlanarProblem> cls(m, "PlanarProblem", R"doc(
+Everything one planar run needs, as C++'s PlanarProblem: the table's motion
+T(t) = x_profile(t) x_direction + y_profile(t) y_direction, turning by rotation(t) [rad] about its
+origin (each a TableProfile or None; their periods dividing the longest), the friction `field`
+(a planar field, table coordinates), the `part` (RigidPart), the friction `law` (isotropic and
+velocity-independent) and Moreau's step `step` [-] and `theta`. Checked on construction
+(InvalidParameter naming the first invalid argument); immutable. Every planar analysis takes it
+as its first argument: simulate_planar(problem, periods=3), planar_steady_state(problem), ...
+(the keyword form with the same ten arguments builds one).)doc");
+  cls.def(py::init(&make_problem),
+          py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
+          py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
+          py::arg("step"), py::arg("theta") = 0.5,
+          py::arg("x_direction") = py::make_tuple(1.0, 0.0),
+          py::arg("y_direction") = py::make_tuple(0.0, 1.0))
+      .def_property_readonly(
+          "x_profile", [](const PyPlanarProblem& p) { return p.x_profile; },
+          "the TableProfile along x_direction, or None")
+      .def_property_readonly(
+          "y_profile", [](const PyPlanarProblem& p) { return p.y_profile; },
+          "the TableProfile along y_direction, or None")
+      .def_property_readonly(
+          "rotation", [](const PyPlanarProblem& p) { return p.rotation; },
+          "the TableProfile of the table's angle [rad], or None")
+      .def_property_readonly(
+          "x_direction",
+          [](const PyPlanarProblem& p) {
+            return py::make_tuple(p.problem.motion.e1_x, p.problem.motion.e1_y);
+          },
+          "unit vector (ex, ey) of x_profile's motion")
+      .def_property_readonly(
+          "y_direction",
+          [](const PyPlanarProblem& p) {
+            return py::make_tuple(p.problem.motion.e2_x, p.problem.motion.e2_y);
+          },
+          "unit vector (ex, ey) of y_profile's motion")
+      .def_property_readonly(
+          "field", [](const PyPlanarProblem& p) { return p.problem.field; },
+          "the planar friction field (a copy)")
+      .def_property_readonly(
+          "part", [](const PyPlanarProblem& p) { return p.problem.part; }, "the RigidPart")
+      .def_property_readonly(
+          "law", [](const PyPlanarProblem& p) { return p.problem.law; }, "the FrictionLaw")
+      .def_property_readonly(
+          "step", [](const PyPlanarProblem& p) { return p.problem.options.step; },
+          "Moreau's step h [-]")
+      .def_property_readonly(
+          "theta", [](const PyPlanarProblem& p) { return p.problem.options.theta; },
+          "Moreau's theta, in [0, 1]")
+      .def("__repr__", [](const PyPlanarProblem& p) {
+        const auto r = [](const py::handle& h) { return py::repr(h).cast<std::string>(); };
+        return Repr("PlanarProblem")
+            .raw("x_profile", r(p.x_profile))
+            .raw("y_profile", r(p.y_profile))
+            .raw("rotation", r(p.rotation))
+            .raw("field", r(py::cast(p.problem.field)))
+            .raw("part", r(py::cast(p.problem.part)))
+            .raw("law", r(py::cast(p.problem.law)))("step", p.problem.options.step)(
+                "theta", p.problem.options.theta)
+            .raw("x_direction", r(py::make_tuple(p.problem.motion.e1_x, p.problem.motion.e1_y)))
+            .raw("y_direction", r(py::make_tuple(p.problem.motion.e2_x, p.problem.motion.e2_y)))
+            .str();
+      });
+  using PP = PyPlanarProblem;
+  def_record(
+      cls,
+      [](py::object x_profile, py::object y_profile, py::object rotation, PlanarField field,
+         RigidPart part, FrictionLaw law, double step, double theta, py::object x_direction,
+         py::object y_direction) {
+        return make_problem(x_profile, y_profile, rotation, field, part, law, step, theta,
+                            x_direction, y_direction);
+      },
+      field("x_profile", [](const PP& p) { return p.x_profile; }),
+      field("y_profile", [](const PP& p) { return p.y_profile; }),
+      field("rotation", [](const PP& p) { return p.rotation; }),
+      field("field", [](const PP& p) { return p.problem.field; }),
+      field("part", [](const PP& p) { return p.problem.part; }),
+      field("law", [](const PP& p) { return p.problem.law; }),
+      field("step", [](const PP& p) { return p.problem.options.step; }),
+      field("theta", [](const PP& p) { return p.problem.options.theta; }),
+      field("x_direction",
+            [](const PP& p) {
+              return py::object(py::make_tuple(p.problem.motion.e1_x, p.problem.motion.e1_y));
+            }),
+      field("y_direction", [](const PP& p) {
+        return py::object(py::make_tuple(p.problem.motion.e2_x, p.problem.motion.e2_y));
+      }));
+}
+
 // Records the state every `every` steps.
 struct PlanarRecorder final : PlanarStepSink {
   const PythonProgress* interrupt = nullptr;  // the run stops here once cancelled (Ctrl-C)
@@ -717,6 +842,7 @@ naming the first invalid argument. Runs without the GIL.)doc";
 std::string doc(const char* head) { return std::string(head) + kCommonDoc; }
 
 void bind_runs(py::module_& m) {
+  bind_problem(m);
   const auto none = py::none();
   const py::tuple zero3 = py::make_tuple(0.0, 0.0, 0.0);
   const py::tuple ex = py::make_tuple(1.0, 0.0), ey = py::make_tuple(0.0, 1.0);
@@ -734,65 +860,84 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
            stick for a zero twist, else slip)
   int32    pivot (the pivot contact's index in part.patch for mode 1, else -1)
 )doc");
+  // simulate_planar on a PlanarProblem: both overloads below call it.
+  const auto simulate_planar_of = [](const PlanarProblem& p,
+                          std::optional<long long> periods, std::optional<double> duration,
+              const py::object& pose_in, const py::object& twist_in, long long every) {
+    const PlanarPose pose = pose_of(pose_in, "pose");
+    const PlanarTwist twist = twist_of(twist_in, "twist");
+    if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
+    if (periods.has_value() == duration.has_value())
+      throw InvalidParameter("periods", periods ? std::to_string(*periods) : "None",
+                             "give exactly one of periods and duration");
+    validate(p.field);
+    validate(p.part);
+    validate(p.options);
+    require_planar_law(p.law);
+    double steps = 0;
+    if (periods) {
+      if (!p.motion.first && !p.motion.second && !p.motion.rotation)
+        throw InvalidParameter("periods", static_cast<double>(*periods),
+                               "needs a table profile (a table at rest: give duration)");
+      if (*periods < 0)
+        throw InvalidParameter("periods", static_cast<double>(*periods), "must be >= 0");
+      steps = static_cast<double>(*periods) * static_cast<double>(steps_per_period(p));
+    } else {
+      require_non_negative("duration", *duration);
+      const double step = p.options.step;
+      steps = std::round(*duration / step);
+      if (!(std::abs(*duration / step - steps) <= 1e-9 * std::max(1.0, steps)))
+        throw InvalidParameter("duration", *duration,
+                               "must be a whole number of steps (step " +
+                                   format_number(step) + ")");
+    }
+    if (steps > kMaxTimeSteps)
+      throw InvalidParameter("steps", steps, "the run must have at most 1e9 steps");
+    if (std::floor(steps / static_cast<double>(every)) + 2 > kMaxRecordedSamples)
+      throw InvalidParameter("every", static_cast<double>(every),
+                             "the run would record more than 1e7 samples: raise every");
+    const PythonProgress interrupt{py::none()};
+    PlanarRecorder rec;
+    rec.every = every;
+    rec.interrupt = &interrupt;
+    interrupt.run([&] {
+      PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
+      rec.record(s);
+      advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
+                           static_cast<long long>(steps), &rec);
+      if (rec.last != s.step_index) rec.record(s);
+    });
+    return std::move(rec).to_dict();
+  };
   m.def(
       "simulate_planar",
-      [](const TableProfile* x_profile, const TableProfile* y_profile,
+      [simulate_planar_of](const PyPlanarProblem& problem,
+              std::optional<long long> periods, std::optional<double> duration,
+              const py::object& pose_in, const py::object& twist_in, long long every) {
+        return simulate_planar_of(problem.problem, periods, duration, pose_in, twist_in, every);
+      },
+      py::arg("problem"), py::kw_only(),
+      py::arg("periods") = none, py::arg("duration") = none, py::arg("pose") = zero3,
+      py::arg("twist") = zero3, py::arg("every") = 1,
+      simulate_doc.c_str());
+  m.def(
+      "simulate_planar",
+      [simulate_planar_of](const TableProfile* x_profile, const TableProfile* y_profile,
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
-         const FrictionLaw& law, double step, double theta, std::optional<long long> periods,
-         std::optional<double> duration, const py::object& pose_in, const py::object& twist_in,
-         long long every, const py::object& x_direction, const py::object& y_direction) {
-        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
-                                           y_direction, field, part, law, step, theta);
-        const PlanarPose pose = pose_of(pose_in, "pose");
-        const PlanarTwist twist = twist_of(twist_in, "twist");
-        if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
-        if (periods.has_value() == duration.has_value())
-          throw InvalidParameter("periods", periods ? std::to_string(*periods) : "None",
-                                 "give exactly one of periods and duration");
-        validate(p.field);
-        validate(p.part);
-        validate(p.options);
-        require_planar_law(p.law);
-        double steps = 0;
-        if (periods) {
-          if (!x_profile && !y_profile && !rotation)
-            throw InvalidParameter("periods", static_cast<double>(*periods),
-                                   "needs a table profile (a table at rest: give duration)");
-          if (*periods < 0)
-            throw InvalidParameter("periods", static_cast<double>(*periods), "must be >= 0");
-          steps = static_cast<double>(*periods) * static_cast<double>(steps_per_period(p));
-        } else {
-          require_non_negative("duration", *duration);
-          steps = std::round(*duration / step);
-          if (!(std::abs(*duration / step - steps) <= 1e-9 * std::max(1.0, steps)))
-            throw InvalidParameter("duration", *duration,
-                                   "must be a whole number of steps (step " +
-                                       format_number(step) + ")");
-        }
-        if (steps > kMaxTimeSteps)
-          throw InvalidParameter("steps", steps, "the run must have at most 1e9 steps");
-        if (std::floor(steps / static_cast<double>(every)) + 2 > kMaxRecordedSamples)
-          throw InvalidParameter("every", static_cast<double>(every),
-                                 "the run would record more than 1e7 samples: raise every");
-        const PythonProgress interrupt{py::none()};
-        PlanarRecorder rec;
-        rec.every = every;
-        rec.interrupt = &interrupt;
-        interrupt.run([&] {
-          PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
-          rec.record(s);
-          advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
-                               static_cast<long long>(steps), &rec);
-          if (rec.last != s.step_index) rec.record(s);
-        });
-        return std::move(rec).to_dict();
+         const FrictionLaw& law, double step, double theta, 
+              std::optional<long long> periods, std::optional<double> duration,
+              const py::object& pose_in, const py::object& twist_in, long long every,
+              const py::object& x_direction, const py::object& y_direction) {
+        return simulate_planar_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
+                                part, law, step, theta),
+                     periods, duration, pose_in, twist_in, every);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
-      py::arg("step"), py::arg("theta") = 0.5, py::arg("periods") = none,
-      py::arg("duration") = none, py::arg("pose") = zero3, py::arg("twist") = zero3,
-      py::arg("every") = 1, py::arg("x_direction") = ex, py::arg("y_direction") = ey,
-      simulate_doc.c_str());
+      py::arg("step"), py::arg("theta") = 0.5,
+      py::arg("periods") = none, py::arg("duration") = none, py::arg("pose") = zero3,
+      py::arg("twist") = zero3, py::arg("every") = 1,
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, simulate_doc.c_str());
 
   static const std::string steady_doc = doc(R"doc(
 The window-average drift of a part (kept for comparison; the steady state is
@@ -803,24 +948,40 @@ with the last window's mean drift velocity and spin relative to the table, its P
 change of the drift between the two windows, and the end pose. The step must divide the period
 into 2 to 1e8 whole steps.
 )doc");
+  // planar_steady on a PlanarProblem: both overloads below call it.
+  const auto planar_steady_of = [](const PlanarProblem& p,
+                          const py::object& pose, const py::object& twist, int transient, int window) {
+    const PlanarPose start = pose_of(pose, "pose");
+    const PlanarTwist u = twist_of(twist, "twist");
+    py::gil_scoped_release release;
+    return planar_steady(p, start, u, transient, window);
+  };
   m.def(
       "planar_steady",
-      [](const TableProfile* x_profile, const TableProfile* y_profile,
+      [planar_steady_of](const PyPlanarProblem& problem,
+              const py::object& pose, const py::object& twist, int transient, int window) {
+        return planar_steady_of(problem.problem, pose, twist, transient, window);
+      },
+      py::arg("problem"), py::kw_only(),
+      py::arg("pose") = zero3, py::arg("twist") = zero3, py::arg("transient") = 20,
+      py::arg("window") = 5,
+      steady_doc.c_str());
+  m.def(
+      "planar_steady",
+      [planar_steady_of](const TableProfile* x_profile, const TableProfile* y_profile,
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
-         const FrictionLaw& law, double step, double theta, const py::object& pose,
-         const py::object& twist, int transient, int window, const py::object& x_direction,
-         const py::object& y_direction) {
-        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
-                                           y_direction, field, part, law, step, theta);
-        const PlanarPose start = pose_of(pose, "pose");
-        const PlanarTwist u = twist_of(twist, "twist");
-        py::gil_scoped_release release;
-        return planar_steady(p, start, u, transient, window);
+         const FrictionLaw& law, double step, double theta, 
+              const py::object& pose, const py::object& twist, int transient, int window,
+              const py::object& x_direction, const py::object& y_direction) {
+        return planar_steady_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
+                                part, law, step, theta),
+                     pose, twist, transient, window);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
-      py::arg("step"), py::arg("theta") = 0.5, py::arg("pose") = zero3,
-      py::arg("twist") = zero3, py::arg("transient") = 20, py::arg("window") = 5,
+      py::arg("step"), py::arg("theta") = 0.5,
+      py::arg("pose") = zero3, py::arg("twist") = zero3, py::arg("transient") = 20,
+      py::arg("window") = 5,
       py::arg("x_direction") = ex, py::arg("y_direction") = ey, steady_doc.c_str());
 
   static const std::string steady_state_doc = doc(R"doc(
@@ -834,28 +995,46 @@ piecewise-constant accelerations), Moreau's rigid-part stepper otherwise. A chan
 friction level under the part during the run is reported (level_changed), never averaged
 over. Returns a PlanarSteadyState (drift NaN unless converged).
 )doc");
+  // planar_steady_state on a PlanarProblem: both overloads below call it.
+  const auto planar_steady_state_of = [](const PlanarProblem& p,
+                          const py::object& pose, const py::object& twist, int transient_periods,
+              int max_periods, double tolerance) {
+    const PlanarPose start = pose_of(pose, "pose");
+    const PlanarTwist u = twist_of(twist, "twist");
+    PlanarSteadyStateOptions o;
+    o.transient_periods = transient_periods;
+    o.max_periods = max_periods;
+    o.tolerance = tolerance;
+    py::gil_scoped_release release;
+    return planar_steady_state(p, start, u, o);
+  };
   m.def(
       "planar_steady_state",
-      [](const TableProfile* x_profile, const TableProfile* y_profile,
+      [planar_steady_state_of](const PyPlanarProblem& problem,
+              const py::object& pose, const py::object& twist, int transient_periods,
+              int max_periods, double tolerance) {
+        return planar_steady_state_of(problem.problem, pose, twist, transient_periods, max_periods, tolerance);
+      },
+      py::arg("problem"), py::kw_only(),
+      py::arg("pose") = zero3, py::arg("twist") = zero3, py::arg("transient_periods") = 0,
+      py::arg("max_periods") = 2000, py::arg("tolerance") = 0.0,
+      steady_state_doc.c_str());
+  m.def(
+      "planar_steady_state",
+      [planar_steady_state_of](const TableProfile* x_profile, const TableProfile* y_profile,
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
-         const FrictionLaw& law, double step, double theta, const py::object& pose,
-         const py::object& twist, int transient_periods, int max_periods, double tolerance,
-         const py::object& x_direction, const py::object& y_direction) {
-        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
-                                           y_direction, field, part, law, step, theta);
-        const PlanarPose start = pose_of(pose, "pose");
-        const PlanarTwist u = twist_of(twist, "twist");
-        PlanarSteadyStateOptions o;
-        o.transient_periods = transient_periods;
-        o.max_periods = max_periods;
-        o.tolerance = tolerance;
-        py::gil_scoped_release release;
-        return planar_steady_state(p, start, u, o);
+         const FrictionLaw& law, double step, double theta, 
+              const py::object& pose, const py::object& twist, int transient_periods,
+              int max_periods, double tolerance,
+              const py::object& x_direction, const py::object& y_direction) {
+        return planar_steady_state_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
+                                part, law, step, theta),
+                     pose, twist, transient_periods, max_periods, tolerance);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
-      py::arg("step"), py::arg("theta") = 0.5, py::arg("pose") = zero3,
-      py::arg("twist") = zero3, py::arg("transient_periods") = 0,
+      py::arg("step"), py::arg("theta") = 0.5,
+      py::arg("pose") = zero3, py::arg("twist") = zero3, py::arg("transient_periods") = 0,
       py::arg("max_periods") = 2000, py::arg("tolerance") = 0.0,
       py::arg("x_direction") = ex, py::arg("y_direction") = ey, steady_state_doc.c_str());
 
@@ -874,56 +1053,73 @@ angles [rad]), the mean drift over `periods` table periods ([1, 100000]), in par
 `progress(done, total)`, if given, is called as samples complete (from worker threads, one
 call at a time, holding the GIL); Ctrl-C stops the study with KeyboardInterrupt.
 )doc");
+  // planar_drift_field on a PlanarProblem: both overloads below call it.
+  const auto planar_drift_field_of = [](const PlanarProblem& p,
+                          const py::object& xs_in, const py::object& ys_in, const py::object& angles_in,
+              int periods, int threads, const py::object& progress_in) {
+    const std::vector<double> xs = to_vector(xs_in, "xs"), ys = to_vector(ys_in, "ys"),
+                              angles = to_vector(angles_in, "angles");
+    const PythonProgress progress(progress_in);
+    const std::vector<PlanarDriftSample> samples = progress.run([&] {
+      return planar_drift_field(p, xs, ys, angles, periods, progress.callback(), threads);
+    });
+    const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(ys.size()),
+                                         static_cast<py::ssize_t>(xs.size()),
+                                         static_cast<py::ssize_t>(angles.size())};
+    py::array_t<double> x(shape), y(shape), angle(shape), dx(shape), dy(shape), rate(shape);
+    py::array_t<std::int64_t> stick(shape), pivot(shape), slip(shape);
+    py::array_t<bool> failed(shape);
+    py::list list;
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      const PlanarDriftSample& s = samples[i];
+      x.mutable_data()[i] = s.x, y.mutable_data()[i] = s.y;
+      angle.mutable_data()[i] = s.angle;
+      dx.mutable_data()[i] = s.drift_x, dy.mutable_data()[i] = s.drift_y;
+      rate.mutable_data()[i] = s.rotation_rate;
+      stick.mutable_data()[i] = s.census.stick, pivot.mutable_data()[i] = s.census.pivot;
+      slip.mutable_data()[i] = s.census.slip;
+      failed.mutable_data()[i] = !s.failure.empty();
+      list.append(py::cast(s));
+    }
+    py::dict d;
+    d["xs"] = to_array(std::vector(xs)), d["ys"] = to_array(std::vector(ys));
+    d["angles"] = to_array(std::vector(angles));
+    d["x"] = x, d["y"] = y, d["angle"] = angle;
+    d["drift_x"] = dx, d["drift_y"] = dy, d["rotation_rate"] = rate;
+    d["stick"] = stick, d["pivot"] = pivot, d["slip"] = slip;
+    d["failed"] = failed;
+    d["samples"] = list;
+    return d;
+  };
   m.def(
       "planar_drift_field",
-      [](const TableProfile* x_profile, const TableProfile* y_profile,
+      [planar_drift_field_of](const PyPlanarProblem& problem,
+              const py::object& xs_in, const py::object& ys_in, const py::object& angles_in,
+              int periods, int threads, const py::object& progress_in) {
+        return planar_drift_field_of(problem.problem, xs_in, ys_in, angles_in, periods, threads, progress_in);
+      },
+      py::arg("problem"), py::kw_only(),
+      py::arg("xs"), py::arg("ys"), py::arg("angles") = py::make_tuple(0.0), py::arg("periods"),
+      py::arg("threads") = 0, py::arg("progress") = none,
+      drift_doc.c_str());
+  m.def(
+      "planar_drift_field",
+      [planar_drift_field_of](const TableProfile* x_profile, const TableProfile* y_profile,
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
-         const FrictionLaw& law, double step, double theta, const py::object& xs_in,
-         const py::object& ys_in, const py::object& angles_in, int periods, int threads,
-         const py::object& x_direction, const py::object& y_direction,
-         const py::object& progress_in) {
-        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
-                                           y_direction, field, part, law, step, theta);
-        const std::vector<double> xs = to_vector(xs_in, "xs"), ys = to_vector(ys_in, "ys"),
-                                  angles = to_vector(angles_in, "angles");
-        const PythonProgress progress(progress_in);
-        const std::vector<PlanarDriftSample> samples = progress.run([&] {
-          return planar_drift_field(p, xs, ys, angles, periods, progress.callback(), threads);
-        });
-        const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(ys.size()),
-                                             static_cast<py::ssize_t>(xs.size()),
-                                             static_cast<py::ssize_t>(angles.size())};
-        py::array_t<double> x(shape), y(shape), angle(shape), dx(shape), dy(shape), rate(shape);
-        py::array_t<std::int64_t> stick(shape), pivot(shape), slip(shape);
-        py::array_t<bool> failed(shape);
-        py::list list;
-        for (std::size_t i = 0; i < samples.size(); ++i) {
-          const PlanarDriftSample& s = samples[i];
-          x.mutable_data()[i] = s.x, y.mutable_data()[i] = s.y;
-          angle.mutable_data()[i] = s.angle;
-          dx.mutable_data()[i] = s.drift_x, dy.mutable_data()[i] = s.drift_y;
-          rate.mutable_data()[i] = s.rotation_rate;
-          stick.mutable_data()[i] = s.census.stick, pivot.mutable_data()[i] = s.census.pivot;
-          slip.mutable_data()[i] = s.census.slip;
-          failed.mutable_data()[i] = !s.failure.empty();
-          list.append(py::cast(s));
-        }
-        py::dict d;
-        d["xs"] = to_array(std::vector(xs)), d["ys"] = to_array(std::vector(ys));
-        d["angles"] = to_array(std::vector(angles));
-        d["x"] = x, d["y"] = y, d["angle"] = angle;
-        d["drift_x"] = dx, d["drift_y"] = dy, d["rotation_rate"] = rate;
-        d["stick"] = stick, d["pivot"] = pivot, d["slip"] = slip;
-        d["failed"] = failed;
-        d["samples"] = list;
-        return d;
+         const FrictionLaw& law, double step, double theta, 
+              const py::object& xs_in, const py::object& ys_in, const py::object& angles_in,
+              int periods, int threads, const py::object& progress_in,
+              const py::object& x_direction, const py::object& y_direction) {
+        return planar_drift_field_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
+                                part, law, step, theta),
+                     xs_in, ys_in, angles_in, periods, threads, progress_in);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
-      py::arg("step"), py::arg("theta") = 0.5, py::arg("xs"), py::arg("ys"),
-      py::arg("angles") = py::make_tuple(0.0), py::arg("periods"), py::arg("threads") = 0,
-      py::arg("x_direction") = ex, py::arg("y_direction") = ey, py::arg("progress") = none,
-      drift_doc.c_str());
+      py::arg("step"), py::arg("theta") = 0.5,
+      py::arg("xs"), py::arg("ys"), py::arg("angles") = py::make_tuple(0.0), py::arg("periods"),
+      py::arg("threads") = 0, py::arg("progress") = none,
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, drift_doc.c_str());
 
   static const std::string stop_doc = doc(R"doc(
 Stopping in a rough region: from rest at each entry pose (`entries`: an N x 3 array-like of
@@ -933,25 +1129,44 @@ Stopping in a rough region: from rest at each entry pose (`entries`: an N x 3 ar
 stopped end positions and the range of their angles. `progress(done, total)` as in
 planar_drift_field, per entry; Ctrl-C stops the study after the runs under way.
 )doc");
+  // planar_stop on a PlanarProblem: both overloads below call it.
+  const auto planar_stop_of = [](const PlanarProblem& p,
+                          const py::object& entries_in, int max_periods, int threads,
+              const py::object& progress_in) {
+    const std::vector<PlanarPose> entries = entries_of(entries_in);
+    const PythonProgress progress(progress_in);
+    return progress.run(
+        [&] { return planar_stop(p, entries, max_periods, progress.callback(), threads); });
+  };
   m.def(
       "planar_stop",
-      [](const TableProfile* x_profile, const TableProfile* y_profile,
+      [planar_stop_of](const PyPlanarProblem& problem,
+              const py::object& entries_in, int max_periods, int threads,
+              const py::object& progress_in) {
+        return planar_stop_of(problem.problem, entries_in, max_periods, threads, progress_in);
+      },
+      py::arg("problem"), py::kw_only(),
+      py::arg("entries"), py::arg("max_periods"), py::arg("threads") = 0,
+      py::arg("progress") = none,
+      stop_doc.c_str());
+  m.def(
+      "planar_stop",
+      [planar_stop_of](const TableProfile* x_profile, const TableProfile* y_profile,
          const TableProfile* rotation, const PlanarField& field, const RigidPart& part,
-         const FrictionLaw& law, double step, double theta, const py::object& entries_in,
-         int max_periods, int threads, const py::object& x_direction,
-         const py::object& y_direction, const py::object& progress_in) {
-        const PlanarProblem p = problem_of(x_profile, y_profile, rotation, x_direction,
-                                           y_direction, field, part, law, step, theta);
-        const std::vector<PlanarPose> entries = entries_of(entries_in);
-        const PythonProgress progress(progress_in);
-        return progress.run(
-            [&] { return planar_stop(p, entries, max_periods, progress.callback(), threads); });
+         const FrictionLaw& law, double step, double theta, 
+              const py::object& entries_in, int max_periods, int threads,
+              const py::object& progress_in,
+              const py::object& x_direction, const py::object& y_direction) {
+        return planar_stop_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
+                                part, law, step, theta),
+                     entries_in, max_periods, threads, progress_in);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
-      py::arg("step"), py::arg("theta") = 0.5, py::arg("entries"), py::arg("max_periods"),
-      py::arg("threads") = 0, py::arg("x_direction") = ex, py::arg("y_direction") = ey,
-      py::arg("progress") = none, stop_doc.c_str());
+      py::arg("step"), py::arg("theta") = 0.5,
+      py::arg("entries"), py::arg("max_periods"), py::arg("threads") = 0,
+      py::arg("progress") = none,
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey, stop_doc.c_str());
 }
 
 }  // namespace

@@ -168,6 +168,9 @@ EXAMPLES = {
     "PlanarPose": lambda: sa.PlanarPose(0.1, -0.2, 0.3),
     "PlanarTwist": lambda: sa.PlanarTwist(0.1, -0.2, 2.0),
     "PlanarCensus": lambda: sa.PlanarCensus(3, 1, 2),
+    "PlanarProblem": lambda: sa.PlanarProblem(
+        PROFILE, sa.ThreePhaseProfile(0.5, 0.02, 2.5, 1.5), field=example("HalfPlaneStepField"),
+        part=example("RigidPart"), law=sa.FrictionLaw(1.2, 1.0), step=0.01, theta=0.6),
     "PlanarSteadyResult": lambda: sa.planar_steady(
         PROFILE, field=sa.UniformPlanarField(), part=example("RigidPart"), step=0.01,
         twist=(0.0, 0.1, 0.5), transient=1, window=1),

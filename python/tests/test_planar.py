@@ -267,3 +267,45 @@ def test_planar_steady_state_of_a_point_on_an_x_motion_is_the_1d_steady_state():
     with pytest.raises(sa.InvalidParameter, match="max_periods"):
         sa.planar_steady_state(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
                                step=1e-3, max_periods=0)
+
+
+# ---- the model object (issue 21: a PlanarProblem instead of ten loose arguments) ------------
+
+def test_a_planar_problem_is_the_keyword_form_bit_for_bit():
+    cross = sa.ThreePhaseProfile(0.5, 0.02, 2.5, 1.5)
+    field = sa.HalfPlaneStepField(origin_x=0.3, width=0.05, c_mu=4.0)
+    part = sa.RigidPart(0.01, sa.rectangle_patch(0.04, 0.02, 2, 2))
+    law = sa.FrictionLaw(1.2, 1.0)
+    loose = dict(field=field, part=part, law=law, step=0.005, theta=0.5)
+    problem = sa.PlanarProblem(PROFILE, cross, **loose)
+    assert problem.x_profile is PROFILE and problem.y_profile is cross and problem.rotation is None
+    assert problem.field == field and problem.part == part and problem.law == law
+    assert (problem.step, problem.theta) == (0.005, 0.5)
+    assert problem.x_direction == (1.0, 0.0) and problem.y_direction == (0.0, 1.0)
+    assert repr(problem).startswith("PlanarProblem(x_profile=")
+    a = sa.simulate_planar(problem, periods=2, pose=(0.1, 0.0, 0.3))
+    b = sa.simulate_planar(PROFILE, cross, periods=2, pose=(0.1, 0.0, 0.3), **loose)
+    assert all(np.array_equal(a[k], b[k]) for k in b)
+    s1 = sa.planar_steady_state(problem, max_periods=50)
+    s2 = sa.planar_steady_state(PROFILE, cross, max_periods=50, **loose)
+    assert s1.to_dict() == s2.to_dict() or (math.isnan(s1.drift_x) and math.isnan(s2.drift_x))
+    f1 = sa.planar_drift_field(problem, xs=[0.0, 0.5], ys=[0.0], periods=1, threads=1)
+    f2 = sa.planar_drift_field(PROFILE, cross, xs=[0.0, 0.5], ys=[0.0], periods=1, threads=2,
+                               **loose)
+    assert np.array_equal(f1["drift_x"], f2["drift_x"])
+    r1 = sa.planar_stop(problem, entries=[[0.0, 0.0, 0.0]], max_periods=30, threads=1)
+    r2 = sa.planar_stop(PROFILE, cross, entries=[[0.0, 0.0, 0.0]], max_periods=30, **loose)
+    assert r1.runs[0].to_dict() == r2.runs[0].to_dict()
+    w1 = sa.planar_steady(problem, transient=1, window=1)
+    w2 = sa.planar_steady(PROFILE, cross, transient=1, window=1, **loose)
+    assert w1.to_dict() == w2.to_dict()
+
+
+def test_a_planar_problem_is_checked_when_made():
+    with pytest.raises(sa.InvalidParameter) as error:
+        sa.PlanarProblem(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(), step=-1.0)
+    assert error.value.name == "step"
+    with pytest.raises(sa.InvalidParameter) as error:
+        sa.PlanarProblem(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(), step=0.01,
+                         x_direction=(1.0, 1.0))
+    assert error.value.name == "x_direction"
