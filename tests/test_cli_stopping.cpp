@@ -362,9 +362,22 @@ TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
   ASSERT_EQ(two.exit_code, 0) << two.err;
   EXPECT_NEAR(f["end_position"].get<double>(),
               json::parse(two.out)["end_position"].get<double>(), 1e-9);
-  // accuracy and accumulation are written for the two-region table (eqs. 41, 59): a field is
-  // refused by name, not replaced; a field key beside another friction map is refused too.
-  expect_clean_failure(box, box.run({"accuracy", "--field-file", field}), {"friction"});
+  // accuracy takes the field where it stands (x_mu: its rise, 0.3) and, the table's motion
+  // being the same everywhere, gives the two-region table's spread (placed at x_mu = dx) with
+  // the ends moved by 0.3 - dx. The default y2'' = 2.3, y3'' = 1.3 accumulate (dx_d = 0).
+  const CliResult acc_field =
+      box.run({"accuracy", "--field-file", field, "--entries", "5", "--json"});
+  ASSERT_EQ(acc_field.exit_code, 0) << acc_field.err;
+  const CliResult acc_two = box.run({"accuracy", "--c-mu", "3", "--entries", "5", "--json"});
+  ASSERT_EQ(acc_two.exit_code, 0) << acc_two.err;
+  const json af = json::parse(acc_field.out), at = json::parse(acc_two.out);
+  EXPECT_NEAR(af["x_mu"].get<double>(), 0.3, kSameFormula);
+  EXPECT_NEAR(af["dx_d"].get<double>(), at["dx_d"].get<double>(), 1e-9);
+  EXPECT_NEAR(af["x_d"].get<double>() - 0.3,
+              at["x_d"].get<double>() - at["x_mu"].get<double>(), 1e-9);
+  EXPECT_EQ(af["accumulates"], at["accumulates"]);
+  // accumulation is written for the two-region table (eq. 59): a field is refused by name,
+  // not replaced; a field key beside another friction map is refused too.
   expect_clean_failure(box, box.run({"accumulation", "--field-file", field}), {"friction"});
   expect_clean_failure(
       box, box.run({"simulate", "--friction", "two-region", "--field-file", field, "--periods", "1"}),

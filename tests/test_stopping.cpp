@@ -8,6 +8,8 @@
 
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/simulate/simulate.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
@@ -194,4 +196,44 @@ TEST(Positioning, SpeedDependentLawPlacesXMuAtTheLargestSteadyDisplacement) {
     EXPECT_NEAR(r.x_mu, max_x, kSampledMaximum) << law.describe();
     EXPECT_TRUE(std::isfinite(r.dx_d)) << law.describe();
   }
+}
+
+// Positioning accuracy on a friction field where it stands (issue 21: accuracy takes any
+// field). A stepped field under a uniform footprint is the two-region table written as a field
+// (eq. 9 as a window average of one step), and the table's motion does not depend on where the
+// part is: the field placed at Δx gives the two-region result, and the same field moved on by
+// 0.37 gives it moved by 0.37. The second method is the two-region overload (checked against
+// brute force above). kPlacementTol: the runs differ only by the rounding of positions ~1 and
+// of the window average's arithmetic (a few ulps per arc over ~40 periods of arcs).
+TEST(Positioning, AFieldWhereItStandsIsTheTwoRegionTableMoved) {
+  constexpr double kPlacementTol = 1e-9;
+  const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});
+  PositioningOptions o;
+  o.entries = 7;
+  const PositioningAccuracy paper = positioning_accuracy(profile, 0.05, 2.5, o);
+  ASSERT_TRUE(paper.all_stopped);
+  ASSERT_GT(paper.dx_d, 1e-3);  // a spread to compare, not a single accumulation point
+  for (const double shift : {0.0, 0.37}) {
+    SCOPED_TRACE(shift);
+    const FieldFriction field(FrictionField::steps({paper.x_mu + shift}, {1.0, 2.5}),
+                              UniformFootprint{0.05});
+    const PositioningAccuracy moved = positioning_accuracy(profile, FrictionLaw{}, field, o);
+    ASSERT_TRUE(moved.all_stopped);
+    EXPECT_EQ(moved.x_mu, paper.x_mu + shift);
+    EXPECT_NEAR(moved.x_stick_min, paper.x_stick_min + shift, kPlacementTol);
+    EXPECT_NEAR(moved.dx_d, paper.dx_d, kPlacementTol);
+    EXPECT_NEAR(moved.x_d, paper.x_d + shift, kPlacementTol);
+    EXPECT_NEAR(moved.overshoot_min, paper.overshoot_min, kPlacementTol);
+    ASSERT_EQ(moved.entries.size(), paper.entries.size());
+    for (std::size_t i = 0; i < moved.entries.size(); ++i)
+      EXPECT_NEAR(moved.entries[i], paper.entries[i] + shift, kPlacementTol);
+  }
+  // Where the part cannot arrive in the uniform table's steady state, or nothing rises.
+  EXPECT_THROW(positioning_accuracy(profile, FrictionLaw{},
+                                    FieldFriction(FrictionField::steps({0.5}, {2.0, 5.0}),
+                                                  UniformFootprint{0.05}),
+                                    o),
+               InvalidParameter);
+  EXPECT_THROW(positioning_accuracy(profile, FrictionLaw{}, UniformFriction{}, o),
+               InvalidParameter);
 }

@@ -91,14 +91,17 @@ std::string accuracy_table(const json& j, UnitSystem units) {
 void run_accuracy(const ConfigFlags& flags, const AccuracyFlags& f) {
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
-  const SimulateModel model = stopping_model(config, "accuracy");
-  const TwoRegionFriction& friction = two_region(model);
+  const SimulateModel model = stopping_model(config, "accuracy", true);
   PositioningOptions options;
   options.entries = f.entries;
   options.stopping.max_periods = f.max_periods;
   options.stopping.fractions = {0.99, 0.999};  // the CSV's periods_p99, periods_p999
+  // The two-region table is placed at x_mu = Δx (the paper's Sect. 7.1); a field stands where
+  // its file puts it, and the entries are placed before its rise.
+  const TwoRegionFriction* two = model.friction->two_region();
   const PositioningAccuracy a =
-      positioning_accuracy(*model.profile, model.law, friction.width(), friction.c_mu(), options);
+      two ? positioning_accuracy(*model.profile, model.law, two->width(), two->c_mu(), options)
+          : positioning_accuracy(*model.profile, model.law, *model.friction, options);
   const json report = accuracy_json(model, a, f.max_periods);
   deliver_csv_and_report(paths, paths.csv ? entries_csv(a, model.output_units()) : "", report,
                          accuracy_table(report, model.units));
@@ -112,8 +115,10 @@ void add_accuracy_command(CLI::App& app) {
       "Positioning accuracy (Sect. 7.1): N steady-state entries x_0s in [-v_bar dt, 0] walk into "
       "the two-region table with x_mu = dx (the largest displacement in one steady period); "
       "their end positions give dx_d (eq. 39), x_d and whether every entry accumulates at "
-      "x_stick,min (eq. 41). --out: per-entry CSV. Needs a piecewise-constant table "
-      "acceleration.");
+      "x_stick,min (eq. 41). On a friction field (--field-file; level 1 before its rise) the "
+      "field stands where the file puts it, x_mu is its rise and the entries lie in "
+      "[x_mu - dx - v_bar dt, x_mu - dx]. --out: per-entry CSV. Needs a piecewise-constant "
+      "table acceleration.");
   auto flags = add_stopping_config_flags(
       *sub,
       {{"x_mu", ""}, {"x0", ""}, {"v0", ""}, {"t0", ""}, {"output_step", ""},

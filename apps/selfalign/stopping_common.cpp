@@ -32,8 +32,8 @@ SimulateModel stopping_model(const SimulateConfig& config, const std::string& co
   const bool field = *resolve_simulate_config(config).friction == "field";
   if (field && !field_allowed)
     throw InvalidParameter("friction", "field",
-                           command + " needs the two-region table (eqs. 41, 59: --x-mu, --width, "
-                                     "--c-mu); `stop` takes a field");
+                           command + " needs the two-region table (eq. 59: --x-mu, --width, "
+                                     "--c-mu); `stop` and `accuracy` take a field");
   if (config.friction && *config.friction == "uniform")
     throw InvalidParameter("friction", "uniform",
                            command + " needs a rise of friction: two-region" +

@@ -1028,10 +1028,19 @@ class PositioningAccuracy:
     def all_stopped(self) -> bool: ...
     def to_dict(self) -> dict[str, Any]: ...
 
+@overload
 def positioning_accuracy(
     profile: TableProfile,
     width: float,
     c_mu: float,
+    options: PositioningOptions = ...,
+    *,
+    law: FrictionLaw = ...,
+) -> PositioningAccuracy: ...
+@overload
+def positioning_accuracy(
+    profile: TableProfile,
+    friction: FrictionMap,
     options: PositioningOptions = ...,
     *,
     law: FrictionLaw = ...,

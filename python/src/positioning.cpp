@@ -107,6 +107,18 @@ Sect. 7.1 for a piecewise-constant or piecewise-linear (finite-jerk) profile on 
 table of width w [-] and ratio c_mu [-] (x_mu is placed at Δx), under the FrictionLaw
 `law` (the paper's by default). Raises InvalidParameter on bad inputs. Runs without the
 GIL.)doc");
+  m.def(
+      "positioning_accuracy",
+      [](const TableProfile& profile, const FrictionMap& friction, const PositioningOptions& o,
+         const FrictionLaw& law) { return positioning_accuracy(profile, law, friction, o); },
+      py::arg("profile"), py::arg("friction"), py::arg("options") = PositioningOptions{},
+      py::kw_only(), py::arg("law") = FrictionLaw{}, py::call_guard<py::gil_scoped_release>(),
+      R"doc(
+Sect. 7.1 on a friction level where it stands (a FieldFriction of steps, or ramps under a point
+footprint; a TwoRegionFriction too): x_mu is the level's rise X, the entries lie in
+[X - Δx - v̄Δt, X - Δx], overshoots are end - X and x_stick_min is eq. (41) on the level's
+pieces. The level must be 1 before its rise (the part arrives in the uniform table's steady
+state). Raises InvalidParameter naming "friction" otherwise. Runs without the GIL.)doc");
 }
 
 py::dict surfaces(std::vector<double> a2, std::vector<double> a3,

@@ -34,6 +34,25 @@ def test_positioning_accuracy_is_eq_39(case1_profile):
     assert acc.accumulating_entries == sum(r.kind == sa.StopKind.accumulation for r in acc.runs)
 
 
+def test_positioning_accuracy_on_a_field_where_it_stands(case1_profile):
+    # The two-region table as a field of steps under the footprint (eq. 9 as a window average),
+    # moved on by 0.4: the table's motion is the same everywhere, so the spread is the paper's
+    # and the ends move with the field (second method: the two-region overload; 1e-9 covers the
+    # rounding of the moved positions over the runs' arcs).
+    options = sa.PositioningOptions(entries=9)
+    paper = sa.positioning_accuracy(case1_profile, W, C_MU, options)
+    field = sa.FieldFriction(sa.FrictionField.steps([paper.x_mu + 0.4], [1.0, C_MU]),
+                             sa.UniformFootprint(W))
+    moved = sa.positioning_accuracy(case1_profile, field, options)
+    assert moved.x_mu == paper.x_mu + 0.4
+    np.testing.assert_allclose(moved.entries, paper.entries + 0.4, rtol=0, atol=1e-9)
+    np.testing.assert_allclose(moved.end_positions, paper.end_positions + 0.4, rtol=0, atol=1e-9)
+    assert moved.dx_d == pytest.approx(paper.dx_d, abs=1e-9)
+    with pytest.raises(sa.InvalidParameter) as error:
+        sa.positioning_accuracy(case1_profile, sa.UniformFriction(), options)
+    assert error.value.name == "friction"
+
+
 def test_positioning_surfaces_shapes_and_cells():
     a2, a3 = np.array([2.5, 3.0, 4.0]), np.array([0.9, 1.2])
     options = sa.PositioningOptions(entries=8, stopping=sa.StoppingOptions(max_periods=300))

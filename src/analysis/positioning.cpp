@@ -44,29 +44,18 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, double wid
   return positioning_accuracy(profile, FrictionLaw{}, width, c_mu, o);
 }
 
-PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
-                                         double width, double c_mu,
-                                         const PositioningOptions& o) {
-  validate(o);
-  require_exact_profile(profile, "positioning");
-  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
-  PositioningAccuracy r;
-  r.steady = steady_state(profile, law, o.steady);
-  r.reaches = r.steady.v_bar > 0;
-  if (!r.reaches) {
-    r.x_mu = r.x_stick_min = r.overshoot_min = r.overshoot_max = r.dx_d = r.x_d = kNaN;
-    return r;
-  }
-  // Δx: the largest displacement in one steady period (Sect. 7.1), from x = 0 at phase 0.
-  const PeriodMap map(profile, law);
-  r.x_mu = largest_displacement(map, r.steady.x_dot_0s);
+namespace {
 
-  const TwoRegionFriction friction(r.x_mu, width, c_mu);
-  r.x_stick_min =
-      law.is_unit() ? stick_position_min(friction, profile.peak_acceleration())
-                    : stick_position_min(*friction.piecewise_affine(), law, profile.peak_acceleration());
+// Sect. 7.1 once the steady state and Δx are known: the entries x0 in [X - Δx - v̄Δt, X - Δx]
+// walk onto `friction`, whose rise is X, and their stopping runs give eq. (39).
+void run_entries(PositioningAccuracy& r, const TableProfile& profile, const FrictionLaw& law,
+                 const FrictionMap& friction, double dx, const PositioningOptions& o) {
+  const double X = r.x_mu;
   const double span = r.steady.v_bar * profile.period();
   r.entries = o.entries == 1 ? std::vector<double>{0.0} : linear_grid(-span, 0.0, o.entries);
+  const double offset = X - dx;  // 0 on the paper's table, where x_mu = Δx
+  if (offset != 0)
+    for (double& x0 : r.entries) x0 += offset;
   r.overshoot_min = std::numeric_limits<double>::infinity();
   r.overshoot_max = -std::numeric_limits<double>::infinity();
   r.all_stopped = true;
@@ -80,16 +69,91 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Fric
       continue;
     }
     r.accumulating_entries += run.kind == StopKind::accumulation;
-    r.overshoot_min = std::min(r.overshoot_min, run.end_position - r.x_mu);
-    r.overshoot_max = std::max(r.overshoot_max, run.end_position - r.x_mu);
+    r.overshoot_min = std::min(r.overshoot_min, run.end_position - X);
+    r.overshoot_max = std::max(r.overshoot_max, run.end_position - X);
   }
   r.accumulates = r.all_stopped && r.accumulating_entries == o.entries;
   if (r.all_stopped) {
     r.dx_d = 0.5 * (r.overshoot_max - r.overshoot_min);  // eq. (39)
-    r.x_d = r.x_mu + r.overshoot_min + r.dx_d;
+    r.x_d = X + r.overshoot_min + r.dx_d;
   } else {
     r.dx_d = r.x_d = kNaN;
   }
+}
+
+// The steady state the part arrives in and Δx, its largest displacement in one steady period
+// (Sect. 7.1, from x = 0 at phase 0); false (and the numbers NaN) when v̄ <= 0.
+bool arrive(PositioningAccuracy& r, const TableProfile& profile, const FrictionLaw& law,
+            const PositioningOptions& o, double& dx) {
+  r.steady = steady_state(profile, law, o.steady);
+  r.reaches = r.steady.v_bar > 0;
+  if (!r.reaches) {
+    r.x_mu = r.x_stick_min = r.overshoot_min = r.overshoot_max = r.dx_d = r.x_d = kNaN;
+    return false;
+  }
+  const PeriodMap map(profile, law);
+  dx = largest_displacement(map, r.steady.x_dot_0s);
+  return true;
+}
+
+}  // namespace
+
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
+                                         double width, double c_mu,
+                                         const PositioningOptions& o) {
+  validate(o);
+  require_exact_profile(profile, "positioning");
+  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  PositioningAccuracy r;
+  double dx = 0;
+  if (!arrive(r, profile, law, o, dx)) return r;
+  r.x_mu = dx;  // the paper's placement: x_mu = Δx
+  const TwoRegionFriction friction(r.x_mu, width, c_mu);
+  r.x_stick_min =
+      law.is_unit() ? stick_position_min(friction, profile.peak_acceleration())
+                    : stick_position_min(*friction.piecewise_affine(), law, profile.peak_acceleration());
+  run_entries(r, profile, law, friction, dx, o);
+  return r;
+}
+
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
+                                         const FrictionMap& friction,
+                                         const PositioningOptions& o) {
+  if (const TwoRegionFriction* two = friction.two_region()) {
+    // The paper's table where it stands: its eq. (41) and accumulation proof apply.
+    validate(o);
+    require_exact_profile(profile, "positioning");
+    PositioningAccuracy r;
+    double dx = 0;
+    if (!arrive(r, profile, law, o, dx)) return r;
+    r.x_mu = two->x_mu();
+    r.x_stick_min = law.is_unit()
+                        ? stick_position_min(*two, profile.peak_acceleration())
+                        : stick_position_min(*two->piecewise_affine(), law,
+                                             profile.peak_acceleration());
+    run_entries(r, profile, law, friction, dx, o);
+    return r;
+  }
+  validate(o);
+  require_exact_profile(profile, "positioning");
+  const PiecewiseAffineFriction* pieces = friction.piecewise_affine();
+  if (!pieces)
+    throw InvalidParameter("friction", "not piecewise affine",
+                           "positioning needs a piecewise-affine friction level (a field of "
+                           "steps, or ramps under a point footprint)");
+  const double X = friction_rise(*pieces);
+  if (!std::isfinite(X))
+    throw InvalidParameter("friction", "uniform", "positioning needs a rise of friction");
+  if (pieces->pieces().front().bound_at_begin != 1.0)
+    throw InvalidParameter("friction", pieces->pieces().front().bound_at_begin,
+                           "the level before the rise must be 1 (mu_1): the part arrives in "
+                           "the steady state of the uniform table");
+  PositioningAccuracy r;
+  double dx = 0;
+  if (!arrive(r, profile, law, o, dx)) return r;
+  r.x_mu = X;
+  r.x_stick_min = stick_position_min(*pieces, law, profile.peak_acceleration());
+  run_entries(r, profile, law, friction, dx, o);
   return r;
 }
 

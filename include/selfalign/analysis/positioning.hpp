@@ -56,6 +56,19 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, double wid
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
                                          double width, double c_mu,
                                          const PositioningOptions& options = {});
+/// Sect. 7.1 on any piecewise-affine friction level that rises (a friction field: FieldFriction,
+/// several steps, ramps under a point footprint; the two-region table too), the level where it
+/// stands: x_mu is its rise X = friction_rise(friction) (PositioningAccuracy::x_mu = X), and
+/// the entries lie in [X - Δx - v̄Δt, X - Δx] so that, as with the paper's x_mu = Δx, each
+/// reaches the rise within its first steady period (on the two-region table with x_mu = Δx
+/// these are the paper's entries, and the result is the overload above's). Overshoots are
+/// end - X; x_stick_min is stick_position_min of the level's pieces. The part arrives in the
+/// steady state of the uniform table m = 1, so the level must be 1 before its rise
+/// (InvalidParameter naming "friction" otherwise, or for a level without a rise or not
+/// piecewise affine).
+PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
+                                         const FrictionMap& friction,
+                                         const PositioningOptions& options = {});
 
 /// One cell of the Fig. 17 surfaces.
 struct PositioningCell {
