@@ -16,6 +16,7 @@
 #include "report.hpp"
 #include "sweep_common.hpp"  // cell_status, failures_json
 #include "warnings.hpp"
+#include "selfalign/planar/planar_run.hpp"
 #include "selfalign/planar/planar_steady_state.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
@@ -69,26 +70,27 @@ json header(const PlanarSetup& s) {
           {"steps_per_period", steps_per_period(s.problem)}};
 }
 
-struct TrajectoryCsv : PlanarStepSink {
-  const Si& si;
-  int every;
+// The recorded run as CSV rows, in the run's units; the world pose of the part is the table's
+// pose composed with the part's pose on it.
+std::string trajectory_csv(const PlanarTrajectory& r, const Si& si) {
   std::ostringstream out;
-  PlanarCensus census;
-  TrajectoryCsv(const Si& s, int e) : si(s), every(e) {}
-  void row(const PlanarRigidState& s) {
-    const PlanarPose w = world_pose(s);
-    out << csv_number(si.time(s.t)) << ',' << csv_number(si.length(s.pose.x)) << ','
-        << csv_number(si.length(s.pose.y)) << ',' << csv_number(s.pose.angle) << ','
-        << csv_number(si.velocity(s.twist.ux)) << ',' << csv_number(si.velocity(s.twist.uy)) << ','
-        << csv_number(si.rate(s.twist.omega)) << ',' << patch_mode_name(s.mode) << ','
+  out << "t" << si.u("_s", "") << ",x" << si.u("_m", "") << ",y" << si.u("_m", "")
+      << ",angle_rad,ux" << si.u("_m_per_s", "") << ",uy" << si.u("_m_per_s", "")
+      << ",omega" << si.u("_rad_per_s", "") << ",mode,world_x" << si.u("_m", "")
+      << ",world_y" << si.u("_m", "") << ",world_angle_rad\n";
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    PlanarTablePose table;
+    table.x = r.table_x[i], table.y = r.table_y[i], table.angle = r.table_angle[i];
+    const PlanarPose w = world_pose(table, {r.x[i], r.y[i], r.angle[i]});
+    out << csv_number(si.time(r.t[i])) << ',' << csv_number(si.length(r.x[i])) << ','
+        << csv_number(si.length(r.y[i])) << ',' << csv_number(r.angle[i]) << ','
+        << csv_number(si.velocity(r.ux[i])) << ',' << csv_number(si.velocity(r.uy[i])) << ','
+        << csv_number(si.rate(r.omega[i])) << ',' << patch_mode_name(r.mode[i]) << ','
         << csv_number(si.length(w.x)) << ',' << csv_number(si.length(w.y)) << ','
         << csv_number(w.angle) << '\n';
   }
-  void on_step(const PlanarRigidState& s) override {
-    census.add(s.mode);
-    if (s.step_index % every == 0) row(s);
-  }
-};
+  return out.str();
+}
 
 void run_simulate(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
@@ -99,32 +101,27 @@ void run_simulate(const PlanarFlags& f) {
                            "records " + format_number(rows) + " rows; at most " +
                                format_number(kMaxRecordedSamples));
   const Si si{s};
-  PlanarRigidState st = make_planar_rigid_state(s.problem.motion, 0, s.pose, s.twist);
-  TrajectoryCsv csv(si, s.every);
-  csv.out << "t" << si.u("_s", "") << ",x" << si.u("_m", "") << ",y" << si.u("_m", "")
-          << ",angle_rad,ux" << si.u("_m_per_s", "") << ",uy" << si.u("_m_per_s", "")
-          << ",omega" << si.u("_rad_per_s", "") << ",mode,world_x" << si.u("_m", "")
-          << ",world_y" << si.u("_m", "") << ",world_angle_rad\n";
-  csv.row(st);
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
-  for (int k = 0; k < s.periods; ++k) {
-    advance_planar_rigid(s.problem.motion, s.problem.field, s.problem.law, s.problem.part,
-                         s.problem.options, st, steps_per_period(s.problem), &csv);
-    bar.update(static_cast<std::size_t>(k + 1), static_cast<std::size_t>(s.periods));
-  }
+  const PlanarTrajectory run = simulate_planar(
+      s.problem, s.pose, s.twist, planar_steps_of_periods(s.problem, s.periods), s.every,
+      [&bar](long long done, long long total) {
+        bar.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+      });
   bar.finish();
+  const PlanarRigidState& st = run.end;
   json r = header(s);
   r["command"] = "planar simulate";
   r["periods"] = s.periods;
   r["end_pose"] = pose_json(st.pose, si);
   r["end_twist"] = {{"ux", si.velocity(st.twist.ux)}, {"uy", si.velocity(st.twist.uy)}, {"omega", si.rate(st.twist.omega)}};
-  r["census"] = census_json(csv.census);
+  r["census"] = census_json(run.census);
   r["solver"] = {{"sweeps", st.sweeps}, {"newton_steps", st.newton_steps}};
   TextTable t;
   t.row("end pose x, y [" + si.u("m", "-") + "], angle [rad]",
         table_text(r["end_pose"]["x"]) + ", " + table_text(r["end_pose"]["y"]) + ", " + table_text(r["end_pose"]["angle_rad"]));
-  t.row("steps stick / pivot / slip", std::to_string(csv.census.stick) + " / " + std::to_string(csv.census.pivot) + " / " + std::to_string(csv.census.slip));
-  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.out.str());
+  t.row("steps stick / pivot / slip", std::to_string(run.census.stick) + " / " + std::to_string(run.census.pivot) + " / " + std::to_string(run.census.slip));
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv},
+                           f.csv ? trajectory_csv(run, si) : std::string());
 }
 
 void run_steady(const PlanarFlags& f) {

@@ -24,6 +24,7 @@
 #include "selfalign/analysis/sweep.hpp"  // worker_threads
 #include "selfalign/error.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
+#include "selfalign/planar/planar_run.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxRecordedSamples, kMaxTimeSteps
 
 namespace selfalign::python {
@@ -772,41 +773,21 @@ as its first argument: simulate_planar(problem, periods=3), planar_steady_state(
       }));
 }
 
-// Records the state every `every` steps.
-struct PlanarRecorder final : PlanarStepSink {
-  const PythonProgress* interrupt = nullptr;  // the run stops here once cancelled (Ctrl-C)
-  long long every = 1;
-  long long last = -1;  // step index of the last sample
-  std::vector<double> t, x, y, angle, ux, uy, omega, table_x, table_y, table_angle;
+// A recorded run as the dict of NumPy columns simulate_planar returns.
+py::dict trajectory_dict(PlanarTrajectory&& r) {
+  py::dict d;
   std::vector<std::int8_t> mode;
-  std::vector<std::int32_t> pivot;
-
-  void record(const PlanarRigidState& s) {
-    t.push_back(s.t), x.push_back(s.pose.x), y.push_back(s.pose.y);
-    angle.push_back(s.pose.angle), ux.push_back(s.twist.ux), uy.push_back(s.twist.uy);
-    omega.push_back(s.twist.omega);
-    table_x.push_back(s.table.x), table_y.push_back(s.table.y);
-    table_angle.push_back(s.table.angle);
-    mode.push_back(static_cast<std::int8_t>(s.mode));
-    pivot.push_back(s.pivot);
-    last = s.step_index;
-  }
-  void on_step(const PlanarRigidState& s) override {
-    if (interrupt) interrupt->stop_if_cancelled();
-    if (s.step_index % every == 0) record(s);
-  }
-  py::dict to_dict() && {
-    py::dict d;
-    d["t"] = to_array(std::move(t)), d["x"] = to_array(std::move(x));
-    d["y"] = to_array(std::move(y)), d["angle"] = to_array(std::move(angle));
-    d["ux"] = to_array(std::move(ux)), d["uy"] = to_array(std::move(uy));
-    d["omega"] = to_array(std::move(omega)), d["mode"] = to_array(std::move(mode));
-    d["pivot"] = to_array(std::move(pivot));
-    d["table_x"] = to_array(std::move(table_x)), d["table_y"] = to_array(std::move(table_y));
-    d["table_angle"] = to_array(std::move(table_angle));
-    return d;
-  }
-};
+  mode.reserve(r.mode.size());
+  for (PatchMode m : r.mode) mode.push_back(static_cast<std::int8_t>(m));
+  d["t"] = to_array(std::move(r.t)), d["x"] = to_array(std::move(r.x));
+  d["y"] = to_array(std::move(r.y)), d["angle"] = to_array(std::move(r.angle));
+  d["ux"] = to_array(std::move(r.ux)), d["uy"] = to_array(std::move(r.uy));
+  d["omega"] = to_array(std::move(r.omega)), d["mode"] = to_array(std::move(mode));
+  d["pivot"] = to_array(std::move(r.pivot));
+  d["table_x"] = to_array(std::move(r.table_x)), d["table_y"] = to_array(std::move(r.table_y));
+  d["table_angle"] = to_array(std::move(r.table_angle));
+  return d;
+}
 
 // The (x, y, angle) rows of an N x 3 array-like, or a list of PlanarPose.
 std::vector<PlanarPose> entries_of(const py::handle& h) {
@@ -862,52 +843,23 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
 )doc");
   // simulate_planar on a PlanarProblem: both overloads below call it.
   const auto simulate_planar_of = [](const PlanarProblem& p,
-                          std::optional<long long> periods, std::optional<double> duration,
-              const py::object& pose_in, const py::object& twist_in, long long every) {
+                                      std::optional<long long> periods,
+                                      std::optional<double> duration, const py::object& pose_in,
+                                      const py::object& twist_in, long long every) {
     const PlanarPose pose = pose_of(pose_in, "pose");
     const PlanarTwist twist = twist_of(twist_in, "twist");
     if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
     if (periods.has_value() == duration.has_value())
       throw InvalidParameter("periods", periods ? std::to_string(*periods) : "None",
                              "give exactly one of periods and duration");
-    validate(p.field);
-    validate(p.part);
-    validate(p.options);
-    require_planar_law(p.law);
-    double steps = 0;
-    if (periods) {
-      if (!p.motion.first && !p.motion.second && !p.motion.rotation)
-        throw InvalidParameter("periods", static_cast<double>(*periods),
-                               "needs a table profile (a table at rest: give duration)");
-      if (*periods < 0)
-        throw InvalidParameter("periods", static_cast<double>(*periods), "must be >= 0");
-      steps = static_cast<double>(*periods) * static_cast<double>(steps_per_period(p));
-    } else {
-      require_non_negative("duration", *duration);
-      const double step = p.options.step;
-      steps = std::round(*duration / step);
-      if (!(std::abs(*duration / step - steps) <= 1e-9 * std::max(1.0, steps)))
-        throw InvalidParameter("duration", *duration,
-                               "must be a whole number of steps (step " +
-                                   format_number(step) + ")");
-    }
-    if (steps > kMaxTimeSteps)
-      throw InvalidParameter("steps", steps, "the run must have at most 1e9 steps");
-    if (std::floor(steps / static_cast<double>(every)) + 2 > kMaxRecordedSamples)
-      throw InvalidParameter("every", static_cast<double>(every),
-                             "the run would record more than 1e7 samples: raise every");
+    const long long steps = periods ? planar_steps_of_periods(p, *periods)
+                                    : planar_steps_of_duration(p, *duration);
     const PythonProgress interrupt{py::none()};
-    PlanarRecorder rec;
-    rec.every = every;
-    rec.interrupt = &interrupt;
-    interrupt.run([&] {
-      PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
-      rec.record(s);
-      advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
-                           static_cast<long long>(steps), &rec);
-      if (rec.last != s.step_index) rec.record(s);
+    PlanarTrajectory r = interrupt.run([&] {
+      return simulate_planar(p, pose, twist, steps, every,
+                             [&interrupt](long long, long long) { interrupt.stop_if_cancelled(); });
     });
-    return std::move(rec).to_dict();
+    return trajectory_dict(std::move(r));
   };
   m.def(
       "simulate_planar",

@@ -26,11 +26,13 @@ PlanarRigidState make_planar_rigid_state(const PlanarTableMotion& motion, double
   return s;
 }
 
-PlanarPose world_pose(const PlanarRigidState& s) {
-  const double c = std::cos(s.table.angle), sn = std::sin(s.table.angle);
-  return {s.table.x + c * s.pose.x - sn * s.pose.y, s.table.y + sn * s.pose.x + c * s.pose.y,
-          s.table.angle + s.pose.angle};
+PlanarPose world_pose(const PlanarTablePose& table, const PlanarPose& pose) {
+  const double c = std::cos(table.angle), sn = std::sin(table.angle);
+  return {table.x + c * pose.x - sn * pose.y, table.y + sn * pose.x + c * pose.y,
+          table.angle + pose.angle};
 }
+
+PlanarPose world_pose(const PlanarRigidState& s) { return world_pose(s.table, s.pose); }
 
 PlanarTwist world_twist(const PlanarRigidState& s) {
   const double c = std::cos(s.table.angle), sn = std::sin(s.table.angle);

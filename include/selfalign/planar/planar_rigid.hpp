@@ -74,6 +74,8 @@ PlanarRigidState make_planar_rigid_state(const PlanarTableMotion& motion, double
 
 /// World (inertial-frame) pose and twist of the part: centre of mass, angle; velocity, spin.
 PlanarPose world_pose(const PlanarRigidState& state);
+/// The world pose of a part at `pose` on a table at `table` (only its x, y, angle are read).
+PlanarPose world_pose(const PlanarTablePose& table, const PlanarPose& pose);
 PlanarTwist world_twist(const PlanarRigidState& state);
 
 /// Observer of each completed step.

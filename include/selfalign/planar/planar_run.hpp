@@ -1,0 +1,47 @@
+#pragma once
+/// \file planar_run.hpp
+/// One recorded planar run: the run driver the CLI (`planar simulate`) and Python
+/// (simulate_planar) share, so neither front end contains a step loop. From a pose and twist
+/// at t = 0, Moreau's rigid-part stepper (planar_rigid.hpp) advances `steps` steps; the state
+/// is recorded at t = 0, every `every` steps, and at the last step.
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "selfalign/planar/planar_analysis.hpp"
+
+namespace selfalign {
+
+/// The recorded samples, one entry per sample in every column.
+struct PlanarTrajectory {
+  std::vector<double> t;                   ///< time [-]
+  std::vector<double> x, y, angle;         ///< pose on the table [-], [rad]
+  std::vector<double> ux, uy, omega;       ///< twist relative to the table, table axes [-]
+  std::vector<double> table_x, table_y, table_angle;  ///< the table's world pose
+  std::vector<PatchMode> mode;             ///< how the step that ended there ended
+  std::vector<std::int32_t> pivot;         ///< the pivot contact for mode pivot, else -1
+  PlanarCensus census;                     ///< every step of the run (not only the samples)
+  PlanarRigidState end;                    ///< the state after the last step
+  std::size_t size() const noexcept { return t.size(); }
+};
+
+/// Steps of a run of `periods` table periods (InvalidParameter naming "periods" for a negative
+/// count or a table at rest, which has no period: give a duration).
+long long planar_steps_of_periods(const PlanarProblem& problem, long long periods);
+/// Steps of a run of `duration` [-] (InvalidParameter naming "duration" unless it is >= 0 and a
+/// whole number of steps to 1e-9).
+long long planar_steps_of_duration(const PlanarProblem& problem, double duration);
+
+/// Called between chunks of steps with (steps done, steps): progress reports, and a front end's
+/// cancellation (it may throw; the run stops there and the exception propagates).
+using PlanarRunProgress = std::function<void(long long done, long long total)>;
+
+/// The run. Validates the field, the part, the step and the law; InvalidParameter naming "every"
+/// (< 1, or more than kMaxRecordedSamples samples) or "steps" (more than kMaxTimeSteps).
+/// `progress` is called after every chunk of at most one period and 1e4 steps.
+PlanarTrajectory simulate_planar(const PlanarProblem& problem, const PlanarPose& pose,
+                                 const PlanarTwist& twist, long long steps, long long every = 1,
+                                 const PlanarRunProgress& progress = {});
+
+}  // namespace selfalign

@@ -1,0 +1,98 @@
+#include "selfalign/planar/planar_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "selfalign/error.hpp"
+#include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps, kMaxRecordedSamples
+
+namespace selfalign {
+namespace {
+
+// Records the state every `every` steps, and counts every step's mode.
+struct Recorder final : PlanarStepSink {
+  PlanarTrajectory& out;
+  long long every;
+  long long last = -1;  // step index of the last sample
+  Recorder(PlanarTrajectory& o, long long e) : out(o), every(e) {}
+  void record(const PlanarRigidState& s) {
+    out.t.push_back(s.t);
+    out.x.push_back(s.pose.x), out.y.push_back(s.pose.y), out.angle.push_back(s.pose.angle);
+    out.ux.push_back(s.twist.ux), out.uy.push_back(s.twist.uy);
+    out.omega.push_back(s.twist.omega);
+    out.table_x.push_back(s.table.x), out.table_y.push_back(s.table.y);
+    out.table_angle.push_back(s.table.angle);
+    out.mode.push_back(s.mode);
+    out.pivot.push_back(s.pivot);
+    last = s.step_index;
+  }
+  void on_step(const PlanarRigidState& s) override {
+    out.census.add(s.mode);
+    if (s.step_index % every == 0) record(s);
+  }
+};
+
+}  // namespace
+
+long long planar_steps_of_periods(const PlanarProblem& p, long long periods) {
+  if (!p.motion.first && !p.motion.second && !p.motion.rotation)
+    throw InvalidParameter("periods", static_cast<double>(periods),
+                           "needs a table profile (a table at rest: give duration)");
+  if (periods < 0) throw InvalidParameter("periods", static_cast<double>(periods), "must be >= 0");
+  const double steps = static_cast<double>(periods) * static_cast<double>(steps_per_period(p));
+  if (steps > kMaxTimeSteps)
+    throw InvalidParameter("steps", steps, "the run must have at most 1e9 steps");
+  return static_cast<long long>(steps);
+}
+
+long long planar_steps_of_duration(const PlanarProblem& p, double duration) {
+  require_non_negative("duration", duration);
+  const double step = p.options.step;
+  const double steps = std::round(duration / step);
+  if (!(std::abs(duration / step - steps) <= 1e-9 * std::max(1.0, steps)))
+    throw InvalidParameter("duration", duration,
+                           "must be a whole number of steps (step " + format_number(step) + ")");
+  if (steps > kMaxTimeSteps)
+    throw InvalidParameter("steps", steps, "the run must have at most 1e9 steps");
+  return static_cast<long long>(steps);
+}
+
+PlanarTrajectory simulate_planar(const PlanarProblem& p, const PlanarPose& pose,
+                                 const PlanarTwist& twist, long long steps, long long every,
+                                 const PlanarRunProgress& progress) {
+  validate(p.field);
+  validate(p.part);
+  validate(p.options);
+  require_planar_law(p.law);
+  if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
+  if (!(steps >= 0 && static_cast<double>(steps) <= kMaxTimeSteps))
+    throw InvalidParameter("steps", static_cast<double>(steps), "must be in [0, 1e9]");
+  if (std::floor(static_cast<double>(steps) / static_cast<double>(every)) + 2 >
+      kMaxRecordedSamples)
+    throw InvalidParameter("every", static_cast<double>(every),
+                           "the run would record more than 1e7 samples: raise every");
+  PlanarTrajectory out;
+  Recorder rec(out, every);
+  PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
+  rec.record(s);
+  // Chunks of at most one period and 1e4 steps between progress reports (a prompt Ctrl-C).
+  constexpr long long kMaxChunk = 10000;
+  const bool moving = p.motion.first || p.motion.second || p.motion.rotation;
+  const long long chunk =
+      moving ? std::clamp(static_cast<long long>(std::ceil(planar_period(p.motion) /
+                                                           p.options.step)),
+                          1LL, kMaxChunk)
+             : kMaxChunk;
+  for (long long done = 0; done < steps;) {
+    const long long n = std::min(chunk, steps - done);
+    advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s, n, &rec);
+    done += n;
+    if (progress) progress(done, steps);
+  }
+  if (rec.last != s.step_index) rec.record(s);
+  out.end = s;
+  return out;
+}
+
+}  // namespace selfalign
