@@ -189,7 +189,7 @@ TEST(PlanarRigid, ASymmetricPatchOnATableAlongXIsTheOneDimensionalScheme) {
   EXPECT_GT(std::abs(ref.object.x), 0.01);
 }
 
-struct EnergyCheck : PlanarStepSink {
+struct EnergyCheck : core::StepObserver {
   // On a translating table the table's twist is a uniform velocity T': the kinetic energy
   // relative to T'_{k+1} after the step, |V_{k+1} - T'_{k+1}|^2 + j omega^2, never exceeds the
   // free one, |V_k - T'_{k+1}|^2 + j omega_k^2 (the friction impulse only removes energy).
@@ -197,15 +197,16 @@ struct EnergyCheck : PlanarStepSink {
   PlanarTwist before;
   int checked = 0, stuck = 0;
   EnergyCheck(double j, const PlanarRigidState& s) : inertia(j), before(world_twist(s)) {}
-  void on_step(const PlanarRigidState& s) override {
-    const PlanarTwist after = world_twist(s);
+  void on_step(const core::State& s) override {
+    const core::BodyState& b = s.bodies[0];
+    const PlanarTwist after = world_twist(s.table, b.pose, b.twist);
     const auto energy = [&](const PlanarTwist& q) {
       const double ux = q.ux - s.table.vx, uy = q.uy - s.table.vy;
       return ux * ux + uy * uy + inertia * q.omega * q.omega;
     };
     if (!(energy(after) <= energy(before) * (1 + 1e-12))) ADD_FAILURE() << s.step_index;
     ++checked;
-    stuck += s.mode == PatchMode::stick;
+    stuck += b.mode == PatchMode::stick;
     before = after;
   }
 };
@@ -276,11 +277,12 @@ TEST(PlanarRigid, AStickingPartTurnsWithTheTable) {
   EXPECT_EQ(r.mode, PatchMode::stick);
 }
 
-struct StopTimes : PlanarStepSink {
+struct StopTimes : core::StepObserver {
   double t_slide = NAN, t_spin = NAN;
-  void on_step(const PlanarRigidState& s) override {
-    if (std::isnan(t_slide) && s.twist.ux == 0 && s.twist.uy == 0) t_slide = s.t;
-    if (std::isnan(t_spin) && s.twist.omega == 0) t_spin = s.t;
+  void on_step(const core::State& s) override {
+    const PlanarTwist& u = s.bodies[0].twist;
+    if (std::isnan(t_slide) && u.ux == 0 && u.uy == 0) t_slide = s.t;
+    if (std::isnan(t_spin) && u.omega == 0) t_spin = s.t;
   }
 };
 

@@ -52,7 +52,7 @@ State make_state(const Model& model, double t, std::span<const PlanarPose> poses
   return s;
 }
 
-long long step(const Model& model, State& s, long long steps) {
+long long step(const Model& model, State& s, long long steps, StepObserver* observer) {
   validate(model);
   const std::size_t n = model.bodies.size();
   if (s.bodies.size() != n || s.contacts.size() != n)
@@ -83,6 +83,7 @@ long long step(const Model& model, State& s, long long steps) {
     s.table = tb1;
     s.t = t1;
     ++s.step_index;
+    if (observer) observer->on_step(s);
   }
   return taken;
 }

@@ -24,7 +24,7 @@ std::string compact(double v) {
 }
 
 void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
-                 PlanarStepSink* sink = nullptr) {
+                 core::StepObserver* sink = nullptr) {
   advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
                        periods * steps_per_period(p), sink);
 }

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "selfalign/error.hpp"
-#include "rigid_body_step.hpp"
 
 namespace selfalign {
 
@@ -34,34 +33,39 @@ PlanarPose world_pose(const PlanarTablePose& table, const PlanarPose& pose) {
 
 PlanarPose world_pose(const PlanarRigidState& s) { return world_pose(s.table, s.pose); }
 
-PlanarTwist world_twist(const PlanarRigidState& s) {
-  const double c = std::cos(s.table.angle), sn = std::sin(s.table.angle);
-  const double rx = c * s.pose.x - sn * s.pose.y, ry = sn * s.pose.x + c * s.pose.y;
-  return {s.table.vx - s.table.rate * ry + c * s.twist.ux - sn * s.twist.uy,
-          s.table.vy + s.table.rate * rx + sn * s.twist.ux + c * s.twist.uy,
-          s.table.rate + s.twist.omega};
+PlanarTwist world_twist(const PlanarTablePose& table, const PlanarPose& pose,
+                        const PlanarTwist& twist) {
+  const double c = std::cos(table.angle), sn = std::sin(table.angle);
+  const double rx = c * pose.x - sn * pose.y, ry = sn * pose.x + c * pose.y;
+  return {table.vx - table.rate * ry + c * twist.ux - sn * twist.uy,
+          table.vy + table.rate * rx + sn * twist.ux + c * twist.uy, table.rate + twist.omega};
 }
+
+PlanarTwist world_twist(const PlanarRigidState& s) { return world_twist(s.table, s.pose, s.twist); }
 
 void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& field,
                           const FrictionLaw& law, const RigidPart& part,
                           const TimeSteppingOptions& o, PlanarRigidState& st, long long steps,
-                          PlanarStepSink* sink) {
+                          core::StepObserver* observer) {
+  // Checked here too, so that errors name the part's own parameters (the core's name the body).
   validate(o);
   validate(motion);
   validate(field);
   validate(part);
   require_planar_law(law);
-  std::vector<PatchContact> contacts(part.patch.size());
-  for (long long step = 0; step < steps; ++step) {
-    // kinematics: the table at t_{k+1}; then the body's stages (rigid_body_step.hpp)
-    const double t1 = st.t0 + static_cast<double>(st.step_index + 1) * o.step;
-    const PlanarTablePose tb1 = table_pose(motion, t1);
-    detail::rigid_body_step(field, law, part, o.step, o.theta, st.table, tb1, st, contacts);
-    st.table = tb1;
-    st.t = t1;
-    ++st.step_index;
-    if (sink) sink->on_step(st);
-  }
+  // The part as the one body of a core model, its state as the core's: one staged step.
+  const core::Model model{motion, field, {core::Body{part, law}}, o};
+  core::State s;
+  s.t0 = st.t0, s.t = st.t, s.step_index = st.step_index, s.table = st.table;
+  s.bodies.push_back({st.pose, st.twist, st.mode, st.pivot, st.sweeps, st.newton_steps,
+                      std::move(st.solver)});
+  s.contacts.assign(1, std::vector<PatchContact>(part.patch.size()));
+  core::step(model, s, steps, observer);
+  core::BodyState& b = s.bodies[0];
+  st.t = s.t, st.step_index = s.step_index, st.table = s.table;
+  st.pose = b.pose, st.twist = b.twist, st.mode = b.mode, st.pivot = b.pivot;
+  st.sweeps = b.sweeps, st.newton_steps = b.newton_steps;
+  st.solver = std::move(b.solver);
 }
 
 }  // namespace selfalign

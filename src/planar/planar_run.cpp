@@ -11,7 +11,7 @@ namespace selfalign {
 namespace {
 
 // Records the state every `every` steps, and counts every step's mode.
-struct Recorder final : PlanarStepSink {
+struct Recorder final : core::StepObserver {
   PlanarTrajectory& out;
   long long every;
   long long last = -1;  // step index of the last sample
@@ -27,9 +27,19 @@ struct Recorder final : PlanarStepSink {
     out.pivot.push_back(s.pivot);
     last = s.step_index;
   }
-  void on_step(const PlanarRigidState& s) override {
-    out.census.add(s.mode);
-    if (s.step_index % every == 0) record(s);
+  void on_step(const core::State& s) override {
+    const core::BodyState& b = s.bodies[0];
+    out.census.add(b.mode);
+    if (s.step_index % every != 0) return;
+    out.t.push_back(s.t);
+    out.x.push_back(b.pose.x), out.y.push_back(b.pose.y), out.angle.push_back(b.pose.angle);
+    out.ux.push_back(b.twist.ux), out.uy.push_back(b.twist.uy);
+    out.omega.push_back(b.twist.omega);
+    out.table_x.push_back(s.table.x), out.table_y.push_back(s.table.y);
+    out.table_angle.push_back(s.table.angle);
+    out.mode.push_back(b.mode);
+    out.pivot.push_back(b.pivot);
+    last = s.step_index;
   }
 };
 

@@ -6,9 +6,9 @@
 //               feeder issue's normal vibration changes)
 //   impulse     the friction impulse of the patch (PatchImpulseSolver, exact stick)
 //   integrate   pose and twist at t_{k+1}
-// Shared by advance_planar_rigid (one body) and the contact core's step (core/contact_step.hpp,
-// N bodies on one table), so that a body's step is the same arithmetic in both: a body of an
-// N-body model moves bit for bit as it does alone.
+// The body stages of the contact core's step (src/core/contact_core.cpp, N bodies on one
+// table); advance_planar_rigid runs the core on a model of one body, so a body of an N-body
+// model moves bit for bit as it does alone.
 
 #include <array>
 #include <cmath>

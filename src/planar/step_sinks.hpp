@@ -10,19 +10,20 @@
 
 namespace selfalign::detail {
 
-struct CensusSink : PlanarStepSink {
+// The analyses run one body (advance_planar_rigid): bodies[0] of the core's state.
+struct CensusSink : core::StepObserver {
   PlanarCensus census;
-  void on_step(const PlanarRigidState& s) override { census.add(s.mode); }
+  void on_step(const core::State& s) override { census.add(s.bodies[0].mode); }
 };
 
-struct LevelSink : PlanarStepSink {
+struct LevelSink : core::StepObserver {
   const PlanarField& field;
   const ContactPatch& patch;
   CensusSink* census = nullptr;  // also counts the steps' modes when given
   double lo = INFINITY, hi = -INFINITY;
   LevelSink(const PlanarField& f, const ContactPatch& p) : field(f), patch(p) {}
-  void on_step(const PlanarRigidState& s) override {
-    const double level = level_under_patch(field, patch, s.pose);
+  void on_step(const core::State& s) override {
+    const double level = level_under_patch(field, patch, s.bodies[0].pose);
     lo = std::min(lo, level);
     hi = std::max(hi, level);
     if (census) census->on_step(s);

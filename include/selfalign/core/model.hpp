@@ -13,7 +13,7 @@
 
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/planar/planar_field.hpp"
-#include "selfalign/planar/planar_rigid.hpp"
+#include "selfalign/planar/rigid_part.hpp"
 #include "selfalign/planar/planar_table_motion.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 

@@ -10,6 +10,8 @@
 
 #include "selfalign/core/model.hpp"
 #include "selfalign/planar/patch_impulse.hpp"
+#include "selfalign/planar/planar_table_motion.hpp"
+#include "selfalign/planar/rigid_part.hpp"
 
 namespace selfalign::core {
 

@@ -18,8 +18,17 @@
 
 namespace selfalign::core {
 
-/// Advances up to `steps` steps (fewer when a check fails: see state.status). Returns the
-/// steps taken. Validates the model and that the state has one entry per body.
-long long step(const Model& model, State& state, long long steps);
+/// Observer of the core's steps: on_step(state) after each step, every body's state in it.
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  virtual void on_step(const State& state) = 0;
+};
+
+/// Advances up to `steps` steps (fewer when a check fails: see state.status), calling
+/// observer->on_step (if any) after each. Returns the steps taken. Validates the model and
+/// that the state has one entry per body.
+long long step(const Model& model, State& state, long long steps,
+               StepObserver* observer = nullptr);
 
 }  // namespace selfalign::core

@@ -26,34 +26,17 @@
 
 #include <vector>
 
+#include "selfalign/core/step.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/planar/contact_patch.hpp"
 #include "selfalign/planar/patch_impulse.hpp"
 #include "selfalign/planar/planar_field.hpp"
 #include "selfalign/planar/planar_table_motion.hpp"
+#include "selfalign/planar/rigid_part.hpp"
 #include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
 
-/// The part: its moment of inertia about the centre of mass per unit mass j = I/(m L^2) [-]
-/// (> 0; r^2/2 for a uniform disc of radius r) and its contact patch.
-struct RigidPart {
-  double inertia = 0.5;
-  ContactPatch patch = point_patch();
-};
-
-/// Throws InvalidParameter naming "inertia" (finite, > 0) or the patch's parameter.
-void validate(const RigidPart& part);
-
-/// A pose on the table: centre of mass in table coordinates and angle relative to the table.
-struct PlanarPose {
-  double x = 0, y = 0, angle = 0;
-};
-
-/// A twist relative to the table, in table axes: (u_x, u_y) of the centre of mass and the spin.
-struct PlanarTwist {
-  double ux = 0, uy = 0, omega = 0;
-};
 
 struct PlanarRigidState {
   double t0 = 0;
@@ -76,20 +59,18 @@ PlanarRigidState make_planar_rigid_state(const PlanarTableMotion& motion, double
 PlanarPose world_pose(const PlanarRigidState& state);
 /// The world pose of a part at `pose` on a table at `table` (only its x, y, angle are read).
 PlanarPose world_pose(const PlanarTablePose& table, const PlanarPose& pose);
+/// The world twist of a part at `pose` with `twist` relative to a table at `table`.
+PlanarTwist world_twist(const PlanarTablePose& table, const PlanarPose& pose,
+                        const PlanarTwist& twist);
 PlanarTwist world_twist(const PlanarRigidState& state);
 
-/// Observer of each completed step.
-class PlanarStepSink {
- public:
-  virtual ~PlanarStepSink() = default;
-  virtual void on_step(const PlanarRigidState& state) = 0;
-};
-
-/// Advances `steps` steps. The law must be isotropic and velocity-independent (InvalidParameter
-/// naming "law" otherwise).
+/// Advances `steps` steps: the contact core's step (core/step.hpp) on a model of this one body,
+/// so a part alone moves exactly as a body of any model; `observer` (if any) sees the core's
+/// state after each step (its one body: bodies[0]). The law must be isotropic and
+/// velocity-independent (InvalidParameter naming "law" otherwise).
 void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& field,
                           const FrictionLaw& law, const RigidPart& part,
                           const TimeSteppingOptions& options, PlanarRigidState& state,
-                          long long steps, PlanarStepSink* sink = nullptr);
+                          long long steps, core::StepObserver* observer = nullptr);
 
 }  // namespace selfalign
