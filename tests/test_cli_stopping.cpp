@@ -386,6 +386,32 @@ TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
   const CliResult sim = box.run({"simulate", "--field-file", field, "--periods", "1"});
   ASSERT_EQ(sim.exit_code, 0) << sim.err;
   EXPECT_EQ(json::parse(sim.out)["friction"]["kind"].get<std::string>(), "field");
+  // sweep positioning takes the field too: every cell as on the two-region table, to rounding.
+  const std::vector<std::string> grid = {"sweep", "positioning", "--a2-range", "1.5:2.5:3",
+                                         "--a3-range", "0.8:1.3:3", "--entries", "5"};
+  auto with_args = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = grid;
+    args.insert(args.end(), extra.begin(), extra.end());
+    return args;
+  };
+  ASSERT_EQ(box.run(with_args({"--field-file", field, "--out", "pf.csv"})).exit_code, 0);
+  ASSERT_EQ(box.run(with_args({"--c-mu", "3", "--out", "p2.csv"})).exit_code, 0);
+  const std::vector<std::string> rows_field = lines(read_text(box.work_file("pf.csv")));
+  const std::vector<std::string> on_two = lines(read_text(box.work_file("p2.csv")));
+  ASSERT_EQ(rows_field.size(), 10u);
+  ASSERT_EQ(on_two.size(), 10u);
+  int compared = 0;
+  for (std::size_t i = 1; i < rows_field.size(); ++i) {
+    const std::string a = csv_text(rows_field[i], 5), b = csv_text(on_two[i], 5);  // dx_d
+    if (a == "nan" || b == "nan") {
+      EXPECT_EQ(a, b) << i;
+      continue;
+    }
+    EXPECT_NEAR(std::stod(a), std::stod(b), 1e-9) << i;
+    ++compared;
+  }
+  EXPECT_GE(compared, 5);
+  EXPECT_TRUE(json::parse(read_text(box.work_file("pf.summary.json")))["c_mu"].is_null());
 }
 
 #endif  // SELFALIGN_CLI_PATH

@@ -11,6 +11,8 @@
 #include "report.hpp"
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
+#include "selfalign/io/summary_json.hpp"
 #include "sweep_common.hpp"
 
 namespace selfalign::cli {
@@ -49,7 +51,7 @@ std::string cells_csv(const std::vector<PositioningCell>& cells, const std::vect
 
 json cells_summary(const SimulateConfig& config, const ProfileModel& model,
                    const PositioningFlags& f, const GridRange& r2, const GridRange& r3,
-                   const std::vector<PositioningCell>& cells) {
+                   const std::vector<PositioningCell>& cells, const FrictionMap* field) {
   const SimulateConfig given = resolve_simulate_config(config);  // run units
   std::vector<StickSlipCase> cases;
   int accumulating = 0, with_accumulating_entries = 0, p99 = -1, p999 = -1;
@@ -66,8 +68,17 @@ json cells_summary(const SimulateConfig& config, const ProfileModel& model,
   j["family"] = "three-phase";
   j["period"] = *given.period;
   j["stroke"] = *given.stroke;
-  j["width"] = *given.width;
-  j["c_mu"] = *given.c_mu;
+  if (field) {  // the field where it stands: its description, its footprint's width, no c_mu
+    const OutputUnits u = model.output_units();
+    const FieldFriction* ff = field->field_friction();
+    const auto* uniform = ff ? std::get_if<UniformFootprint>(&ff->footprint()) : nullptr;
+    j["width"] = uniform ? json(u.length(uniform->width)) : json(nullptr);
+    j["c_mu"] = nullptr;
+    j["friction"] = friction_json(*field, u);
+  } else {
+    j["width"] = *given.width;
+    j["c_mu"] = *given.c_mu;
+  }
   j["entries"] = f.entries;
   j["max_periods"] = f.max_periods;
   j["grid"] = {{"a2", grid_json(r2)},
@@ -92,6 +103,13 @@ void run_sweep_positioning(const PositioningFlags& f) {
   const SweepPaths paths = resolve_sweep_paths(config);
   const ProfileModel model = sweep_model(config);
   const SimulateConfig given = resolve_simulate_config(config);
+  if (*given.friction == "uniform")
+    throw InvalidParameter("friction", "uniform",
+                           "sweep positioning needs a rise of friction: two-region or field");
+  // A field stands where its file puts it (x_mu: its rise); the two-region table is placed at
+  // x_mu = dx in every cell (Sect. 7.1).
+  const std::unique_ptr<FrictionMap> field =
+      *given.friction == "field" ? build_friction_map(config) : nullptr;
   const double width = model.to_model_units(D::length, *given.width);
   const double c_mu = *given.c_mu;
   if (f.entries < 1) throw InvalidParameter("entries", f.entries, "must be >= 1");
@@ -105,11 +123,14 @@ void run_sweep_positioning(const PositioningFlags& f) {
   std::vector<PositioningCell> cells;
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
-    cells = positioning_surfaces(p.period, p.stroke, width, c_mu, g.a2_model, g.a3_model, options,
-                                 sweep_options(*f.common, *bar, model));
+    const SweepOptions sweep = sweep_options(*f.common, *bar, model);
+    cells = field ? positioning_surfaces(p.period, p.stroke, *field, g.a2_model, g.a3_model,
+                                         options, sweep)
+                  : positioning_surfaces(p.period, p.stroke, width, c_mu, g.a2_model, g.a3_model,
+                                         options, sweep);
   }
   write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
-                      cells_summary(config, model, f, g.r2, g.r3, cells), model);
+                      cells_summary(config, model, f, g.r2, g.r3, cells, field.get()), model);
 }
 
 }  // namespace
@@ -122,7 +143,9 @@ void add_sweep_positioning_command(CLI::App& sweep) {
       "(eq. 39) from N steady-state entries per cell. CSV a2,a3,case,f,accumulates,dx_d,"
       "accumulating_entries,max_periods_p99,max_periods_p999; rows a2-major.");
   auto f = std::make_shared<PositioningFlags>();
-  f->common = add_sweep_flags(*sub, {"a2", "a3"}, {"width", "c_mu"});
+  f->common = add_sweep_flags(*sub, {"a2", "a3"},
+                               {"width", "c_mu", "friction", "field_file", "field_interpolation",
+                                "footprint"});
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->add_option("--entries", f->entries,
                   "steady-state entries x_0s per cell, in [1, 1e5]. Default: " +

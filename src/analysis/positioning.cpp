@@ -81,6 +81,23 @@ void run_entries(PositioningAccuracy& r, const TableProfile& profile, const Fric
   }
 }
 
+// The level a positioning study walks onto: piecewise affine, 1 before a rise (InvalidParameter
+// naming "friction" otherwise).
+const PiecewiseAffineFriction* require_positioning_level(const FrictionMap& friction) {
+  const PiecewiseAffineFriction* pieces = friction.piecewise_affine();
+  if (!pieces)
+    throw InvalidParameter("friction", "not piecewise affine",
+                           "positioning needs a piecewise-affine friction level (a field of "
+                           "steps, or ramps under a point footprint)");
+  if (!std::isfinite(friction_rise(*pieces)))
+    throw InvalidParameter("friction", "uniform", "positioning needs a rise of friction");
+  if (pieces->pieces().front().bound_at_begin != 1.0)
+    throw InvalidParameter("friction", pieces->pieces().front().bound_at_begin,
+                           "the level before the rise must be 1 (mu_1): the part arrives in "
+                           "the steady state of the uniform table");
+  return pieces;
+}
+
 // The steady state the part arrives in and Δx, its largest displacement in one steady period
 // (Sect. 7.1, from x = 0 at phase 0); false (and the numbers NaN) when v̄ <= 0.
 bool arrive(PositioningAccuracy& r, const TableProfile& profile, const FrictionLaw& law,
@@ -136,18 +153,8 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Fric
   }
   validate(o);
   require_exact_profile(profile, "positioning");
-  const PiecewiseAffineFriction* pieces = friction.piecewise_affine();
-  if (!pieces)
-    throw InvalidParameter("friction", "not piecewise affine",
-                           "positioning needs a piecewise-affine friction level (a field of "
-                           "steps, or ramps under a point footprint)");
+  const PiecewiseAffineFriction* pieces = require_positioning_level(friction);
   const double X = friction_rise(*pieces);
-  if (!std::isfinite(X))
-    throw InvalidParameter("friction", "uniform", "positioning needs a rise of friction");
-  if (pieces->pieces().front().bound_at_begin != 1.0)
-    throw InvalidParameter("friction", pieces->pieces().front().bound_at_begin,
-                           "the level before the rise must be 1 (mu_1): the part arrives in "
-                           "the steady state of the uniform table");
   PositioningAccuracy r;
   double dx = 0;
   if (!arrive(r, profile, law, o, dx)) return r;
@@ -157,14 +164,16 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Fric
   return r;
 }
 
-std::vector<PositioningCell> positioning_surfaces(double period, double stroke, double width,
-                                                  double c_mu, const std::vector<double>& a2,
-                                                  const std::vector<double>& a3,
-                                                  const PositioningOptions& o,
-                                                  const SweepOptions& sweep) {
+namespace {
+
+// The Fig. 17 cells, each the positioning accuracy `accuracy(profile, options)` of its profile.
+template <class Accuracy>
+std::vector<PositioningCell> surfaces(double period, double stroke,
+                                      const std::vector<double>& a2,
+                                      const std::vector<double>& a3, const PositioningOptions& o,
+                                      const SweepOptions& sweep, const Accuracy& accuracy) {
   require_positive("period", period);
   require_positive("stroke", stroke);
-  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
   validate(o);  // up front, not from inside a worker thread
   for (double v : a2) require_positive("a2", v);
   for (double v : a3) require_positive("a3", v);
@@ -182,8 +191,7 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
       return;
     }
     const std::unique_ptr<TableProfile> profile = make_three_phase_profile(p, sweep.jerk);
-    const PositioningAccuracy acc =
-        positioning_accuracy(*profile, sweep.law, width, c_mu, per_cell);
+    const PositioningAccuracy acc = accuracy(*profile, per_cell);
     c.motion_case = acc.steady.motion_case;
     c.f = acc.steady.f;
     c.accumulates = acc.accumulates;
@@ -204,6 +212,33 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
     c.failure = why;
   });
   return cells;
+}
+
+}  // namespace
+
+std::vector<PositioningCell> positioning_surfaces(double period, double stroke, double width,
+                                                  double c_mu, const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const PositioningOptions& o,
+                                                  const SweepOptions& sweep) {
+  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  return surfaces(period, stroke, a2, a3, o, sweep,
+                  [&](const TableProfile& profile, const PositioningOptions& per_cell) {
+                    return positioning_accuracy(profile, sweep.law, width, c_mu, per_cell);
+                  });
+}
+
+std::vector<PositioningCell> positioning_surfaces(double period, double stroke,
+                                                  const FrictionMap& friction,
+                                                  const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const PositioningOptions& o,
+                                                  const SweepOptions& sweep) {
+  require_positioning_level(friction);
+  return surfaces(period, stroke, a2, a3, o, sweep,
+                  [&](const TableProfile& profile, const PositioningOptions& per_cell) {
+                    return positioning_accuracy(profile, sweep.law, friction, per_cell);
+                  });
 }
 
 }  // namespace selfalign

@@ -202,4 +202,16 @@ ProfileModel build_profile_model(const SimulateConfig& config, NonPhysicalProfil
   return m;
 }
 
+std::unique_ptr<FrictionMap> build_friction_map(const SimulateConfig& config) {
+  const SimulateConfig resolved = resolve_simulate_config(config);
+  const UnitSystem units = parse_unit_system(*resolved.units);
+  const Scales scales(*resolved.length_scale, *resolved.mu, *resolved.g);
+  if (units == UnitSystem::dimensionless) return make_friction(resolved, units, scales);
+  try {
+    return make_friction(to_dimensionless(resolved, scales), units, scales);
+  } catch (const InvalidParameter& e) {
+    throw in_si_terms(e, resolved, scales);
+  }
+}
+
 }  // namespace selfalign

@@ -96,5 +96,15 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
                                                   const std::vector<double>& a3,
                                                   const PositioningOptions& options = {},
                                                   const SweepOptions& sweep = {});
+/// The same on a friction level where it stands (positioning_accuracy's FrictionMap overload
+/// in every cell: x_mu is the level's rise; the level must be 1 before it, InvalidParameter
+/// naming "friction" otherwise, checked before any cell runs). `friction` is read from every
+/// worker thread (the maps are immutable).
+std::vector<PositioningCell> positioning_surfaces(double period, double stroke,
+                                                  const FrictionMap& friction,
+                                                  const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const PositioningOptions& options = {},
+                                                  const SweepOptions& sweep = {});
 
 }  // namespace selfalign

@@ -95,4 +95,9 @@ enum class NonPhysicalProfile {
 ProfileModel build_profile_model(const SimulateConfig& config,
                                  NonPhysicalProfile non_physical = NonPhysicalProfile::reject);
 
+/// The config's friction map alone (friction = two-region, uniform or field, with its keys), in
+/// model units [-], checked as build_simulate_model checks it (SI values restated in SI): for
+/// the analyses that take a table but build their own profiles (sweep positioning).
+std::unique_ptr<FrictionMap> build_friction_map(const SimulateConfig& config);
+
 }  // namespace selfalign

@@ -50,7 +50,7 @@ FLAGS = {  # as `selfalign SUBCOMMAND --help` lists them (fuzz_cli.py checks it 
     "sweep period": [f for f in _THREE_PHASE if f != "period"] + _SWEEP + ["range", "family"],
     "sweep stroke": [f for f in _THREE_PHASE if f != "stroke"] + _SWEEP + ["range", "family"],
     "sweep positioning": [f for f in _THREE_PHASE if f not in ("a2", "a3")] + _SWEEP
-    + ["width", "c-mu", "a2-range", "a3-range", "entries", "max-periods"],
+    + ["friction"] + _FIELD + ["width", "c-mu", "a2-range", "a3-range", "entries", "max-periods"],
     "optimize": ["family", "period", "stroke", "velocity-max", "acceleration-max", "jerk-max", "mu",
                  "mu-static", "mu-backward", "order", "segments", "starts", "max-evaluations",
                  "seed", "threads", "json", "quiet", "out"],
