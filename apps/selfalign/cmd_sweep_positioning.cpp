@@ -140,8 +140,9 @@ void add_sweep_positioning_command(CLI::App& sweep) {
       "positioning",
       "Fig. 17 over a grid of the three-phase profile's (y2'', y3'') at the config's period, "
       "stroke, width and c_mu: f, motion case, accumulation and the positioning error dx_d "
-      "(eq. 39) from N steady-state entries per cell. CSV a2,a3,case,f,accumulates,dx_d,"
-      "accumulating_entries,max_periods_p99,max_periods_p999; rows a2-major.");
+      "(eq. 39) from N steady-state entries per cell; or on a friction field where it stands "
+      "(--field-file; level 1 before its rise), as `accuracy`. CSV a2,a3,case,f,accumulates,"
+      "dx_d,accumulating_entries,max_periods_p99,max_periods_p999,status; rows a2-major.");
   auto f = std::make_shared<PositioningFlags>();
   f->common = add_sweep_flags(*sub, {"a2", "a3"},
                                {"width", "c_mu", "friction", "field_file", "field_interpolation",
