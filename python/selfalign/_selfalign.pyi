@@ -1045,11 +1045,26 @@ def positioning_accuracy(
     *,
     law: FrictionLaw = ...,
 ) -> PositioningAccuracy: ...
+@overload
 def positioning_surfaces(
     period: float,
     stroke: float,
     width: float,
     c_mu: float,
+    a2: ArrayLike,
+    a3: ArrayLike,
+    *,
+    options: PositioningOptions = ...,
+    threads: int = 0,
+    progress: Progress = None,
+    executor: Optional[Any] = None,
+    chunk_size: Optional[int] = None,
+) -> dict[str, npt.NDArray[np.generic]]: ...
+@overload
+def positioning_surfaces(
+    period: float,
+    stroke: float,
+    friction: FrictionMap,
     a2: ArrayLike,
     a3: ArrayLike,
     *,

@@ -77,8 +77,9 @@ def _family_chunk(name, family, fixed, values, kwargs):
     return getattr(_selfalign, name)(family, fixed, values, **kwargs)
 
 
-def _positioning_chunk(period, stroke, width, c_mu, a2, a3, kwargs):
-    return _selfalign.positioning_surfaces(period, stroke, width, c_mu, a2, a3, **kwargs)
+def _positioning_chunk(period, stroke, table, a2, a3, kwargs):
+    # table: (width, c_mu) of the two-region table, or (friction,) a FrictionMap
+    return _selfalign.positioning_surfaces(period, stroke, *table, a2, a3, **kwargs)
 
 
 def _monte_carlo_chunk(request, process, uncertainty, first_run, runs, kwargs):
@@ -128,19 +129,32 @@ def sweep_stroke(family, period, strokes, *, executor=None, chunk_size=None, **k
     return _family_sweep("sweep_stroke", family, period, strokes, executor, chunk_size, kwargs)
 
 
-def positioning_surfaces(period, stroke, width, c_mu, a2, a3, *, executor=None, chunk_size=None,
+def positioning_surfaces(period, stroke, *table_and_grid, executor=None, chunk_size=None,
                          **kwargs):
+    # table_and_grid: (width, c_mu, a2, a3) on the two-region table, or (friction, a2, a3) on a
+    # FrictionMap where it stands; either also by keyword, as the extension's two overloads.
     if executor is None:
-        return _selfalign.positioning_surfaces(period, stroke, width, c_mu, a2, a3, **kwargs)
-    a2 = np.ascontiguousarray(a2, dtype=float)
-    a3 = np.ascontiguousarray(a3, dtype=float)
-    kw, progress = _chunk_kwargs(kwargs)
+        return _selfalign.positioning_surfaces(period, stroke, *table_and_grid, **kwargs)
+    on_map = ((table_and_grid and isinstance(table_and_grid[0], _selfalign.FrictionMap))
+              or "friction" in kwargs)
+    names = ("friction", "a2", "a3") if on_map else ("width", "c_mu", "a2", "a3")
+    given = dict(zip(names, table_and_grid))
+    rest = dict(kwargs)
+    for name in names:
+        if name in rest:
+            given[name] = rest.pop(name)
+    if set(given) != set(names) or len(table_and_grid) > len(names):  # the extension's error
+        return _selfalign.positioning_surfaces(period, stroke, *table_and_grid, **kwargs)
+    table = tuple(given[n] for n in names[:-2])
+    a2 = np.ascontiguousarray(given["a2"], dtype=float)
+    a3 = np.ascontiguousarray(given["a3"], dtype=float)
+    kw, progress = _chunk_kwargs(rest)
     ranges = split(len(a2), chunk_size)
     parts = map_chunks(executor, _positioning_chunk,
-                       [(period, stroke, width, c_mu, a2[b:e], a3, kw) for b, e in ranges],
+                       [(period, stroke, table, a2[b:e], a3, kw) for b, e in ranges],
                        progress, [(e - b) * len(a3) for b, e in ranges])
     return _merge_rows(parts, keep=("a3",)) if parts else \
-        _selfalign.positioning_surfaces(period, stroke, width, c_mu, a2, a3, **kwargs)
+        _selfalign.positioning_surfaces(period, stroke, *table, a2, a3, **rest)
 
 
 def monte_carlo(request, process, uncertainty, *, runs=10_000, first_run=0, executor=None,

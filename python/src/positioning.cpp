@@ -185,6 +185,26 @@ plus the 1-D grids 'a2' and 'a3'. options.stopping.max_periods bounds the search
 Cells are computed in parallel on `threads` workers (0: all cores; more are capped at the
 cores), each into its own slot, so the result is identical for any thread count; `progress(done, total)` as in
 sweep_accelerations. The GIL is released while computing.)doc");
+  m.def(
+      "positioning_surfaces",
+      [](double period, double stroke, const FrictionMap& friction, const py::object& a2_in,
+         const py::object& a3_in, const PositioningOptions& options, int threads,
+         const py::object& progress_in) {
+        std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
+        const PythonProgress progress(progress_in);
+        const SweepOptions sweep = sweep_options(threads, progress);
+        const std::vector<PositioningCell> cells = progress.run([&] {
+          return positioning_surfaces(period, stroke, friction, a2, a3, options, sweep);
+        });
+        return surfaces(std::move(a2), std::move(a3), cells);
+      },
+      py::arg("period"), py::arg("stroke"), py::arg("friction"), py::arg("a2"), py::arg("a3"),
+      py::kw_only(), py::arg("options") = PositioningOptions{}, py::arg("threads") = 0,
+      py::arg("progress") = py::none(), R"doc(
+The same on a friction level where it stands (a FieldFriction of steps, or ramps under a point
+footprint; level 1 before its rise): every cell is positioning_accuracy(profile, friction)
+(x_mu: the level's rise). Raises InvalidParameter naming "friction" before any cell runs for a
+level positioning cannot use.)doc");
 }
 
 }  // namespace selfalign::python

@@ -78,6 +78,30 @@ def test_positioning_surfaces_shapes_and_cells():
                 assert r["dx_d"][i, j] == pytest.approx(acc.dx_d, rel=CLOSED_FORM_TOL)
 
 
+def test_positioning_surfaces_on_a_field_where_it_stands():
+    # The two-region table written as a field of one step, anywhere: the Fig. 17 cells are the
+    # placed table's to rounding (translation invariance; second method: the width, c_mu form),
+    # also split over an executor (thread pool: the chunks and their merge).
+    import concurrent.futures
+    a2, a3 = np.array([1.8, 2.3]), np.array([1.1, 1.3])
+    options = sa.PositioningOptions(entries=6)
+    paper = sa.positioning_surfaces(PERIOD, STROKE, W, C_MU, a2, a3, options=options, threads=1)
+    field = sa.FieldFriction(sa.FrictionField.steps([0.7], [1.0, C_MU]), sa.UniformFootprint(W))
+    local = sa.positioning_surfaces(PERIOD, STROKE, field, a2, a3, options=options, threads=1)
+    np.testing.assert_allclose(local["dx_d"], paper["dx_d"], rtol=0, atol=1e-9)
+    np.testing.assert_array_equal(local["case"], paper["case"])
+    with concurrent.futures.ThreadPoolExecutor(2) as ex:
+        split = sa.positioning_surfaces(PERIOD, STROKE, field, a2, a3, options=options,
+                                        executor=ex, chunk_size=1)
+        by_name = sa.positioning_surfaces(PERIOD, STROKE, friction=field, a2=a2, a3=a3,
+                                          options=options, executor=ex, chunk_size=1)
+    for r in (split, by_name):
+        np.testing.assert_array_equal(r["dx_d"], local["dx_d"])
+    with pytest.raises(sa.InvalidParameter) as error:
+        sa.positioning_surfaces(PERIOD, STROKE, sa.UniformFriction(), a2, a3)
+    assert error.value.name == "friction"
+
+
 def test_positioning_surfaces_do_not_depend_on_threads():
     a2, a3 = sa.linear_grid(2.5, 5.0, 4), sa.linear_grid(0.8, 1.6, 3)
     options = sa.PositioningOptions(entries=6, stopping=sa.StoppingOptions(max_periods=200))
