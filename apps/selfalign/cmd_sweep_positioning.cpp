@@ -11,8 +11,7 @@
 #include "report.hpp"
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/error.hpp"
-#include "selfalign/friction/friction_field.hpp"
-#include "selfalign/io/summary_json.hpp"
+#include "stopping_common.hpp"
 #include "sweep_common.hpp"
 
 namespace selfalign::cli {
@@ -68,13 +67,8 @@ json cells_summary(const SimulateConfig& config, const ProfileModel& model,
   j["family"] = "three-phase";
   j["period"] = *given.period;
   j["stroke"] = *given.stroke;
-  if (field) {  // the field where it stands: its description, its footprint's width, no c_mu
-    const OutputUnits u = model.output_units();
-    const FieldFriction* ff = field->field_friction();
-    const auto* uniform = ff ? std::get_if<UniformFootprint>(&ff->footprint()) : nullptr;
-    j["width"] = uniform ? json(u.length(uniform->width)) : json(nullptr);
-    j["c_mu"] = nullptr;
-    j["friction"] = friction_json(*field, u);
+  if (field) {  // the field where it stands
+    add_field_json(j, *field, model.output_units());
   } else {
     j["width"] = *given.width;
     j["c_mu"] = *given.c_mu;

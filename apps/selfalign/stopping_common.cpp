@@ -63,12 +63,16 @@ nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu)
   }
   // A field: the rise of its level stands for x_mu (stopping.hpp), no single c_mu.
   if (with_x_mu) j["x_mu"] = length_or_null(u, friction_rise(*model.friction));
-  const FieldFriction* field = model.friction->field_friction();
-  const auto* uniform = field ? std::get_if<UniformFootprint>(&field->footprint()) : nullptr;
+  add_field_json(j, *model.friction, u);
+  return j;
+}
+
+void add_field_json(nlohmann::json& j, const FrictionMap& field, const OutputUnits& u) {
+  const FieldFriction* f = field.field_friction();
+  const auto* uniform = f ? std::get_if<UniformFootprint>(&f->footprint()) : nullptr;
   j["width"] = uniform ? nlohmann::json(u.length(uniform->width)) : nlohmann::json(nullptr);
   j["c_mu"] = nullptr;
-  j["friction"] = friction_json(*model.friction, u);
-  return j;
+  j["friction"] = friction_json(field, u);
 }
 
 nlohmann::json length_or_null(const OutputUnits& u, double x) {

@@ -45,6 +45,10 @@ const TwoRegionFriction& two_region(const SimulateModel& model);
 /// description (summary_json's friction_json).
 nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu);
 
+/// A field's part of a report: "width" the footprint's (null for a point), "c_mu" null (a field
+/// has no single ratio) and "friction" the field's description (summary_json's friction_json).
+void add_field_json(nlohmann::json& j, const FrictionMap& field, const OutputUnits& u);
+
 /// A position [-] in the run's units, or null when not finite (x_stick,min = +inf when the
 /// peak acceleration exceeds c_mu; NaN where there is none).
 nlohmann::json length_or_null(const OutputUnits& u, double x);

@@ -149,6 +149,18 @@ py::dict surfaces(std::vector<double> a2, std::vector<double> a3,
 
 }  // namespace
 
+// positioning_surfaces' binding body for either table: the grids as vectors, progress and
+// Ctrl-C, the GIL released while `compute(a2, a3, sweep)` runs, the cells as arrays.
+template <class Compute>
+py::dict surfaces_of(const py::object& a2_in, const py::object& a3_in, int threads,
+                     const py::object& progress_in, const Compute& compute) {
+  std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
+  const PythonProgress progress(progress_in);
+  const SweepOptions sweep = sweep_options(threads, progress);
+  const std::vector<PositioningCell> cells = progress.run([&] { return compute(a2, a3, sweep); });
+  return surfaces(std::move(a2), std::move(a3), cells);
+}
+
 void bind_positioning(py::module_& m) {
   bind_positioning_options(m);
   bind_accuracy(m);
@@ -158,13 +170,11 @@ void bind_positioning(py::module_& m) {
       [](double period, double stroke, double width, double c_mu, const py::object& a2_in,
          const py::object& a3_in, const PositioningOptions& options, int threads,
          const py::object& progress_in) {
-        std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
-        const PythonProgress progress(progress_in);
-        const SweepOptions sweep = sweep_options(threads, progress);
-        const std::vector<PositioningCell> cells = progress.run([&] {
-          return positioning_surfaces(period, stroke, width, c_mu, a2, a3, options, sweep);
-        });
-        return surfaces(std::move(a2), std::move(a3), cells);
+        return surfaces_of(a2_in, a3_in, threads, progress_in,
+                           [&](const auto& a2, const auto& a3, const SweepOptions& sweep) {
+                             return positioning_surfaces(period, stroke, width, c_mu, a2, a3,
+                                                         options, sweep);
+                           });
       },
       py::arg("period"), py::arg("stroke"), py::arg("width"), py::arg("c_mu"), py::arg("a2"),
       py::arg("a3"), py::kw_only(), py::arg("options") = PositioningOptions{},
@@ -190,13 +200,11 @@ sweep_accelerations. The GIL is released while computing.)doc");
       [](double period, double stroke, const FrictionMap& friction, const py::object& a2_in,
          const py::object& a3_in, const PositioningOptions& options, int threads,
          const py::object& progress_in) {
-        std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
-        const PythonProgress progress(progress_in);
-        const SweepOptions sweep = sweep_options(threads, progress);
-        const std::vector<PositioningCell> cells = progress.run([&] {
-          return positioning_surfaces(period, stroke, friction, a2, a3, options, sweep);
-        });
-        return surfaces(std::move(a2), std::move(a3), cells);
+        return surfaces_of(a2_in, a3_in, threads, progress_in,
+                           [&](const auto& a2, const auto& a3, const SweepOptions& sweep) {
+                             return positioning_surfaces(period, stroke, friction, a2, a3,
+                                                         options, sweep);
+                           });
       },
       py::arg("period"), py::arg("stroke"), py::arg("friction"), py::arg("a2"), py::arg("a3"),
       py::kw_only(), py::arg("options") = PositioningOptions{}, py::arg("threads") = 0,

@@ -113,6 +113,20 @@ bool arrive(PositioningAccuracy& r, const TableProfile& profile, const FrictionL
   return true;
 }
 
+// Sect. 7.1 on `friction` once the part has arrived (r.steady, Δx = dx): x_mu is the level's
+// rise, x_stick,min eq. (41) (the two-region table's closed form under the paper's law, the
+// level's pieces otherwise), then the entries.
+void walk_onto(PositioningAccuracy& r, const TableProfile& profile, const FrictionLaw& law,
+               const FrictionMap& friction, double dx, const PositioningOptions& o) {
+  r.x_mu = friction_rise(friction);
+  const TwoRegionFriction* two = friction.two_region();
+  r.x_stick_min = two && law.is_unit()
+                      ? stick_position_min(*two, profile.peak_acceleration())
+                      : stick_position_min(*friction.piecewise_affine(), law,
+                                           profile.peak_acceleration());
+  run_entries(r, profile, law, friction, dx, o);
+}
+
 }  // namespace
 
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
@@ -124,43 +138,22 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Fric
   PositioningAccuracy r;
   double dx = 0;
   if (!arrive(r, profile, law, o, dx)) return r;
-  r.x_mu = dx;  // the paper's placement: x_mu = Δx
-  const TwoRegionFriction friction(r.x_mu, width, c_mu);
-  r.x_stick_min =
-      law.is_unit() ? stick_position_min(friction, profile.peak_acceleration())
-                    : stick_position_min(*friction.piecewise_affine(), law, profile.peak_acceleration());
-  run_entries(r, profile, law, friction, dx, o);
+  // The paper's placement: x_mu = Δx.
+  walk_onto(r, profile, law, TwoRegionFriction(dx, width, c_mu), dx, o);
   return r;
 }
 
 PositioningAccuracy positioning_accuracy(const TableProfile& profile, const FrictionLaw& law,
                                          const FrictionMap& friction,
                                          const PositioningOptions& o) {
-  if (const TwoRegionFriction* two = friction.two_region()) {
-    // The paper's table where it stands: its eq. (41) and accumulation proof apply.
-    validate(o);
-    require_exact_profile(profile, "positioning");
-    PositioningAccuracy r;
-    double dx = 0;
-    if (!arrive(r, profile, law, o, dx)) return r;
-    r.x_mu = two->x_mu();
-    r.x_stick_min = law.is_unit()
-                        ? stick_position_min(*two, profile.peak_acceleration())
-                        : stick_position_min(*two->piecewise_affine(), law,
-                                             profile.peak_acceleration());
-    run_entries(r, profile, law, friction, dx, o);
-    return r;
-  }
   validate(o);
   require_exact_profile(profile, "positioning");
-  const PiecewiseAffineFriction* pieces = require_positioning_level(friction);
-  const double X = friction_rise(*pieces);
+  // The paper's table where it stands needs no check: its eq. (41) and accumulation proof apply.
+  if (!friction.two_region()) require_positioning_level(friction);
   PositioningAccuracy r;
   double dx = 0;
   if (!arrive(r, profile, law, o, dx)) return r;
-  r.x_mu = X;
-  r.x_stick_min = stick_position_min(*pieces, law, profile.peak_acceleration());
-  run_entries(r, profile, law, friction, dx, o);
+  walk_onto(r, profile, law, friction, dx, o);
   return r;
 }
 

@@ -16,30 +16,24 @@ struct Recorder final : core::StepObserver {
   long long every;
   long long last = -1;  // step index of the last sample
   Recorder(PlanarTrajectory& o, long long e) : out(o), every(e) {}
-  void record(const PlanarRigidState& s) {
-    out.t.push_back(s.t);
-    out.x.push_back(s.pose.x), out.y.push_back(s.pose.y), out.angle.push_back(s.pose.angle);
-    out.ux.push_back(s.twist.ux), out.uy.push_back(s.twist.uy);
-    out.omega.push_back(s.twist.omega);
-    out.table_x.push_back(s.table.x), out.table_y.push_back(s.table.y);
-    out.table_angle.push_back(s.table.angle);
-    out.mode.push_back(s.mode);
-    out.pivot.push_back(s.pivot);
-    last = s.step_index;
-  }
-  void on_step(const core::State& s) override {
-    const core::BodyState& b = s.bodies[0];
-    out.census.add(b.mode);
-    if (s.step_index % every != 0) return;
-    out.t.push_back(s.t);
+  // One sample: the time and step, the table, and the body (a PlanarRigidState or the core's
+  // BodyState: both have pose, twist, mode and pivot).
+  template <class Body>
+  void record(double t, long long step_index, const PlanarTablePose& table, const Body& b) {
+    out.t.push_back(t);
     out.x.push_back(b.pose.x), out.y.push_back(b.pose.y), out.angle.push_back(b.pose.angle);
     out.ux.push_back(b.twist.ux), out.uy.push_back(b.twist.uy);
     out.omega.push_back(b.twist.omega);
-    out.table_x.push_back(s.table.x), out.table_y.push_back(s.table.y);
-    out.table_angle.push_back(s.table.angle);
+    out.table_x.push_back(table.x), out.table_y.push_back(table.y);
+    out.table_angle.push_back(table.angle);
     out.mode.push_back(b.mode);
     out.pivot.push_back(b.pivot);
-    last = s.step_index;
+    last = step_index;
+  }
+  void record(const PlanarRigidState& s) { record(s.t, s.step_index, s.table, s); }
+  void on_step(const core::State& s) override {
+    out.census.add(s.bodies[0].mode);
+    if (s.step_index % every == 0) record(s.t, s.step_index, s.table, s.bodies[0]);
   }
 };
 
