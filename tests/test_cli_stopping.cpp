@@ -414,6 +414,32 @@ TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
   EXPECT_TRUE(json::parse(read_text(box.work_file("pf.summary.json")))["c_mu"].is_null());
 }
 
+// accuracy and sweep positioning under a Stribeck law ran the slip integrator (steady state,
+// dx, stopping runs) at its default tolerances whatever --relative-tolerance said (offered, then
+// ignored; found beside converge's). A loose tolerance must change the results, by no more
+// than it allows (x_mu = dx within 1e-6 at rtol = atol = 1e-4 over one steady period).
+TEST(CliStop, PositioningUsesTheSlipIntegratorTolerances) {
+  CliSandbox box;
+  const std::vector<std::string> law = {"--mu-static", "0.36", "--stribeck-velocity", "0.1",
+                                        "--entries", "3"};
+  const std::vector<std::string> loose = {"--relative-tolerance", "1e-4",
+                                          "--absolute-tolerance", "1e-4"};
+  auto run = [&](std::vector<std::string> args, const std::vector<std::string>& extra) {
+    args.insert(args.end(), law.begin(), law.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliResult r = box.run(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.out;
+  };
+  const json tight = json::parse(run({"accuracy", "--json"}, {}));
+  const json coarse = json::parse(run({"accuracy", "--json"}, loose));
+  EXPECT_NE(tight["x_mu"].get<double>(), coarse["x_mu"].get<double>()) << "tolerance ignored";
+  EXPECT_NEAR(tight["x_mu"].get<double>(), coarse["x_mu"].get<double>(), 1e-6);
+  const std::vector<std::string> grid = {"sweep", "positioning", "--a2-range", "2:2.5:2",
+                                         "--a3-range", "1:1.3:2"};
+  EXPECT_NE(run(grid, {}), run(grid, loose)) << "tolerance ignored";
+}
+
 #endif  // SELFALIGN_CLI_PATH
 
 }  // namespace

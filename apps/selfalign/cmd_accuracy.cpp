@@ -96,6 +96,8 @@ void run_accuracy(const ConfigFlags& flags, const AccuracyFlags& f) {
   options.entries = f.entries;
   options.stopping.max_periods = f.max_periods;
   options.stopping.fractions = {0.99, 0.999};  // the CSV's periods_p99, periods_p999
+  // Stribeck or viscous laws: the steady state, Δx and the stopping runs all integrate.
+  options.steady.integrator = options.stopping.integrator = model.options.integrator;
   // The two-region table is placed at x_mu = Δx (the paper's Sect. 7.1); a field stands where
   // its file puts it, and the entries are placed before its rise.
   const TwoRegionFriction* two = model.friction->two_region();

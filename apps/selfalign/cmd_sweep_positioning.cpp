@@ -113,6 +113,8 @@ void run_sweep_positioning(const PositioningFlags& f) {
   PositioningOptions options;
   options.entries = f.entries;
   options.stopping.max_periods = f.max_periods;
+  // Stribeck or viscous laws: the steady state, Δx and the stopping runs all integrate.
+  options.steady.integrator = options.stopping.integrator = model.integrator;
   const ThreePhaseParameters& p = *model.three_phase;
   std::vector<PositioningCell> cells;
   {

@@ -108,7 +108,8 @@ bool arrive(PositioningAccuracy& r, const TableProfile& profile, const FrictionL
     r.x_mu = r.x_stick_min = r.overshoot_min = r.overshoot_max = r.dx_d = r.x_d = kNaN;
     return false;
   }
-  const PeriodMap map(profile, law);
+  // Δx from the steady period the search found: under the same integrator tolerances.
+  const PeriodMap map(profile, law, PeriodMapOptions{.integrator = o.steady.integrator});
   dx = largest_displacement(map, r.steady.x_dot_0s);
   return true;
 }
