@@ -39,6 +39,19 @@ InvalidParameter::InvalidParameter(std::string name, std::string value, std::str
 InvalidParameter::InvalidParameter(std::string name, double value, std::string allowed)
     : InvalidParameter(std::move(name), format_number(value), std::move(allowed)) {}
 
+double parse_number(const std::string& name, const std::string& text) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size())
+    throw InvalidParameter(name, text, "must be a number");
+  return v;
+}
+
 double require_finite(const std::string& name, double value) {
   if (!std::isfinite(value)) throw InvalidParameter(name, value, "must be a finite number");
   return value;

@@ -404,6 +404,29 @@ TEST(CliSweep, PeriodAndStrokeStudies) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// parameters
+
+TEST(CliParameters, ListsTheViewAfterSetAsTheSiModelDefinesIt) {
+  CliSandbox box;
+  // SI run: mu = 0.2, the table's a2 = 3 m/s^2; --set applies the factors to the SI keys:
+  // a2 x a/p^2 (a = 1.2, p = 2: 3 x 0.3 = 0.9 m/s^2), the period x 2.
+  const json j = run_json(box, {"parameters", "--units", "si", "--mu", "0.2", "--a2", "3",
+                                "--a3", "2", "--period", "0.05", "--stroke", "0.0002", "--set",
+                                "amplitude_scale=1.2", "--set", "time_scale=2", "--set",
+                                "mu_static=0.25", "--json"});
+  std::map<std::string, json> by_name;
+  for (const json& p : j["parameters"]) by_name[p["name"]] = p;
+  EXPECT_NEAR(by_name["a2"]["value"].get<double>(), 0.9, 1e-15);
+  EXPECT_EQ(by_name["a2"]["unit"], "[m/s^2]");
+  EXPECT_NEAR(by_name["period"]["value"].get<double>(), 0.1, 1e-16);
+  EXPECT_NEAR(by_name["stroke"]["value"].get<double>(), 0.00024, 1e-18);
+  EXPECT_EQ(by_name["mu_static"]["value"], 0.25);
+  EXPECT_TRUE(by_name["stribeck_velocity"]["value"].is_null());  // absent, not 0
+  EXPECT_EQ(by_name.count("g"), 1u);
+  EXPECT_EQ(by_name["amplitude_scale"]["value"], 1.0);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Misuse: exit code 2, one line on stderr, nothing on stdout, no file left behind.
 
 class CliAnalysisMisuse : public ::testing::TestWithParam<MisuseCase> {};
@@ -449,6 +472,19 @@ const MisuseCase kAnalysisMisuseCases[] = {
      {"converge", "--samples-per-period", "0", "--out", "c.csv"}, {"samples_per_period = 0"}},
     {"converge_periods_zero", {"converge", "--periods", "0", "--out", "c.csv"}, {"periods = 0"}},
     {"converge_v1_nan", {"converge", "--v1", "nan", "--out", "c.csv"}, {"v1"}},
+    {"parameters_setting", {"parameters", "--set", "step=1e-3", "--out", "p.json"},
+     {"step", "setting", "not a model parameter"}},
+    {"parameters_not_in_model",
+     {"parameters", "--friction", "uniform", "--set", "c_mu=3", "--out", "p.json"},
+     {"c_mu", "friction = uniform"}},
+    {"parameters_not_a_number", {"parameters", "--set", "c_mu=3x", "--out", "p.json"},
+     {"c_mu = 3x", "number"}},
+    {"parameters_out_of_range", {"parameters", "--set", "c_mu=0.5", "--out", "p.json"},
+     {"c_mu = 0.5", "> 1"}},
+    {"parameters_malformed", {"parameters", "--set", "c_mu", "--out", "p.json"},
+     {"NAME=VALUE"}},
+    {"parameters_offers_no_solver_flag", {"parameters", "--step", "1e-3", "--out", "p.json"},
+     {"--step is not used by selfalign parameters"}},
 };
 
 INSTANTIATE_TEST_SUITE_P(Analysis, CliAnalysisMisuse, ::testing::ValuesIn(kAnalysisMisuseCases),

@@ -14,6 +14,7 @@
 #include "selfalign/io/summary_json.hpp"
 #include "selfalign/io/trajectory_csv.hpp"
 #include "selfalign/profiles/three_phase.hpp"
+#include "expect_invalid.hpp"
 #include "temp_dir.hpp"
 
 namespace selfalign {
@@ -26,18 +27,7 @@ using testing::write_text;
 // Unit conversions are a multiply or divide each way: a round trip is exact to a few ulps.
 constexpr double kRoundTripTolerance = 1e-15;
 
-// Expects `f` to throw InvalidParameter naming `name`; returns its message.
-template <class F>
-std::string expect_invalid(F&& f, const std::string& name) {
-  try {
-    f();
-  } catch (const InvalidParameter& e) {
-    EXPECT_EQ(e.name(), name) << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no InvalidParameter thrown, expected one naming " << name;
-  return "";
-}
+using testing::expect_invalid;
 
 TEST(SimulateConfigKeys, EveryKeyHasAFlagAndHelp) {
   for (const ConfigKey& key : simulate_config_keys()) {

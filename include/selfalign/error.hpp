@@ -36,6 +36,9 @@ std::string format_number(double value);
 double require_positive(const std::string& name, double value);
 /// Throws InvalidParameter unless value is finite and >= 0.
 double require_non_negative(const std::string& name, double value);
+/// The number `text` spells (std::stod, the whole text; "nan" and "inf" parse); throws
+/// InvalidParameter(name, text, "must be a number") otherwise.
+double parse_number(const std::string& name, const std::string& text);
 /// Throws InvalidParameter unless value is finite.
 double require_finite(const std::string& name, double value);
 /// Throws InvalidParameter unless value is finite and > bound ("must be > bound").

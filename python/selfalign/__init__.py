@@ -176,6 +176,9 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     planar_steady_state,
     planar_drift_field,
     planar_stop,
+    ModelParameter,
+    model_parameters,
+    with_parameters,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

@@ -25,5 +25,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_design(m);
   bind_uncertainty(m);
   bind_planar(m);
+  bind_parameters(m);
   finish_classes(m);
 }

@@ -181,6 +181,7 @@ EXAMPLES = {
         PROFILE, field=example("HalfPlaneStepField"), part=sa.RigidPart(), step=0.01,
         xs=[0.1], ys=[0.0], angles=[0.5], periods=1)["samples"][0],
     "PlanarStopRun": lambda: example("PlanarStopSummary").runs[1],  # not stopped: NaN end
+    "ModelParameter": lambda: sa.model_parameters({})[3],  # stribeck_velocity: NaN (absent)
     "PlanarStopSummary": lambda: sa.planar_stop(  # the second entry never arrives
         PROFILE, field=sa.HalfPlaneStepField(origin_x=0.3, width=0.05, c_mu=4.0),
         part=sa.RigidPart(), step=0.01, entries=[[0.4, 0.1, 0.2], [-5.0, 0.0, 0.0]],

@@ -173,13 +173,26 @@ namespace {
 // the run uses its key or not: beyond, a value is a typo or a probe and would overflow the
 // motion it describes; NaN and ±inf are refused alike (never read as "not given").
 void require_moderate_numbers(const SimulateConfig& c) {
-  auto check = [](std::string_view name, double v) { require_moderate(std::string(name), v); };
+  auto check = [](std::string_view name, double v) {
+    if (!(std::abs(v) <= kMaxMagnitude)) require_moderate(std::string(name), v);  // NaN too
+  };
   for (const ConfigKey& key : simulate_config_keys()) {
     if (const auto* f = std::get_if<NumberField>(&key.field); f && (c.**f)) check(key.name, *(c.**f));
     if (const auto* f = std::get_if<NumberListField>(&key.field); f && (c.**f))
       for (double v : *(c.**f)) check(key.name, v);
   }
 }
+// Whether `c` sets every key that has a default: then resolving it changes nothing.
+bool sets_every_default(const SimulateConfig& c, const SimulateConfig& defaults) {
+  for (const ConfigKey& key : simulate_config_keys()) {
+    const bool unset_default = std::visit(
+        [&](auto field) { return (defaults.*field).has_value() && !(c.*field).has_value(); },
+        key.field);
+    if (unset_default) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 SimulateConfig resolve_simulate_config(const SimulateConfig& in) {
@@ -193,7 +206,12 @@ SimulateConfig resolve_simulate_config(const SimulateConfig& in) {
     throw InvalidParameter("field_file", *config.field_file,
                            "belongs to friction = field, but friction = " + *config.friction +
                                ": give friction = field or drop field_file");
-  const SimulateConfig defaults = simulate_config_defaults();
+  static const SimulateConfig defaults = simulate_config_defaults();
+  if (sets_every_default(config, defaults)) {  // resolved already (a parameter view's config)
+    if (parse_unit_system(*config.units) == UnitSystem::si)
+      (void)Scales(*config.length_scale, *config.mu, *config.g);  // validates them, as below
+    return config;
+  }
   const SimulateConfig given = merge(defaults, config);  // dimensionless defaults under config
   if (parse_unit_system(*given.units) == UnitSystem::dimensionless) return given;
   // SI: unset keys take their dimensionless default converted with the run's scales.

@@ -104,12 +104,20 @@ std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c, UnitSystem u
 
 }  // namespace
 
-FrictionLaw friction_law(const SimulateConfig& c) {
-  const SimulateConfig r = resolve_simulate_config(c);
+namespace {
+
+// The law of a resolved config.
+FrictionLaw law_of_resolved(const SimulateConfig& r) {
   FrictionLaw law = law_of_coefficients(*r.mu, r.mu_static, r.mu_backward);
   if (r.stribeck_velocity) law = law.with_stribeck(*r.stribeck_velocity, *r.stribeck_exponent);
   if (r.viscous) law = law.with_viscous(*r.viscous);
   return law;
+}
+
+}  // namespace
+
+FrictionLaw friction_law(const SimulateConfig& c) {
+  return law_of_resolved(resolve_simulate_config(c));
 }
 
 namespace {
@@ -126,7 +134,7 @@ void build_physics(const SimulateConfig& c, SimulateModel& m) {
   m.options.integrator = {*c.relative_tolerance, *c.absolute_tolerance};
   validate(m.options.integrator);
   m.friction = make_friction(c, m.units, m.scales);
-  m.law = friction_law(c);
+  m.law = law_of_resolved(c);
   m.profile = make_profile(c, m.units, m.scales);
   m.initial = {require_finite("t0", *c.t0), require_finite("x0", *c.x0),
                require_finite("v0", *c.v0)};
@@ -179,7 +187,7 @@ ProfileModel build_profile_model(const SimulateConfig& config, NonPhysicalProfil
   const bool si = m.units == UnitSystem::si;
   try {
     const SimulateConfig c = si ? to_dimensionless(resolved, m.scales) : resolved;
-    m.law = friction_law(c);
+    m.law = law_of_resolved(c);
     m.integrator = {*c.relative_tolerance, *c.absolute_tolerance};
     validate(m.integrator);
     if (*c.profile == "three-phase") {

@@ -27,19 +27,6 @@ void require_bounds(const std::string& name, double lower, double upper, bool al
                            "must be > lower = " + format_number(lower));
 }
 
-double parse_number(const std::string& name, const std::string& text) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size())
-    throw InvalidParameter(name, text, "must be a number");
-  return v;
-}
-
 std::vector<std::string> split(const std::string& text) {
   std::vector<std::string> parts;
   std::stringstream ss(text);

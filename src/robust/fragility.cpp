@@ -24,14 +24,15 @@ Fragility fragility(const DesignRequest& q, const Process& p, double level, int 
   const double peak = std::max(p.a2, p.a3);
   f.stop_margin = 1 - peak / (ratio * c_mu * mu * q.gravity);
   f.motion_margin = p.a2 / (ratio * mu * q.gravity) - 1;
-  f.end_nominal = run_process(q, p, nominal, max_periods).end_position;
+  const ProcessFamily family(q, p);
+  f.end_nominal = run_process(family, nominal, max_periods).end_position;
   // Input k at its two examined values (factors on the nominal).
   const auto shifted = [&](std::size_t k, std::array<double, 2>& ends, double low, double high) {
     double shift = 0;
     for (int side = 0; side < 2; ++side) {
       InputValues v = nominal;
       v[k] *= side == 0 ? low : high;
-      ends[side] = run_process(q, p, v, max_periods).end_position;
+      ends[side] = run_process(family, v, max_periods).end_position;
       shift = std::isnan(ends[side]) ? std::numeric_limits<double>::infinity()
                                      : std::max(shift, std::abs(ends[side] - f.end_nominal));
     }

@@ -74,6 +74,7 @@ MonteCarloResult monte_carlo(const DesignRequest& q, const Process& p,
   r.end_position.assign(n, std::numeric_limits<double>::quiet_NaN());
   r.process_time = r.end_position;
   r.entry_time = r.end_position;
+  const ProcessFamily family(q, p);
   SweepOptions sweep;
   sweep.threads = o.threads;
   sweep.progress = o.progress;
@@ -82,7 +83,7 @@ MonteCarloResult monte_carlo(const DesignRequest& q, const Process& p,
       [&](std::size_t i) {
         const InputValues v = draw_inputs(q, u, o.seed, o.first_run + i);
         for (std::size_t k = 0; k < kUncertainInputs; ++k) r.inputs[k][i] = v[k];
-        const ProcessOutcome out = run_process(q, p, v, o.max_periods);
+        const ProcessOutcome out = run_process(family, v, o.max_periods);
         r.kind[i] = out.kind;
         r.end_position[i] = out.end_position;
         r.process_time[i] = out.process_time;

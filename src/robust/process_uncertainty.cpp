@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/parameter_view.hpp"
+#include "selfalign/io/simulate_model.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
 #include "selfalign/profiles/make_three_phase_profile.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -128,23 +130,59 @@ void validate(const Process& p) {
                            "(case 0: the table cannot reach the stroke)");
 }
 
+namespace {
+
+// The process as a model config: SI, the three-phase table (jumps or the jerk limit), the
+// two-region table at x_mu, the request's law and gravity, lengths in units of `length` (Sect.
+// 3.2 with L = the drawn width).
+SimulateConfig process_config(const DesignRequest& q, const Process& p, double length) {
+  SimulateConfig c;
+  c.units = "si";
+  c.profile = "three-phase";
+  c.period = p.period, c.stroke = p.stroke, c.a2 = p.a2, c.a3 = p.a3;
+  if (!std::isinf(p.jerk)) c.jerk = p.jerk;
+  c.friction = "two-region";
+  c.x_mu = p.x_mu, c.width = q.width, c.c_mu = q.c_mu;
+  c.mu = q.mu, c.mu_static = q.mu_static, c.mu_backward = q.mu_backward;
+  c.g = q.gravity, c.length_scale = length;
+  return c;
+}
+
+// The seven inputs as parameters of the process's model, in draw_values' order.
+const std::vector<std::string> kDrawnParameters{"mu",    "c_mu", "mu_static",       "mu_backward",
+                                                "width", "x_mu", "amplitude_scale", "time_scale"};
+
+// A draw as values of kDrawnParameters: the absolute coefficients follow the drawn mu (the
+// static one by the drawn ratio, the backward one by the request's ratio, capped by the static
+// one), x_mu moves by the drawn offset, and the table's motion y(t) -> a y(t / p).
+std::vector<double> draw_values(const DesignRequest& q, const Process& p, const InputValues& v) {
+  const double mu = v[0], static_ratio = v[2];
+  const double backward_ratio = std::min(q.mu_backward.value_or(q.mu) / q.mu, static_ratio);
+  return {mu, v[1], static_ratio * mu, backward_ratio * mu, v[3], p.x_mu + v[4], v[5], v[6]};
+}
+
+}  // namespace
+
+ProcessFamily::ProcessFamily(const DesignRequest& q, const Process& p)
+    : request_(q), process_(p), view_(process_config(q, p, q.width), kDrawnParameters) {}
+
+SimulateConfig ProcessFamily::config(const InputValues& v) const {
+  SimulateConfig c = view_.with(draw_values(request_, process_, v));
+  c.length_scale = v[3];  // the unit: L = the drawn width (Sect. 3.2)
+  return c;
+}
+
 ProcessModel::ProcessModel(const DesignRequest& q, const Process& p, const InputValues& v)
-    : scales(v[3], v[0], q.gravity),
-      law(v[2], 1.0, std::min(q.mu_backward.value_or(q.mu) / q.mu, v[2])),
-      c_mu(v[1]),
-      x_mu(scales.length_from_si(p.x_mu + v[4])) {
-  const double amplitude = v[5], period_factor = v[6];
-  const Scales& sc = scales;
-  // y~(t) -> a y~(t / p): stroke x a, accelerations x a / p^2, jerk x a / p^3.
-  const double acc = amplitude / (period_factor * period_factor);
-  const ThreePhaseParameters tp{sc.time_from_si(p.period * period_factor),
-                                sc.length_from_si(p.stroke * amplitude),
-                                sc.acceleration_from_si(p.a2 * acc),
-                                sc.acceleration_from_si(p.a3 * acc)};
-  const double jerk = std::isinf(p.jerk)
-                         ? p.jerk
-                         : sc.acceleration_from_si(p.jerk * acc / period_factor) * sc.time();
-  profile = make_three_phase_profile(tp, jerk);
+    : ProcessModel(ProcessFamily(q, p), v) {}
+
+ProcessModel::ProcessModel(const ProcessFamily& family, const InputValues& v)
+    : scales(v[3], v[0], family.request().gravity) {
+  SimulateModel m = build_simulate_model(family.config(v));
+  profile = std::move(m.profile);
+  law = m.law;
+  const TwoRegionFriction* table = m.friction->two_region();
+  c_mu = table->c_mu();
+  x_mu = table->x_mu();
 }
 
 namespace {
@@ -225,7 +263,11 @@ ProcessOutcome ProcessModel::outcome(const StoppingRun& run) const {
 
 ProcessOutcome run_process(const DesignRequest& q, const Process& p, const InputValues& v,
                            int max_periods) {
-  const ProcessModel m(q, p, v);
+  return run_process(ProcessFamily(q, p), v, max_periods);
+}
+
+ProcessOutcome run_process(const ProcessFamily& family, const InputValues& v, int max_periods) {
+  const ProcessModel m(family, v);
   const TwoRegionFriction friction(m.x_mu, 1.0, m.c_mu);
   const StoppingOptions so = ProcessModel::stopping(max_periods);
   return m.outcome(stopping_run(*m.profile, friction, m.law, {0, 0, 0}, so));

@@ -69,8 +69,9 @@ WorstCase worst_case(const DesignRequest& q, const Process& p, const ProcessUnce
     }
     return v;
   };
+  const ProcessFamily family(q, p);
   const auto evaluate = [&](Point& pt) {
-    pt.out = run_process(q, p, pt.v, o.max_periods);
+    pt.out = run_process(family, pt.v, o.max_periods);
     pt.error = pt.out.kind == StopKind::not_stopped ? kNotStoppedError
                                                      : std::abs(pt.out.end_position - q.distance);
   };

@@ -21,6 +21,7 @@
 
 #include "selfalign/analysis/stopping.hpp"
 #include "selfalign/design/process_design.hpp"
+#include "selfalign/io/parameter_view.hpp"
 #include "selfalign/robust/distribution.hpp"
 #include "selfalign/units.hpp"
 
@@ -117,11 +118,15 @@ struct ProcessOutcome {
   double entry_time = std::numeric_limits<double>::quiet_NaN();
 };
 
+class ProcessFamily;
+
 /// One draw of a process in model units (Sect. 3.2 with L = the drawn width and the drawn mu):
 /// the table motion y~(t) -> a y~(t / p), the law (drawn static ratio, kinetic 1, the request's
 /// backward ratio capped by the static one) and where the rough region starts, x_mu + offset.
+/// Built from the process's model config with the draw's parameters (ProcessFamily).
 struct ProcessModel {
   ProcessModel(const DesignRequest& request, const Process& process, const InputValues& inputs);
+  ProcessModel(const ProcessFamily& family, const InputValues& inputs);
   Scales scales;
   std::unique_ptr<TableProfile> profile;
   FrictionLaw law;
@@ -133,6 +138,32 @@ struct ProcessModel {
   /// A stopping run's outcome in SI.
   ProcessOutcome outcome(const StoppingRun& run) const;
 };
+
+/// The models of one process under its uncertain inputs: the process as a model config (SI,
+/// three-phase table, two-region table at x_mu, the request's law and gravity) and the seven
+/// inputs as parameters of its view (io/parameter_view.hpp), the one place where robust
+/// analyses change a model:
+///   mu -> mu; c_mu -> c_mu; static_ratio s -> mu_static = s mu; mu_backward = min(request's
+///   ratio, s) mu; width -> width (and the unit length L); x_mu_offset d -> x_mu = x_mu + d;
+///   amplitude a -> amplitude_scale; period_factor p -> time_scale.
+/// Built once per process (the names are looked up once); model(inputs) per draw.
+class ProcessFamily {
+ public:
+  ProcessFamily(const DesignRequest& request, const Process& process);
+  /// The model config of this draw (SI; the unit length L = the drawn width).
+  SimulateConfig config(const InputValues& inputs) const;
+  const DesignRequest& request() const noexcept { return request_; }
+  const Process& process() const noexcept { return process_; }
+
+ private:
+  DesignRequest request_;
+  Process process_;
+  ParameterView view_;
+};
+
+/// One exact stopping run of a model of `family` with these input values.
+ProcessOutcome run_process(const ProcessFamily& family, const InputValues& inputs,
+                           int max_periods);
 
 /// One exact stopping run of `process` with these input values (the request supplies g and
 /// mu_backward). max_periods bounds the run; a run that does not stop by then is not_stopped.

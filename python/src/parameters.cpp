@@ -1,0 +1,123 @@
+// The parameter view (io/parameter_view.hpp) for Python: a model described by its config keys
+// (a dict, the keys of `selfalign simulate`'s config files), its named parameters, and the same
+// model with some of them changed.
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "record.hpp"
+#include "repr.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/io/parameter_view.hpp"
+
+namespace selfalign::python {
+namespace {
+
+// One value of a config dict as the key's command-line text.
+std::string text_of(const std::string& key, const py::handle& value) {
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (py::isinstance<py::bool_>(value))
+    throw InvalidParameter(key, "a bool", "must be a string, a number or a list of numbers");
+  if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))
+    return format_number(value.cast<double>());
+  if (py::isinstance<py::sequence>(value) || py::hasattr(value, "__array__")) {
+    std::string s;
+    for (const py::handle& v : py::iter(value)) {
+      if (!s.empty()) s += ',';
+      s += format_number(v.cast<double>());
+    }
+    return s;
+  }
+  throw InvalidParameter(key, std::string(py::str(value.get_type().attr("__name__"))),
+                         "must be a string, a number or a list of numbers");
+}
+
+SimulateConfig config_of(const py::dict& d) {
+  SimulateConfig c;
+  for (const auto& [k, v] : d) {
+    const std::string key = py::str(k);
+    set_simulate_config_value(c, key, text_of(key, v));
+  }
+  return c;
+}
+
+py::dict dict_of(const SimulateConfig& c) {
+  py::dict d;
+  for (const ConfigKey& key : simulate_config_keys())
+    std::visit(
+        [&](auto field) {
+          if (!(c.*field)) return;
+          using V = std::decay_t<decltype(*(c.*field))>;
+          if constexpr (std::is_same_v<V, std::vector<double>>)
+            d[py::str(std::string(key.name))] = py::cast(*(c.*field));
+          else
+            d[py::str(std::string(key.name))] = *(c.*field);
+        },
+        key.field);
+  return d;
+}
+
+}  // namespace
+
+void bind_parameters(py::module_& m) {
+  py::class_<ModelParameter> p(m, "ModelParameter", R"doc(
+One named parameter of a model (C++ selfalign::ModelParameter): name ("mu_static",
+"accelerations[2]", "amplitude_scale"), value in the run's unit system (NaN when absent: no
+Stribeck decay), unit ("[-]" or the SI unit in an SI run), group ("law", "scales", "friction",
+"profile", "initial") and meaning.)doc");
+  p.def_readonly("name", &ModelParameter::name, "the name with_parameters takes")
+      .def_readonly("value", &ModelParameter::value,
+                    "value in the run's unit system; NaN when absent")
+      .def_readonly("unit", &ModelParameter::unit, "\"[-]\", or the SI unit in an SI run")
+      .def_readonly("group", &ModelParameter::group,
+                    "law, scales, friction, profile or initial")
+      .def_readonly("meaning", &ModelParameter::meaning, "what it is, one line")
+      .def("__repr__", [](const ModelParameter& x) {
+        return Repr("ModelParameter")
+            .raw("name", "'" + x.name + "'")("value", x.value)
+            .raw("unit", "'" + x.unit + "'")
+            .str();
+      });
+  def_record(
+      p,
+      [](std::string name, double value, std::string unit, std::string group,
+         std::string meaning) {
+        return ModelParameter{std::move(name), value, Dimension::none, std::move(unit),
+                              std::move(group), std::move(meaning)};
+      },
+      field("name", &ModelParameter::name), field("value", &ModelParameter::value),
+      field("unit", &ModelParameter::unit), field("group", &ModelParameter::group),
+      field("meaning", &ModelParameter::meaning));
+
+  m.def(
+      "model_parameters",
+      [](const py::dict& config) { return model_parameters(config_of(config)); },
+      py::arg("config"), R"doc(
+The named parameters of the model a config describes (C++ model_parameters,
+io/parameter_view.hpp): `config` is a dict of config keys (those of `selfalign simulate`'s
+config files, e.g. {"units": "si", "mu": 0.2, "a2": 3.0}; arrays as lists), unset keys at their
+defaults. Returns a list of ModelParameter in view order: law (mu, mu_static, mu_backward,
+stribeck_velocity, stribeck_exponent, viscous), g in SI runs, the friction table's (x_mu, width,
+c_mu for two-region), the profile's (arrays by element, "accelerations[0]") with the factors
+amplitude_scale and time_scale (y(t) -> a y(t / p)), and t0, x0, v0. Raises InvalidParameter
+for a config that does not resolve.)doc");
+  m.def(
+      "with_parameters",
+      [](const py::dict& config, const py::dict& values) {
+        ParameterValues v;
+        for (const auto& [k, x] : values) v.emplace_back(py::str(k), x.cast<double>());
+        return dict_of(with(config_of(config), v));
+      },
+      py::arg("config"), py::arg("values"), R"doc(
+The config with some parameters changed (C++ with(config, values)): `values` maps parameter
+names (those model_parameters lists) to numbers, applied in order; a factor (amplitude_scale,
+time_scale) rescales the profile's keys as they stand. Returns the resolved config as a dict
+(every key set). Raises InvalidParameter naming a name that is not a parameter of this model
+(with the model's kinds), a setting (step, method, ...), an index out of range or a value that
+is not finite; values out of range are refused when the model is built.)doc");
+}
+
+}  // namespace selfalign::python
