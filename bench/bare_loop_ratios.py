@@ -22,6 +22,7 @@ PAIRS = [
     ("exact_per_period/case3_jerk12_uniform", "bare_exact_per_period/case3_jerk12_uniform"),
     ("time_stepping_per_step/case1_uniform", "bare_time_stepping_per_step/case1_uniform_inlined"),
     ("time_stepping_per_step/case3_uniform", "bare_time_stepping_per_step/case3_uniform_inlined"),
+    ("planar_point_per_step", "bare_planar_point_per_step"),
 ]
 
 

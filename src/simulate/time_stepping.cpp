@@ -25,28 +25,27 @@ TimeSteppingState make_time_stepping_state(const TableProfile& profile, const Ob
 namespace {
 
 // Moreau's step (time_stepping.hpp) over `steps` steps, the table velocity and the friction
-// level read through `velocity` and `bound`: the same arithmetic whichever they are.
-template <class Velocity, class Bound>
-void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLaw& law,
-                  const TimeSteppingOptions& o, TimeSteppingState& state, long long steps,
-                  MotionObserver* observer) {
-  const double h = o.step, theta = o.theta;
+// level read through `velocity` and `bound`: the same arithmetic whichever they are. The law's
+// speed dependence and the observer's presence are template arguments, so the common loop
+// (Coulomb, unobserved) carries neither test nor call.
+template <bool kSpeedDependent, bool kObserved, class Velocity, class Bound>
+void moreau_loop(const Velocity& velocity, const Bound& bound, const FrictionLaw& law,
+                 const TimeSteppingOptions& o, TimeSteppingState& state, long long steps,
+                 MotionObserver* observer) {
+  const double h = o.step, theta = o.theta, t0 = state.t0;
   const double s = law.static_coefficient(), kf = law.kinetic_forward(),
                kb = law.kinetic_backward();
-  const bool speed_dependent = law.velocity_dependent();
   double x = state.object.x, v = state.object.xd, yd = state.table_velocity;
-  long long k = state.step_index;
-  for (long long i = 0; i < steps; ++i) {
-    ++k;
-    const double t = state.t0 + static_cast<double>(k) * h;
+  const long long k0 = state.step_index;
+  for (long long i = 1; i <= steps; ++i) {
+    const double t = t0 + static_cast<double>(k0 + i) * h;
     const double yd1 = velocity(t);
-    const double x_mid = x + 0.5 * h * v;
-    const double m = bound(x_mid);
+    const double m = bound(x + 0.5 * h * v);  // the level at the step's midpoint
     const double v_free = v - (yd1 - yd);  // velocity without friction
     // Largest friction impulses: static to hold or catch, kinetic while sliding on.
     const bool sliding_on = (v > 0 && v_free > 0) || (v < 0 && v_free < 0);
     double v1 = 0;
-    if (!speed_dependent) {
+    if constexpr (!kSpeedDependent) {
       const double hold = h * ((sliding_on ? (v_free > 0 ? kf : kb) : s) * m);
       if (v_free > hold) v1 = v_free - h * (kf * m);
       else if (v_free < -hold) v1 = v_free + h * (kb * m);
@@ -60,7 +59,7 @@ void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLa
         v1 = v_free - sigma * h * law.kinetic(sigma, 0.0) * m;
     }
     const double x1 = x + h * ((1 - theta) * v + theta * v1);
-    if (observer) {
+    if constexpr (kObserved) {
       const auto direction = static_cast<std::int8_t>(v1 > 0 ? 1 : v1 < 0 ? -1 : 0);
       observer->on_motion({t - h, t, x, v, x1, v1, direction, ArcEnd::time_step}, nullptr);
     }
@@ -68,10 +67,25 @@ void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLa
     v = v1;
     yd = yd1;
   }
-  state.object = {state.t0 + static_cast<double>(k) * h, x, v};
+  const long long k = k0 + steps;
+  state.object = {t0 + static_cast<double>(k) * h, x, v};
   state.step_index = k;
   state.table_velocity = yd;
   state.stick = v == 0;
+}
+
+template <class Velocity, class Bound>
+void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLaw& law,
+                  const TimeSteppingOptions& o, TimeSteppingState& state, long long steps,
+                  MotionObserver* observer) {
+  const bool speed = law.velocity_dependent();
+  if (observer) {
+    if (speed) moreau_loop<true, true>(velocity, bound, law, o, state, steps, observer);
+    else moreau_loop<false, true>(velocity, bound, law, o, state, steps, observer);
+  } else {
+    if (speed) moreau_loop<true, false>(velocity, bound, law, o, state, steps, observer);
+    else moreau_loop<false, false>(velocity, bound, law, o, state, steps, observer);
+  }
 }
 
 }  // namespace
@@ -87,8 +101,14 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
   const UniformFriction* uniform = friction.uniform();
   if (pp && uniform) {
     const double level = uniform->level();
+    const auto constant_level = [level](double) { return level; };
+    if (pp->piecewise_constant()) {  // velocity() without its jerk test: the same numbers
+      moreau_steps([pp](double t) { return pp->velocity_of_constant_acceleration(t); },
+                   constant_level, law, o, state, steps, observer);
+      return;
+    }
     moreau_steps([pp](double t) { return pp->PiecewisePolynomialProfile::velocity(t); },
-                 [level](double) { return level; }, law, o, state, steps, observer);
+                 constant_level, law, o, state, steps, observer);
     return;
   }
   moreau_steps([&profile](double t) { return profile.velocity(t); },

@@ -71,6 +71,13 @@ class PiecewisePolynomialProfile final : public TableProfile {
     const double tau = ph - s.begin;
     return s.yd + (s.jerk == 0.0 ? s.accel * tau : tau * (s.accel + 0.5 * s.jerk * tau));
   }
+  /// velocity(t) of a piecewise-constant acceleration (piecewise_constant() true) without the
+  /// jerk test: the same arithmetic, for the time-stepping loop over the paper's profiles.
+  double velocity_of_constant_acceleration(double t) const noexcept {
+    const double ph = phase(t);
+    const AccelerationSegment& s = segments_[segment_at(ph)];
+    return s.yd + s.accel * (ph - s.begin);
+  }
   double peak_acceleration() const override { return peak_; }
   double stroke() const override { return stroke_; }
   std::string kind() const override { return kind_; }
