@@ -212,3 +212,74 @@ TEST(ParameterView, AViewWithFreeParametersEvaluatesManyValues) {
 }
 
 }  // namespace selfalign::parameter_view_test
+
+#include "temp_dir.hpp"
+
+namespace selfalign::parameter_view_test {
+
+// The field's samples in the config are the rows of a field_file: the two give the same map
+// (the file through FrictionField's CSV reader, the second path).
+TEST(ParameterView, TheFieldsSamplesInTheConfigAreTheRowsOfAFieldFile) {
+  ::selfalign::testing::TempDir dir;
+  const std::string file = (dir.path() / "f.csv").string();
+  ::selfalign::testing::write_text(file, "position,level\n0,1\n0.5,2.5\n0.8,1.5\n");
+  for (const char* interpolation : {"steps", "linear"})
+    for (const char* footprint : {"point", "uniform"}) {
+      const auto in_file = config_of({{"field_file", file.c_str()},
+                                      {"field_interpolation", interpolation},
+                                      {"footprint", footprint}});
+      const auto inline_ = config_of({{"field_positions", "0,0.5,0.8"},
+                                      {"field_levels", "1,2.5,1.5"},
+                                      {"field_interpolation", interpolation},
+                                      {"footprint", footprint}});
+      const auto a = build_friction_map(in_file), b = build_friction_map(inline_);
+      for (double x = -0.2; x < 1.2; x += 0.01) EXPECT_EQ(a->bound(x), b->bound(x)) << x;
+    }
+}
+
+TEST(ParameterView, TheFieldsLevelsAreParameters) {
+  // Point footprint, steps: m(x) = 1 before 0.5, 2.5 from 0.5 on (the rows' levels).
+  const auto c = config_of({{"field_positions", "0,0.5"}, {"field_levels", "1,2.5"},
+                            {"footprint", "point"}});
+  const auto n = names(c);
+  EXPECT_EQ(std::count(n.begin(), n.end(), "field_levels[1]"), 1);
+  EXPECT_EQ(std::count(n.begin(), n.end(), "width"), 0);  // a point footprint has none
+  const auto raised = build_friction_map(with(c, {{"field_levels[1]", 3.0},
+                                                 {"field_positions[1]", 0.6}}));
+  EXPECT_EQ(raised->bound(0.55), 1.0);
+  EXPECT_EQ(raised->bound(0.6), 3.0);
+  // SI: positions in metres, converted with L (length_scale).
+  const auto si = config_of({{"units", "si"}, {"length_scale", "0.002"},
+                             {"field_positions", "0,0.001"}, {"field_levels", "1,2"},
+                             {"footprint", "point"}});
+  const auto map = build_friction_map(si);
+  EXPECT_EQ(map->bound(0.49), 1.0);  // 0.98 mm
+  EXPECT_EQ(map->bound(0.5), 2.0);   // 1 mm = 0.5 L
+}
+
+TEST(ParameterView, RefusesAnInlineFieldThatIsNotOne) {
+  expect_invalid([] { build_friction_map(config_of({{"field_positions", "0,0.5,0.4"},
+                                                    {"field_levels", "1,2,3"}})); },
+                 "field_positions[2]");
+  expect_invalid([] { build_friction_map(config_of({{"field_positions", "0,0.5"},
+                                                    {"field_levels", "1"}})); },
+                 "field_levels");
+  expect_invalid([] { build_friction_map(config_of({{"field_levels", "1,2"}})); },
+                 "field_positions");
+  expect_invalid([] { build_friction_map(config_of({{"field_positions", "0,0.5"},
+                                                    {"field_levels", "1,-2"}})); },
+                 "field_levels[1]");
+  expect_invalid([] { build_friction_map(config_of({{"field_positions", "0,0.5"},
+                                                    {"field_levels", "0,0"}})); },
+                 "field_levels");
+  expect_invalid([] { resolve_simulate_config(config_of({{"friction", "two-region"},
+                                                         {"field_positions", "0"},
+                                                         {"field_levels", "1"}})); },
+                 "field_positions");
+  expect_invalid([] { resolve_simulate_config(config_of({{"field_file", "f.csv"},
+                                                         {"field_positions", "0"},
+                                                         {"field_levels", "1"}})); },
+                 "field_positions");
+}
+
+}  // namespace selfalign::parameter_view_test

@@ -83,7 +83,8 @@ void add_parameters_command(CLI::App& app) {
       *sub, without_groups({{"out", "write the JSON report to this file instead of printing "
                                     "(nothing printed)"},
                             {"summary", ""},
-                            {"method", ""}},
+                            {"method", ""},
+                            {"mass", ""}},
                            {"solver"}));
   auto f = std::make_shared<ParametersFlags>();
   sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table)")

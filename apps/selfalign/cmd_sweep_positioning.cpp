@@ -141,7 +141,8 @@ void add_sweep_positioning_command(CLI::App& sweep) {
       "dx_d,accumulating_entries,max_periods_p99,max_periods_p999,status; rows a2-major.");
   auto f = std::make_shared<PositioningFlags>();
   f->common = add_sweep_flags(*sub, {"a2", "a3"},
-                               {"width", "c_mu", "friction", "field_file", "field_interpolation",
+                               {"width", "c_mu", "friction", "field_file", "field_positions",
+                                "field_levels", "field_interpolation",
                                 "footprint"});
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
   sub->add_option("--entries", f->entries,

@@ -45,3 +45,11 @@ def test_what_is_not_a_parameter_is_refused_by_name(values, name):
     with pytest.raises(sa.InvalidParameter) as e:
         sa.with_parameters({"friction": "uniform"}, values)
     assert e.value.name == name
+
+
+def test_a_fields_samples_in_the_config_are_parameters():
+    config = {"field_positions": [0.0, 0.5], "field_levels": [1.0, 2.5], "footprint": "point"}
+    names = by_name(config)
+    assert names["field_levels[1]"].value == 2.5 and "c_mu" not in names
+    changed = sa.with_parameters(config, {"field_levels[1]": 3.0})
+    assert changed["friction"] == "field" and changed["field_levels"] == [1.0, 3.0]

@@ -64,6 +64,12 @@ const ConfigKey kKeys[] = {
     {"field_file", &C::field_file, D::none, "", "", "friction",
      "CSV of 'position,level' rows (field): the table's mu/mu_1 over table position, positions "
      "[-] or, in SI, [m], strictly increasing; levels finite, >= 0 (docs/friction-field.md)"},
+    {"field_positions", &C::field_positions, D::length, "[-]", "[m]", "friction",
+     "the field's sample positions in the config instead of field_file (field): strictly "
+     "increasing, comma-separated; with field_levels they are the rows of a field_file (their "
+     "levels are parameters of the model: selfalign parameters)"},
+    {"field_levels", &C::field_levels, D::none, "[-]", "[-]", "friction",
+     "mu/mu_1 at each of field_positions (field): finite, >= 0, > 0 somewhere, comma-separated"},
     {"field_interpolation", &C::field_interpolation, D::none, "", "", "friction",
      "how the field's samples fill the table (field): steps (each level holds to the next "
      "position) or linear (ramps)"},

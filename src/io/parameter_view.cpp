@@ -10,9 +10,7 @@
 #include "selfalign/overloaded.hpp"
 
 namespace selfalign {
-namespace {
-
-using C = SimulateConfig;
+namespace parameter_view_detail {  // named: ParameterView::Handles holds these
 
 // A factor on the table's motion, y(t) -> a y(t / p).
 enum class Factor { amplitude, time };
@@ -23,6 +21,15 @@ struct Element {
   std::size_t index;
 };
 using Handle = std::variant<NumberField, Element, Factor>;
+
+}  // namespace parameter_view_detail
+
+namespace {
+
+using C = SimulateConfig;
+using parameter_view_detail::Element;
+using parameter_view_detail::Factor;
+using parameter_view_detail::Handle;
 
 struct Entry {
   std::string name;
@@ -40,8 +47,13 @@ void add_key(std::vector<Entry>& out, std::string_view name) {
 void add_elements(std::vector<Entry>& out, const C& c, std::string_view name) {
   const ConfigKey& k = key_of(name);
   const NumberListField f = std::get<NumberListField>(k.field);
-  for (std::size_t i = 0; i < (c.*f)->size(); ++i)
-    out.push_back({std::string(name) + "[" + std::to_string(i) + "]", Element{f, i}, &k});
+  for (std::size_t i = 0; i < (c.*f)->size(); ++i) {
+    std::string element(name);  // by appends: GCC 12 warns (-Wrestrict) on a + "[" + ... chain
+    element += '[';
+    element += std::to_string(i);
+    element += ']';
+    out.push_back({std::move(element), Element{f, i}, &k});
+  }
 }
 
 // The parameters of a resolved config, in view order.
@@ -56,6 +68,10 @@ std::vector<Entry> entries(const C& c) {
   if (friction == "two-region") {
     for (const char* k : {"x_mu", "width", "c_mu"}) add_key(out, k);
   } else if (friction == "field") {
+    if (c.field_positions && c.field_levels) {
+      add_elements(out, c, "field_positions");
+      add_elements(out, c, "field_levels");
+    }
     if (*c.footprint == "uniform") add_key(out, "width");
   } else if (friction != "uniform") {
     throw InvalidParameter("friction", friction, "must be one of: two-region, uniform, field");
@@ -167,6 +183,10 @@ InvalidParameter not_a_parameter(const C& c, const std::string& name,
                             "is not a parameter of this model (profile = " + *c.profile +
                                 ", friction = " + *c.friction + ", units = " + *c.units + ")");
   }
+  if (name == "amplitude_scale" || name == "time_scale")
+    return InvalidParameter(name, "not in this model",
+                            "is not a parameter of this model (profile = " + *c.profile +
+                                ": its motion is in its file)");
   std::vector<std::string> names;
   for (const Entry& e : view) names.push_back(e.name);
   const std::string best = closest_name(name, names);

@@ -201,11 +201,20 @@ SimulateConfig resolve_simulate_config(const SimulateConfig& in) {
   // named it would be ignored, so it is refused (issue 21: `stop --field-file` ran on the
   // default two-region table without a word).
   SimulateConfig config = in;
-  if (config.field_file && !config.friction) config.friction = "field";
+  const bool inline_field = config.field_positions || config.field_levels;
+  if ((config.field_file || inline_field) && !config.friction) config.friction = "field";
   if (config.friction && *config.friction != "field" && config.field_file)
     throw InvalidParameter("field_file", *config.field_file,
                            "belongs to friction = field, but friction = " + *config.friction +
                                ": give friction = field or drop field_file");
+  if (config.friction && *config.friction != "field" && inline_field)
+    throw InvalidParameter(config.field_positions ? "field_positions" : "field_levels", "given",
+                           "belongs to friction = field, but friction = " + *config.friction +
+                               ": give friction = field or drop the field's samples");
+  if (config.field_file && inline_field)
+    throw InvalidParameter("field_positions", "given with field_file",
+                           "give the field's samples in field_file or in field_positions and "
+                           "field_levels, not both");
   static const SimulateConfig defaults = simulate_config_defaults();
   if (sets_every_default(config, defaults)) {  // resolved already (a parameter view's config)
     if (parse_unit_system(*config.units) == UnitSystem::si)

@@ -68,11 +68,47 @@ std::unique_ptr<TableProfile> make_profile(const SimulateConfig& c, UnitSystem u
                          "fourier, samples");
 }
 
-// The table's field from field_file, positions converted to [-] in SI runs (m -> x/L).
+// The field of field_positions and field_levels (already in [-]): the rows of a field_file.
+FrictionField inline_field(const SimulateConfig& c, FieldInterpolation interpolation) {
+  if (!c.field_positions || !c.field_levels)
+    throw InvalidParameter(c.field_positions ? "field_levels" : "field_positions", "none",
+                           "must be given with " +
+                               std::string(c.field_positions ? "field_positions" : "field_levels") +
+                               ", one level per position");
+  const std::vector<double>& x = *c.field_positions;
+  const std::vector<double>& level = *c.field_levels;
+  if (x.empty() || x.size() != level.size())
+    throw InvalidParameter("field_levels", std::to_string(level.size()) + " values",
+                           "must give one level per position (" + std::to_string(x.size()) +
+                               " field_positions), at least one");
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    std::string at = "[";  // built by appends: GCC 12 warns (-Wrestrict) on "[" + ... + "]"
+    at += std::to_string(i);
+    at += ']';
+    if (i > 0 && !(x[i] > x[i - 1]))
+      throw InvalidParameter("field_positions" + at, x[i],
+                             "must be > field_positions[" + std::to_string(i - 1) +
+                                 "] = " + format_number(x[i - 1]) + " (strictly increasing)");
+    if (!(level[i] >= 0)) throw InvalidParameter("field_levels" + at, level[i], "must be >= 0");
+  }
+  if (interpolation == FieldInterpolation::linear) return FrictionField::ramps(x, level);
+  return FrictionField::steps(std::vector<double>(x.begin() + 1, x.end()), level);
+}
+
+// The table's field from field_file, positions converted to [-] in SI runs (m -> x/L), or from
+// field_positions and field_levels (converted with the config).
 FrictionField load_field(const SimulateConfig& c, UnitSystem units, const Scales& scales) {
+  if (!c.field_file && (c.field_positions || c.field_levels)) {
+    constexpr UserName kNames[] = {{"interpolation", "field_interpolation"},
+                                   {"friction field levels", "field_levels"}};
+    return with_user_names(kNames, [&] {
+      return inline_field(c, parse_field_interpolation(*c.field_interpolation));
+    });
+  }
   if (!c.field_file)
     throw InvalidParameter("field_file", "none",
-                           "must name a CSV file of 'position,level' rows when friction = field");
+                           "must name a CSV file of 'position,level' rows (or give "
+                           "field_positions and field_levels) when friction = field");
   // The field's own parameter "interpolation" is the key field_interpolation here (the
   // samples profile's key is interpolation).
   constexpr UserName kFieldNames[] = {{"interpolation", "field_interpolation"}};

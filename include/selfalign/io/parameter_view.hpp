@@ -19,8 +19,9 @@
 ///             stribeck_exponent, viscous (0: none)
 ///   scales    g (SI runs only: it converts the table's accelerations; the unit length_scale
 ///             and the reported mass are not parameters)
-///   friction  two-region: x_mu, width, c_mu; field with a uniform footprint: width (the
-///             field's nodes are in field_file and not in the view); uniform: none
+///   friction  two-region: x_mu, width, c_mu; field: field_positions[i] and field_levels[i]
+///             when the samples are in the config (not in field_file), width with a uniform
+///             footprint; uniform: none
 ///   profile   three-phase: period, stroke, a2, a3 (jerk when given); fourier: period,
 ///             fourier_cos[i], fourier_sin[i]; quadratic-sequence: durations[i],
 ///             accelerations[i]; piecewise-linear: times[i], accelerations[i], period;

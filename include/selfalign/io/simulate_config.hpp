@@ -43,6 +43,10 @@ struct SimulateConfig {
   // ---- friction map ----
   std::optional<std::string> friction;  ///< "two-region" | "uniform" | "field"
   std::optional<std::string> field_file;           ///< CSV of (position, level) (field)
+  /// The field's samples in the config instead of field_file (field): positions [-] | [m],
+  /// strictly increasing, and the level mu/mu_1 at each [-]: the rows of a field_file.
+  std::optional<std::vector<double>> field_positions;
+  std::optional<std::vector<double>> field_levels;
   std::optional<std::string> field_interpolation;  ///< "steps" | "linear" (field)
   std::optional<std::string> footprint;            ///< "uniform" (width w) | "point" (field)
   std::optional<double> x_mu;   ///< start of the high-friction region [-] | [m]

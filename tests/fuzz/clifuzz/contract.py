@@ -100,6 +100,8 @@ NULLABLE = {
               | {"monte_carlo.process_time_at_quantile_s", "robust.verification.process_time_at_quantile_s"},
     # docs/cli.md "montecarlo": the same quantiles; the worst case's error, end and T_p null
     # when a run in the box does not stop; jerk null without a limit.
+    # docs/cli.md "parameters": a value is null when absent (no Stribeck decay).
+    "parameters": {"parameters.value"},
     "montecarlo": {"process.jerk_m_per_s3", "worst_case.worst_error_m",
                    "worst_case.worst_end_position_m", "worst_case.slowest_process_time_s"}
                   | {f"monte_carlo.process_time_quantiles_s.{q}" for q in ("0.5", "0.9", "0.99")}
@@ -122,7 +124,9 @@ SANITIZER_MARKERS = ["ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "runtime
                      "UndefinedBehaviorSanitizer", "AddressSanitizer:", "ThreadSanitizer"]
 
 ALL_FLAGS = sorted({f for fl in FLAGS.values() for f in fl} | {"help", "version"})
-PARAM_NAMES = set(ALL_FLAGS) | {f.replace("-", "_") for f in ALL_FLAGS} | set(CONFIG_KEYS)
+# docs/parameters.md: the parameter view's own names (the factors on the table's motion).
+PARAM_NAMES = (set(ALL_FLAGS) | {f.replace("-", "_") for f in ALL_FLAGS} | set(CONFIG_KEYS)
+               | {"amplitude_scale", "time_scale"})
 GENERIC_NAMES = ["fraction p", "config file", "config key", "output file", "output", "samples", "summary",
                  "subcommand", "argument", "design infeasible", "profile", "file", "input"]
 PREFIX = "selfalign: error: "

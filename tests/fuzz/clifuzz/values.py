@@ -144,6 +144,7 @@ BASE = {
     "montecarlo": [["--period-s", "0.05"], ["--stroke-m", "0.0005"], ["--a2", "5"], ["--a3", "4"],
                    ["--x-mu", "0.05"], ["--distance", "0.055"], ["--tolerance", "0.001"],
                    ["--uncertain", "mu=normal:0.3,3%"], ["--runs", "50"]],
+    "parameters": [["--set", "c_mu=3"], ["--set", "time_scale=1.1"], ["--json"]],
 }
 
 VALID_SAMPLES_CONSTANT = "t,ydd\n0,1\n0.5,-1\n1,0\n"

@@ -8,7 +8,7 @@ import subprocess
 CONFIG_KEYS = [  # docs/config.md, "Keys"
     "units", "method", "profile", "period", "stroke", "a2", "a3", "jerk", "durations",
     "accelerations", "times", "fourier_cos", "fourier_sin", "samples", "interpolation", "friction",
-    "field_file", "field_interpolation", "footprint", "x_mu", "width", "c_mu", "mu_static",
+    "field_file", "field_positions", "field_levels", "field_interpolation", "footprint", "x_mu", "width", "c_mu", "mu_static",
     "mu_backward", "stribeck_velocity", "stribeck_exponent", "viscous", "mu", "g", "length_scale",
     "mass", "t0", "x0", "v0", "periods", "step", "theta", "output_step", "relative_tolerance",
     "absolute_tolerance", "out", "summary"]
@@ -19,7 +19,7 @@ LAW = ["mu-static", "mu-backward", "stribeck-velocity", "stribeck-exponent", "vi
        "relative-tolerance", "absolute-tolerance"]
 _PROFILE = ["config", "units", "profile", "period", "stroke", "a2", "a3", "jerk", "durations",
             "accelerations", "times", "fourier-cos", "fourier-sin", "samples", "interpolation"]
-_FIELD = ["field-file", "field-interpolation", "footprint"]
+_FIELD = ["field-file", "field-positions", "field-levels", "field-interpolation", "footprint"]
 _SCALES = ["mu", "g", "length-scale", "mass"]
 _MODEL = (_PROFILE + ["method", "friction"] + _FIELD + ["x-mu", "width", "c-mu"] + LAW + _SCALES
           + ["t0", "x0", "v0", "periods", "step", "theta", "output-step"])
@@ -63,6 +63,9 @@ FLAGS = {  # as `selfalign SUBCOMMAND --help` lists them (fuzz_cli.py checks it 
                               "seed", "first-run", "max-periods", "threads", "time-quantile",
                               "bins", "worst-case", "sigmas", "interior-points", "json", "quiet",
                               "out", "runs-csv"],
+    # the model's parameter view: its model keys (no solver or output key), --set, --json
+    "parameters": _PROFILE + ["friction"] + _FIELD + ["x-mu", "width", "c-mu"]
+    + LAW[:5] + ["mu", "g", "length-scale", "t0", "x0", "v0", "out", "json", "set"],
 }
 SUBCOMMANDS = list(FLAGS)
 CONFIG_SUBS = [s for s in SUBCOMMANDS if "config" in FLAGS[s]]
@@ -84,10 +87,11 @@ for _f in ["samples-per-period", "max-periods", "entries", "n", "threads", "orde
            "screening-runs", "verification-runs", "finalists", "monte-carlo", "runs", "first-run",
            "bins", "interior-points"]:
     KIND[_f] = "int"
-for _f in ["durations", "accelerations", "times", "fourier-cos", "fourier-sin", "fractions"]:
+for _f in ["durations", "accelerations", "times", "fourier-cos", "fourier-sin", "fractions",
+           "field-positions", "field-levels"]:
     KIND[_f] = "list"
 for _f in ["units", "method", "profile", "interpolation", "friction", "family", "uncertain",
-           "field-interpolation", "footprint"]:
+           "field-interpolation", "footprint", "set"]:
     KIND[_f] = "text"
 for _f in ["config", "samples", "uncertainty-file", "design", "field-file"]:
     KIND[_f] = "file"
