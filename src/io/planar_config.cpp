@@ -10,7 +10,7 @@
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/io/document.hpp"
-#include "selfalign/io/simulate_config.hpp"  // Dimension, to_dimensionless
+#include "selfalign/io/unit_system.hpp"
 #include "selfalign/io/spelling.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -84,46 +84,37 @@ class Section {
 // array of [x, y, angle] arrays: 4 levels.
 const DocumentKind kPlanarDocument{"config", "--config", 4};
 
-struct Units {
-  bool si;
-  const Scales& s;
-  double length(double v) const { return si ? s.length_from_si(v) : v; }
-  double time(double v) const { return si ? s.time_from_si(v) : v; }
-  double velocity(double v) const { return si ? s.velocity_from_si(v) : v; }
-  double acceleration(double v) const { return si ? s.acceleration_from_si(v) : v; }
-  double rate(double v) const { return si ? to_dimensionless(Dimension::rate, v, s) : v; }
-  double jerk(double v) const { return si ? to_dimensionless(Dimension::jerk, v, s) : v; }
-};
+using D = Dimension;
 
-std::unique_ptr<TableProfile> make_profile(const Section& p, const Units& u, bool angular) {
+std::unique_ptr<TableProfile> make_profile(const Section& p, const InputUnits& u, bool angular) {
   const std::string kind = p.text("profile", "three-phase");
   if (kind == "three-phase") {
     if (angular)
       throw InvalidParameter(p.key("profile"), kind, "a rotation needs profile = \"fourier\"");
-    const double period = u.time(p.required("period")), stroke = u.length(p.required("stroke"));
-    const double a2 = u.acceleration(p.required("a2")), a3 = u.acceleration(p.required("a3"));
+    const double period = u(D::time, p.required("period")), stroke = u(D::length, p.required("stroke"));
+    const double a2 = u(D::acceleration, p.required("a2")), a3 = u(D::acceleration, p.required("a3"));
     return make_three_phase_profile({period, stroke, a2, a3},
-                                    p.has("jerk") ? u.jerk(p.required("jerk")) : kInf);
+                                    p.has("jerk") ? u(D::jerk, p.required("jerk")) : kInf);
   }
   if (kind == "fourier") {
     std::vector<double> c = p.list("cos"), s = p.list("sin");
     for (auto* v : {&c, &s})
-      for (double& x : *v) x = angular ? x : u.length(x);  // rad stay rad
-    return std::make_unique<FourierProfile>(u.time(p.required("period")), c, s);
+      for (double& x : *v) x = angular ? x : u(D::length, x);  // rad stay rad
+    return std::make_unique<FourierProfile>(u(D::time, p.required("period")), c, s);
   }
   throw InvalidParameter(p.key("profile"), kind, "must be \"three-phase\" or \"fourier\"");
 }
 
-void xy(const Section& s, const std::string& k, const Units& u, double& x, double& y) {
+void xy(const Section& s, const std::string& k, const InputUnits& u, double& x, double& y) {
   const std::vector<double> v = s.list(k, {0.0, 0.0});
   if (v.size() != 2) throw InvalidParameter(s.key(k), std::to_string(v.size()) + " values", "must be [x, y]");
-  x = u.length(v[0]), y = u.length(v[1]);
+  x = u(D::length, v[0]), y = u(D::length, v[1]);
 }
 
-PlanarField make_field(const Section& f, const Units& u) {
+PlanarField make_field(const Section& f, const InputUnits& u) {
   const std::string type = f.text("type", "uniform");
   const double c_mu = f.number("c_mu", 2.5);
-  const double width = u.length(f.number("width", u.si ? 0.1 * u.s.length() : 0.1));
+  const double width = u(D::length, f.number("width", u.si() ? 0.1 * u.scales().length() : 0.1));
   if (type == "uniform") return UniformPlanarField{f.number("level", 1.0)};
   if (type == "half-plane") {
     HalfPlaneStepField h{0, 0, f.number("angle", 0), width, c_mu};
@@ -131,18 +122,18 @@ PlanarField make_field(const Section& f, const Units& u) {
     return h;
   }
   if (type == "strip") {
-    StripField h{0, 0, f.number("angle", 0), u.length(f.required("half_width")), width, c_mu};
+    StripField h{0, 0, f.number("angle", 0), u(D::length, f.required("half_width")), width, c_mu};
     xy(f, "origin", u, h.origin_x, h.origin_y);
     return h;
   }
   if (type == "rectangle") {
-    RectangularPocketField h{0, 0, f.number("angle", 0), u.length(f.required("half_length")),
-                             u.length(f.required("half_width")), width, c_mu};
+    RectangularPocketField h{0, 0, f.number("angle", 0), u(D::length, f.required("half_length")),
+                             u(D::length, f.required("half_width")), width, c_mu};
     xy(f, "centre", u, h.centre_x, h.centre_y);
     return h;
   }
   if (type == "circle") {
-    CircularPocketField h{0, 0, u.length(f.required("radius")), width, c_mu};
+    CircularPocketField h{0, 0, u(D::length, f.required("radius")), width, c_mu};
     xy(f, "centre", u, h.centre_x, h.centre_y);
     return h;
   }
@@ -150,7 +141,7 @@ PlanarField make_field(const Section& f, const Units& u) {
     GridField g;
     xy(f, "origin", u, g.origin_x, g.origin_y);
     g.angle = f.number("angle", 0);
-    g.dx = u.length(f.required("dx")), g.dy = u.length(f.required("dy"));
+    g.dx = u(D::length, f.required("dx")), g.dy = u(D::length, f.required("dy"));
     g.nx = f.integer("nx", 2, 2, 100000), g.ny = f.integer("ny", 2, 2, 100000);
     g.levels = f.list("levels");
     return g;
@@ -159,19 +150,19 @@ PlanarField make_field(const Section& f, const Units& u) {
                          "must be uniform, half-plane, strip, rectangle, circle or grid");
 }
 
-ContactPatch make_patch(const Section& p, const Units& u) {
+ContactPatch make_patch(const Section& p, const InputUnits& u) {
   const std::string shape = p.text("shape", "point");
   const auto lengths = [&](const std::string& k) {
     std::vector<double> v = p.list(k);
-    for (double& x : v) x = u.length(x);
+    for (double& x : v) x = u(D::length, x);
     return v;
   };
   if (shape == "point") return point_patch();
   if (shape == "disc")
-    return disc_patch(u.length(p.required("radius")), p.integer("rings", 4, 1, 10000),
+    return disc_patch(u(D::length, p.required("radius")), p.integer("rings", 4, 1, 10000),
                       p.integer("sectors", 8, 1, 10000));
   if (shape == "rectangle")
-    return rectangle_patch(u.length(p.required("length")), u.length(p.required("width")),
+    return rectangle_patch(u(D::length, p.required("length")), u(D::length, p.required("width")),
                            p.integer("nx", 4, 1, 10000), p.integer("ny", 4, 1, 10000));
   if (shape == "polygon")
     return polygon_patch(lengths("xs"), lengths("ys"), p.integer("subdivisions", 2, 1, 100));
@@ -179,9 +170,9 @@ ContactPatch make_patch(const Section& p, const Units& u) {
   throw InvalidParameter(p.key("shape"), shape, "must be point, disc, rectangle, polygon or points");
 }
 
-PlanarPose pose_from(const std::vector<double>& v, const std::string& key, const Units& u) {
+PlanarPose pose_from(const std::vector<double>& v, const std::string& key, const InputUnits& u) {
   if (v.size() != 3) throw InvalidParameter(key, std::to_string(v.size()) + " values", "must be [x, y, angle]");
-  return {u.length(v[0]), u.length(v[1]), v[2]};
+  return {u(D::length, v[0]), u(D::length, v[1]), v[2]};
 }
 
 // The library's names of what a section builds, as the section's keys (messages name the key
@@ -240,7 +231,7 @@ PlanarSetup load_planar_config(const std::string& path) {
       kScalesNames.names,
       [&] { return Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81)); },
       "scales.");
-  const Units u{st.si, st.scales};
+  const InputUnits u = st.si ? InputUnits(st.scales) : InputUnits();
   const Section table = section("table", {"x", "y", "rotation"});
   const std::set<std::string> profile_keys{"profile", "period", "stroke", "a2", "a3", "jerk", "cos", "sin"};
   PlanarTableMotion& m = st.problem.motion;
@@ -295,7 +286,7 @@ PlanarSetup load_planar_config(const std::string& path) {
       "field.");
   const Section run = section("run", {"step", "theta", "periods", "pose", "twist", "every",
                                       "transient", "window", "steady_periods", "tolerance"});
-  st.problem.options.step = u.time(run.required("step"));
+  st.problem.options.step = u(D::time, run.required("step"));
   st.problem.options.theta = run.number("theta", 0.5);
   st.periods = run.integer("periods", 10, 1, 1000000);
   st.transient = run.integer("transient", 0, 0, 100000);
@@ -312,11 +303,11 @@ PlanarSetup load_planar_config(const std::string& path) {
   st.pose = pose_from(run.list("pose", {0, 0, 0}), "run.pose", u);
   const std::vector<double> tw = run.list("twist", {0, 0, 0});
   if (tw.size() != 3) throw InvalidParameter("run.twist", std::to_string(tw.size()) + " values", "must be [ux, uy, omega]");
-  st.twist = {u.velocity(tw[0]), u.velocity(tw[1]), u.rate(tw[2])};
+  st.twist = {u(D::velocity, tw[0]), u(D::velocity, tw[1]), u(D::rate, tw[2])};
   const Section fm = section("field_map", {"x", "y", "angles", "periods"});
   st.grid_x = fm.list("x", {0.0}), st.grid_y = fm.list("y", {0.0});
-  for (double& v : st.grid_x) v = u.length(v);
-  for (double& v : st.grid_y) v = u.length(v);
+  for (double& v : st.grid_x) v = u(D::length, v);
+  for (double& v : st.grid_y) v = u(D::length, v);
   st.grid_angles = fm.list("angles", {0.0});
   st.field_periods = fm.integer("periods", 1, 1, 100000);
   const Section stop = section("stop", {"entries", "max_periods"});

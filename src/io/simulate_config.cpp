@@ -51,32 +51,6 @@ bool parse_number(std::string_view text, double& out) {
 
 }  // namespace
 
-double to_si(Dimension d, double v, const Scales& s) {
-  switch (d) {
-    case D::length: return s.length_to_si(v);
-    case D::time: return s.time_to_si(v);
-    case D::velocity: return s.velocity_to_si(v);
-    case D::acceleration: return s.acceleration_to_si(v);
-    case D::jerk: return s.jerk_to_si(v);
-    case D::rate: return v / s.time();
-    case D::none: break;
-  }
-  return v;
-}
-
-double to_dimensionless(Dimension d, double v, const Scales& s) {
-  switch (d) {
-    case D::length: return s.length_from_si(v);
-    case D::time: return s.time_from_si(v);
-    case D::velocity: return s.velocity_from_si(v);
-    case D::acceleration: return s.acceleration_from_si(v);
-    case D::jerk: return s.jerk_from_si(v);
-    case D::rate: return v * s.time();
-    case D::none: break;
-  }
-  return v;
-}
-
 SimulateConfig simulate_config_defaults() {
   SimulateConfig d;
   d.units = "dimensionless";

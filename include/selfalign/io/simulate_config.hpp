@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "selfalign/io/unit_system.hpp"  // Dimension, to_si, to_dimensionless
 #include "selfalign/units.hpp"
 
 namespace selfalign {
@@ -81,16 +82,6 @@ struct SimulateConfig {
   friend bool operator==(const SimulateConfig&, const SimulateConfig&) = default;
 };
 
-/// How a key's value converts between SI and dimensionless units (Sect. 3.2).
-enum class Dimension {
-  none,         ///< same value in both systems ([-], or always SI like g [m/s^2])
-  length,       ///< [m] = L [-]
-  time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
-  velocity,     ///< [m/s] = L/T [-]
-  acceleration, ///< [m/s^2] = mu g [-]
-  jerk,         ///< [m/s^3] = mu g / T [-]
-  rate          ///< [1/s] = 1/T [-] (a viscous coefficient per unit mass)
-};
 
 using TextField = std::optional<std::string> SimulateConfig::*;
 using NumberField = std::optional<double> SimulateConfig::*;
@@ -142,10 +133,6 @@ void set_simulate_config_value(SimulateConfig& config, std::string_view key,
 /// `base` with every key set in `overrides` replaced (file values, then flags).
 SimulateConfig merge(const SimulateConfig& base, const SimulateConfig& overrides);
 
-/// One value of dimension `d` converted from dimensionless to SI, and from SI to dimensionless
-/// (Sect. 3.2); values of Dimension::none are returned unchanged.
-double to_si(Dimension d, double value, const Scales& scales);
-double to_dimensionless(Dimension d, double value, const Scales& scales);
 
 /// Converts every dimensional key (Dimension != none; numbers and arrays) from dimensionless
 /// to SI with `scales`. Other keys are copied. The samples file is not touched.

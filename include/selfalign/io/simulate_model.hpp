@@ -76,7 +76,7 @@ struct ProfileModel {
   }
   /// A value of dimension `d` given in the run's unit system, in dimensionless units [-].
   double to_model_units(Dimension d, double value) const {
-    return units == UnitSystem::si ? to_dimensionless(d, value, scales) : value;
+    return InputUnits(units, scales)(d, value);
   }
   /// A dimensionless value of dimension `d` in the run's unit system.
   double from_model_units(Dimension d, double value) const {

@@ -22,6 +22,45 @@ enum class UnitSystem {
 UnitSystem parse_unit_system(const std::string& text);
 std::string to_string(UnitSystem units);
 
+/// How a key's value converts between SI and dimensionless units (Sect. 3.2).
+enum class Dimension {
+  none,         ///< same value in both systems ([-], or always SI like g [m/s^2])
+  length,       ///< [m] = L [-]
+  time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
+  velocity,     ///< [m/s] = L/T [-]
+  acceleration, ///< [m/s^2] = mu g [-]
+  jerk,         ///< [m/s^3] = mu g / T [-]
+  rate          ///< [1/s] = 1/T [-] (a viscous coefficient per unit mass)
+};
+
+/// One value of dimension `d` converted from dimensionless to SI, and from SI to dimensionless
+/// (Sect. 3.2); values of Dimension::none are returned unchanged.
+double to_si(Dimension d, double value, const Scales& scales);
+double to_dimensionless(Dimension d, double value, const Scales& scales);
+
+/// Converts a run's inputs to dimensionless model values [-]: the one input adapter of the 1-D
+/// and planar configs (the identity for dimensionless runs).
+class InputUnits {
+ public:
+  /// Dimensionless input: every conversion is the identity.
+  InputUnits() = default;
+  /// SI input with the run's scales.
+  explicit InputUnits(const Scales& scales) : scales_(scales) {}
+  InputUnits(UnitSystem units, const Scales& scales)
+      : scales_(units == UnitSystem::si ? std::optional<Scales>(scales) : std::nullopt) {}
+
+  bool si() const noexcept { return scales_.has_value(); }
+  /// The SI scales (si() only).
+  const Scales& scales() const { return scales_.value(); }
+  /// `value` of dimension `d` in model units [-].
+  double operator()(Dimension d, double value) const noexcept {
+    return scales_ ? to_dimensionless(d, value, *scales_) : value;
+  }
+
+ private:
+  std::optional<Scales> scales_;
+};
+
 /// Converts dimensionless results [-] to the run's unit system.
 class OutputUnits {
  public:
