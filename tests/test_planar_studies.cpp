@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "planar_profiles.hpp"
+#include "selfalign/core/step.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
+#include "selfalign/planar/planar_run.hpp"
 
 namespace selfalign {
 namespace {
@@ -107,4 +109,28 @@ TEST(PlanarStudies, AProgressCallbackThatThrowsStopsTheStudy) {
 }
 
 }  // namespace
+}  // namespace selfalign
+
+namespace selfalign {
+
+// The core's checks stage sees the table's motion too (issue 21: the analyses checked it a
+// second time): a NaN table stops the run at its first step, and the run driver ends there.
+TEST(PlanarStudies, ANonFiniteTableEndsTheRunAtItsFirstStep) {
+  PlanarProblem p;
+  const NotANumber nan_motion;
+  p.motion.first = &nan_motion;
+  p.options.step = 1.0 / 100;
+  const PlanarTrajectory run = simulate_planar(p, {}, {}, 500, 1, {});
+  EXPECT_EQ(run.end.status, core::StepStatus::non_finite);
+  EXPECT_EQ(run.end.step_index, 1);
+  EXPECT_EQ(run.t.size(), 2u);  // the start and the failing step
+  // The core names the table (failed_body -1).
+  const core::Model model{p.motion, p.field, {core::Body{p.part, p.law}}, p.options};
+  const PlanarPose pose{};
+  const PlanarTwist twist{};
+  core::State s = core::make_state(model, 0, {&pose, 1}, {&twist, 1});
+  EXPECT_EQ(core::step(model, s, 10), 1);
+  EXPECT_EQ(s.failed_body, -1);
+}
+
 }  // namespace selfalign

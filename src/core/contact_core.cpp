@@ -69,8 +69,13 @@ long long step(const Model& model, State& s, long long steps, StepObserver* obse
     for (std::size_t i = 0; i < n; ++i)
       detail::rigid_body_step(model.field, model.bodies[i].law, model.bodies[i].part, h, th,
                               s.table, tb1, s.bodies[i], s.contacts[i]);
-    // checks
-    for (std::size_t i = 0; i < n; ++i) {
+    // checks: the table's motion (a profile that returns NaN), then each body
+    if (!(std::isfinite(tb1.x) && std::isfinite(tb1.y) && std::isfinite(tb1.angle) &&
+          std::isfinite(tb1.vx) && std::isfinite(tb1.vy) && std::isfinite(tb1.rate))) {
+      s.status = StepStatus::non_finite;
+      s.failed_body = -1;
+    }
+    for (std::size_t i = 0; i < n && s.status == StepStatus::ok; ++i) {
       const BodyState& b = s.bodies[i];
       if (!(std::isfinite(b.pose.x) && std::isfinite(b.pose.y) && std::isfinite(b.pose.angle) &&
             std::isfinite(b.twist.ux) && std::isfinite(b.twist.uy) &&

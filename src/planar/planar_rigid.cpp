@@ -60,7 +60,9 @@ void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& fi
   s.bodies.push_back({st.pose, st.twist, st.mode, st.pivot, st.sweeps, st.newton_steps,
                       std::move(st.solver)});
   s.contacts.assign(1, std::vector<PatchContact>(part.patch.size()));
+  s.status = st.status;
   core::step(model, s, steps, observer);
+  st.status = s.status;
   core::BodyState& b = s.bodies[0];
   st.t = s.t, st.step_index = s.step_index, st.table = s.table;
   st.pose = b.pose, st.twist = b.twist, st.mode = b.mode, st.pivot = b.pivot;

@@ -93,6 +93,7 @@ PlanarTrajectory simulate_planar(const PlanarProblem& p, const PlanarPose& pose,
     advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s, n, &rec);
     done += n;
     if (progress) progress(done, steps);
+    if (s.status != core::StepStatus::ok) break;  // the core stopped at the failing step
   }
   if (rec.last != s.step_index) rec.record(s);
   out.end = s;

@@ -15,8 +15,8 @@
 
 namespace selfalign::core {
 
-/// How the last step ended: ok, or a body's state left the finite numbers (the run stops
-/// there; the body is `failed_body`).
+/// How the last step ended: ok, or the table's motion or a body's state left the finite numbers
+/// (the run stops there; `failed_body` is the body, -1 for the table's motion).
 enum class StepStatus { ok, non_finite };
 
 struct BodyState {
@@ -34,7 +34,7 @@ struct State {
   PlanarTablePose table;         ///< the table at t
   std::vector<BodyState> bodies; ///< one per model body
   StepStatus status = StepStatus::ok;
-  int failed_body = -1;          ///< the body that left the finite numbers (non_finite)
+  int failed_body = -1;          ///< the body that left the finite numbers (non_finite; -1: the table)
   std::vector<std::vector<PatchContact>> contacts;  ///< workspace, one per body (no allocation per step)
 };
 

@@ -49,6 +49,10 @@ struct PlanarRigidState {
   int pivot = -1;                       ///< the pivot contact (mode pivot)
   long long sweeps = 0, newton_steps = 0;  ///< solver work so far
   PatchImpulseSolver solver;            ///< warm start of the impulse solver
+  /// The core's status: non_finite once the table's motion or the part's state left the finite
+  /// numbers; advance_planar_rigid then takes no more steps (the state is that of the failing
+  /// step).
+  core::StepStatus status = core::StepStatus::ok;
 };
 
 /// The state at time t with the given pose on the table and twist relative to it.

@@ -39,7 +39,9 @@ using PlanarRunProgress = std::function<void(long long done, long long total)>;
 
 /// The run. Validates the field, the part, the step and the law; InvalidParameter naming "every"
 /// (< 1, or more than kMaxRecordedSamples samples) or "steps" (more than kMaxTimeSteps).
-/// `progress` is called after every chunk of at most one period and 1e4 steps.
+/// `progress` is called after every chunk of at most one period and 1e4 steps. A run whose
+/// state or table motion leaves the finite numbers ends at that step: the trajectory's last
+/// sample is the failing step and `end.status` is core::StepStatus::non_finite.
 PlanarTrajectory simulate_planar(const PlanarProblem& problem, const PlanarPose& pose,
                                  const PlanarTwist& twist, long long steps, long long every = 1,
                                  const PlanarRunProgress& progress = {});
