@@ -16,18 +16,32 @@
 namespace selfalign::python {
 namespace {
 
+// A number from Python, or InvalidParameter naming `name` (an int beyond double, a str, ...).
+double number_of(const std::string& name, const py::handle& value) {
+  if (!py::isinstance<py::bool_>(value)) {
+    try {
+      return value.cast<double>();
+    } catch (const py::cast_error&) {
+    } catch (const py::error_already_set&) {  // OverflowError of an int beyond double
+    }
+  }
+  std::string text = py::repr(value);
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  throw InvalidParameter(name, text, "must be a finite number with |value| <= 1e50");
+}
+
 // One value of a config dict as the key's command-line text.
 std::string text_of(const std::string& key, const py::handle& value) {
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   if (py::isinstance<py::bool_>(value))
     throw InvalidParameter(key, "a bool", "must be a string, a number or a list of numbers");
   if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))
-    return format_number(value.cast<double>());
+    return format_number(number_of(key, value));
   if (py::isinstance<py::sequence>(value) || py::hasattr(value, "__array__")) {
     std::string s;
     for (const py::handle& v : py::iter(value)) {
       if (!s.empty()) s += ',';
-      s += format_number(v.cast<double>());
+      s += format_number(number_of(key, v));
     }
     return s;
   }
@@ -108,7 +122,10 @@ for a config that does not resolve.)doc");
       "with_parameters",
       [](const py::dict& config, const py::dict& values) {
         ParameterValues v;
-        for (const auto& [k, x] : values) v.emplace_back(py::str(k), x.cast<double>());
+        for (const auto& [k, x] : values) {
+          const std::string name = py::str(k);
+          v.emplace_back(name, number_of(name.empty() ? "values" : name, x));
+        }
         return dict_of(with(config_of(config), v));
       },
       py::arg("config"), py::arg("values"), R"doc(

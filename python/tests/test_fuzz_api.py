@@ -305,11 +305,25 @@ PICKLED = ["P", "Q", "R", "F", "U", "sa.PeriodMap(P)", "sa.StickPositionMap(P, F
            "sa.ThreePhaseFamily(2.3, 1.3)", "sa.PlanarPose(0.1, 0.2, 0.3)",
            "sa.simulate(P, F, options=sa.SimulationOptions(duration=1.0))"]
 CATALOGUE += [
+    # The parameter view (docs/parameters.md): configs as dicts of config keys, values by name.
+    ("result = sa.model_parameters({{'units': {units}, 'mu': {mu}, 'friction': {friction}, "
+     "'a2': {a2}}})",
+     {"units": (["'si'", "'dimensionless'"], ["'imperial'", "None", "1"], []), "mu": FL("0.3"),
+      "friction": (["'two-region'", "'uniform'"], ["'field'", "'x'", "None"], []),
+      "a2": FL("2.3")}, "parameters"),
+    ("result = sa.with_parameters({{'profile': 'quadratic-sequence', 'durations': [0.5, 0.5], "
+     "'accelerations': [1.0, -1.0]}}, {{{name}: {value}}})",
+     {"name": (["'accelerations[1]'", "'time_scale'", "'amplitude_scale'", "'mu_static'"],
+               ["'accelerations[2]'", "'accelerations'", "'step'", "'c_mu'", "None", "1", "''"],
+               []),
+      "value": FL("0.4", "2.0")}, "none"),
     # D33: an object made by cls.__new__ alone, used in every way: a TypeError each time it is read
     ("o = sa.{cls}.__new__(sa.{cls}); result = {use}",
      {"cls": (CLASS_NAMES, [], []),
       "use": (["repr(o)", "o == o", "pickle.dumps(o, protocol=0)", "pickle.dumps(o, protocol=1)",
-               "pickle.dumps(o)", "copy.deepcopy(o)", "o.to_dict()",
+               "pickle.dumps(o)", "copy.deepcopy(o)",
+               # to_dict where the class has one (the abstract bases have none: AttributeError)
+               "o.to_dict() if hasattr(type(o), 'to_dict') else repr(o)",
                "[getattr(o, a) for a in dir(o) if not a.startswith('_')]", "sa.simulate(o, F)",
                "sa.steady_state(o)", "sa.PeriodMap(o)", "sa.stopping_run(P, o)",
                "sa.ProcessUncertainty(mu=o)", "sa.design_process(o)", "sa.monte_carlo(o, o, o)",
@@ -576,6 +590,10 @@ def validate(result, validator, code):
         return None
     if validator.startswith("wrong_type:"):
         return f"accepted Wrong() for {validator.split(':')[1]}"
+    if validator == "parameters":
+        # model_parameters: "NaN when absent (no Stribeck decay)"
+        bad = [p.name for p in result if p.name != "stribeck_velocity" and not math.isfinite(p.value)]
+        return f"non-finite parameters {bad}" if clean and bad else None
     if validator == "round_trip":
         before, after = result
         return None if type(after) is type(before) and after == before else f"unpickled as {after!r}"

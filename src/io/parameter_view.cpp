@@ -229,6 +229,10 @@ ParameterView::ParameterView(const SimulateConfig& config, const std::vector<std
     : config_(resolve_simulate_config(config)), names_(free), handles_(std::make_unique<Handles>()) {
   const std::vector<Entry> view = entries(config_);
   for (const std::string& name : free) {
+    if (name.empty())
+      throw InvalidParameter("parameter", "\"\"",
+                             "must name a parameter of the model (selfalign parameters lists "
+                             "them)");
     const Entry* found = nullptr;
     for (const Entry& e : view)
       if (e.name == name) found = &e;
