@@ -46,9 +46,12 @@ void moreau_loop(const Velocity& velocity, const Bound& bound, const FrictionLaw
     const bool sliding_on = (v > 0 && v_free > 0) || (v < 0 && v_free < 0);
     double v1 = 0;
     if constexpr (!kSpeedDependent) {
-      const double hold = h * ((sliding_on ? (v_free > 0 ? kf : kb) : s) * m);
-      if (v_free > hold) v1 = v_free - h * (kf * m);
-      else if (v_free < -hold) v1 = v_free + h * (kb * m);
+      // The three impulse bounds, products of the level (hoisted out of the loop when the
+      // level is constant: the uniform table) and a selection between them.
+      const double h_static = h * (s * m), h_forward = h * (kf * m), h_backward = h * (kb * m);
+      const double hold = sliding_on ? (v_free > 0 ? h_forward : h_backward) : h_static;
+      if (v_free > hold) v1 = v_free - h_forward;
+      else if (v_free < -hold) v1 = v_free + h_backward;
     } else {  // mu_sigma(|v|) and c v at the step's start (explicit), the stick set-valued
       const int sigma = v_free > 0 ? 1 : -1;
       const double hold = h * ((sliding_on ? law.kinetic(sigma, std::abs(v)) : s) * m);
