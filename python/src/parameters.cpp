@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "arguments.hpp"
 #include "bindings.hpp"
 #include "record.hpp"
 #include "repr.hpp"
@@ -45,7 +46,7 @@ std::string text_of(const std::string& key, const py::handle& value) {
     }
     return s;
   }
-  throw InvalidParameter(key, std::string(py::str(value.get_type().attr("__name__"))),
+  throw InvalidParameter(key, python_type_name(value),
                          "must be a string, a number or a list of numbers");
 }
 

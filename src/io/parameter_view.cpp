@@ -259,10 +259,8 @@ SimulateConfig ParameterView::with(const std::vector<double>& values) const {
   SimulateConfig c = config_;
   for (std::size_t k = 0; k < values.size(); ++k) {
     const Handle& h = handles_->handles[k];
-    if (!std::isfinite(values[k]) || (std::holds_alternative<Factor>(h) && !(values[k] > 0))) {
-      if (std::holds_alternative<Factor>(h)) require_positive(names_[k], values[k]);
-      require_finite(names_[k], values[k]);
-    }
+    if (std::holds_alternative<Factor>(h)) require_positive(names_[k], values[k]);
+    else require_finite(names_[k], values[k]);
     set_value(c, h, values[k]);
   }
   return c;

@@ -133,9 +133,9 @@ void validate(const Process& p) {
 namespace {
 
 // The process as a model config: SI, the three-phase table (jumps or the jerk limit), the
-// two-region table at x_mu, the request's law and gravity, lengths in units of `length` (Sect.
-// 3.2 with L = the drawn width).
-SimulateConfig process_config(const DesignRequest& q, const Process& p, double length) {
+// two-region table at x_mu, the request's law and gravity, lengths in units of the nominal
+// width (a draw's config takes its drawn width as the unit: ProcessFamily::config).
+SimulateConfig process_config(const DesignRequest& q, const Process& p) {
   SimulateConfig c;
   c.units = "si";
   c.profile = "three-phase";
@@ -144,7 +144,7 @@ SimulateConfig process_config(const DesignRequest& q, const Process& p, double l
   c.friction = "two-region";
   c.x_mu = p.x_mu, c.width = q.width, c.c_mu = q.c_mu;
   c.mu = q.mu, c.mu_static = q.mu_static, c.mu_backward = q.mu_backward;
-  c.g = q.gravity, c.length_scale = length;
+  c.g = q.gravity, c.length_scale = q.width;
   return c;
 }
 
@@ -164,7 +164,7 @@ std::vector<double> draw_values(const DesignRequest& q, const Process& p, const 
 }  // namespace
 
 ProcessFamily::ProcessFamily(const DesignRequest& q, const Process& p)
-    : request_(q), process_(p), view_(process_config(q, p, q.width), kDrawnParameters) {}
+    : request_(q), process_(p), view_(process_config(q, p), kDrawnParameters) {}
 
 SimulateConfig ProcessFamily::config(const InputValues& v) const {
   SimulateConfig c = view_.with(draw_values(request_, process_, v));
@@ -191,8 +191,9 @@ namespace {
 std::optional<InvalidParameter> refusal(const DesignRequest& q, const Process& p,
                                         const InputValues& v) {
   try {
+    // Building the model builds the rough region it would stop on too (the two-region table
+    // of the draw's config), so its refusal is caught here as well.
     const ProcessModel m(q, p, v);
-    TwoRegionFriction(m.x_mu, 1.0, m.c_mu);  // the rough region it would stop on
   } catch (const InvalidParameter& e) {
     return e;
   }
