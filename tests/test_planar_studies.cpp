@@ -16,6 +16,7 @@
 #include "selfalign/core/step.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
 #include "selfalign/planar/planar_run.hpp"
+#include "selfalign/planar/planar_steady_state.hpp"
 
 namespace selfalign {
 namespace {
@@ -131,6 +132,29 @@ TEST(PlanarStudies, ANonFiniteTableEndsTheRunAtItsFirstStep) {
   core::State s = core::make_state(model, 0, {&pose, 1}, {&twist, 1});
   EXPECT_EQ(core::step(model, s, 10), 1);
   EXPECT_EQ(s.failed_body, -1);
+}
+
+}  // namespace selfalign
+
+namespace selfalign {
+
+// Found scanning the neighbourhood of the status fix: planar_steady_state with a NaN table
+// motion reported a converged steady state with zero drift after 2 periods (the part never
+// left stick, the NaN stick test being false); it now fails as the studies' cells do.
+TEST(PlanarStudies, ASteadyStateOnANonFiniteTableIsAnError) {
+  PlanarProblem p;
+  const NotANumber nan_motion;
+  p.motion.first = &nan_motion;
+  p.part.patch = rectangle_patch(0.04, 0.02, 3, 2);  // the Moreau path
+  p.options.step = 1.0 / 100;
+  PlanarSteadyStateOptions o;
+  o.max_periods = 50;
+  try {
+    planar_steady_state(p, {}, {}, o);
+    ADD_FAILURE() << "no error: a NaN table motion gave a steady state";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("finite numbers"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace selfalign

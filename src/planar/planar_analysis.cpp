@@ -15,13 +15,9 @@ namespace selfalign {
 namespace {
 
 using detail::CensusSink;
+using detail::compact;
 using detail::LevelSink;
-
-std::string compact(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", v);
-  return text;
-}
+using detail::require_finite;
 
 void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
                  core::StepObserver* sink = nullptr) {
@@ -29,15 +25,6 @@ void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
                        periods * steps_per_period(p), sink);
 }
 
-// A study's cell fails (kept with this message, the others computed) when the core's checks
-// found its state or the table's motion outside the finite numbers: inputs near overflow, or a
-// profile that returns NaN (the step's stick test is false for NaN, so such a run would
-// otherwise report a stop).
-void require_finite(const PlanarRigidState& s) {
-  if (s.status != core::StepStatus::ok)
-    throw std::runtime_error("the state or the table motion left the finite numbers at t = " +
-                             compact(s.t));
-}
 
 SweepOptions cells_options(const ProgressCallback& progress, int threads) {
   SweepOptions o;

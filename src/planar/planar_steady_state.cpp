@@ -80,6 +80,7 @@ PlanarSteadyState planar_steady_state(const PlanarProblem& p, const PlanarPose& 
       detail::CensusSink census;
       levels.census = &census;
       advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, rigid, steps, &levels);
+      detail::require_finite(rigid);
       out.pose = rigid.pose;
       out.twist = rigid.twist;
       out.level_min = levels.lo;

@@ -62,7 +62,9 @@ struct PlanarSteadyState {
 };
 
 /// The steady state from (pose, twist) at t = 0. Throws InvalidParameter on a bad problem or
-/// options (naming "max_periods", "transient_periods" or "tolerance").
+/// options (naming "max_periods", "transient_periods" or "tolerance"), and std::runtime_error
+/// when a Moreau run's state or the table's motion leaves the finite numbers (a table motion
+/// that returns NaN would otherwise be a converged steady state without drift).
 PlanarSteadyState planar_steady_state(const PlanarProblem& problem, const PlanarPose& pose,
                                       const PlanarTwist& twist,
                                       const PlanarSteadyStateOptions& options = {});
