@@ -98,6 +98,9 @@ InvalidParameter renamed(const InvalidParameter& e, std::span<const UserName> na
     const std::string_view base = part.substr(0, part.find('['));
     for (const UserName& n : names)
       if (n.library == base) return std::string(n.user) + std::string(part.substr(base.size()));
+    // A name the front end already gave in its own words ("field.nx") keeps them: the prefix
+    // goes before library names only (it once made "field.field.nx").
+    if (!prefix.empty() && part.starts_with(prefix)) return std::string(part);
     return std::string(prefix) + std::string(part);
   };
   std::string name;

@@ -177,6 +177,36 @@ TEST(CliPlanar, BadInputNamesTheParameterAndLeavesNoFile) {
   }
 }
 
+// --set SECTION.KEY=VALUE (the one config reader's key table, issue 21): the same rows as a
+// file that holds the value; an unknown key or a bad value is one line naming it, exit 2, no
+// file, and the config is never changed.
+TEST(CliPlanar, SetGivesAKeyOnTheCommandLineAsTheFileWould) {
+  CliSandbox box;
+  std::string edited = kBase + kPart;
+  edited.replace(edited.find("periods = 3\n"), 12, "periods = 2\n");
+  edited.replace(edited.find("step = 0.01\n"), 12, "step = 0.02\n");
+  const std::string base = write_config(box, "p.toml", kBase + kPart);
+  const std::string file = write_config(box, "q.toml", edited);
+  ASSERT_EQ(box.run({"planar", "simulate", "--config", file, "--csv", "file.csv", "--quiet"}).exit_code, 0);
+  const auto set = box.run({"planar", "simulate", "--config", base, "--set", "run.periods=2",
+                            "--set", "run.step=0.02", "--csv", "set.csv", "--quiet"});
+  ASSERT_EQ(set.exit_code, 0) << set.err;
+  EXPECT_EQ(read_text(box.work_file("set.csv")), read_text(box.work_file("file.csv")));
+  EXPECT_EQ(read_text(base), kBase + kPart);
+  for (const auto& [assignment, name] :
+       std::vector<std::pair<std::string, std::string>>{{"run.stepp=0.02", "--set = run.stepp"},
+                                                        {"run.step=fast", "run.step"},
+                                                        {"run.step=-1", "run.step"},
+                                                        {"run.pose=0,0", "run.pose"},
+                                                        {"run.step", "--set"}}) {
+    CliSandbox bad;
+    const std::string cfg = write_config(bad, "p.toml", kBase + kPart);
+    expect_clean_failure(bad, bad.run({"planar", "simulate", "--config", cfg, "--set", assignment,
+                                       "--csv", "t.csv", "--out", "r.json"}),
+                         {name});
+  }
+}
+
 // planar steady is the fixed point of the period map (issue 21), and reports a part that walks
 // into another region of the field instead of a drift. examples/planar.toml's pocket (a
 // rectangle centred at x = 30 mm, half-length 8 mm, its band rising inward from x = 22 mm) with

@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -30,6 +31,7 @@ using nlohmann::json;
 
 struct PlanarFlags {
   std::string config;
+  std::vector<std::string> set;  // "section.key=value" over the config's values
   std::optional<std::string> out, csv;
   bool as_json = false, quiet = false;
 };
@@ -57,7 +59,7 @@ json pose_json(const PlanarPose& p, const Si& si) {
 
 PlanarSetup load(const PlanarFlags& f) {
   require_report_paths(f.out, ExtraFile{"csv", f.csv});
-  return load_planar_config(f.config);
+  return load_planar_config(f.config, f.set);
 }
 
 json header(const PlanarSetup& s) {
@@ -258,6 +260,11 @@ void add_planar_sub(CLI::App* parent, const char* name, const char* help, void (
   auto f = std::make_shared<PlanarFlags>();
   sub->add_option("--config", f->config, "the planar configuration (.toml or .json; docs/planar.md)")
       ->required()->type_name("FILE");
+  sub->add_option("--set", f->set,
+                  "set a config key over the file's value, as the file's table and key: "
+                  "--set run.step=4e-5 --set table.x.a2=5 --set run.pose=0.01,0,0 (repeatable; "
+                  "the value is checked as in the file; docs/planar.md lists the keys)")
+      ->type_name("SECTION.KEY=VALUE");
   sub->add_option("--csv", f->csv, csv_help)->type_name("FILE")->group("Output");
   sub->add_option("--out", f->out, "write the JSON report to FILE")
       ->type_name("FILE")

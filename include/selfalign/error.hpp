@@ -65,7 +65,8 @@ struct UserName {
 /// `e` naming what the user gave: each comma-separated part of its name ("mu_static,
 /// mu_kinetic") that is a library name of `names`, or such a name with an index ("accels[2]"),
 /// becomes the user's name (with the same index); other parts get `prefix` before them
-/// (e.g. "table.x." for a file's section). Value and allowed range are kept.
+/// (e.g. "table.x." for a file's section) unless they already start with it. Value and allowed
+/// range are kept.
 InvalidParameter renamed(const InvalidParameter& e, std::span<const UserName> names,
                          std::string_view prefix = {});
 

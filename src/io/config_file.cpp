@@ -1,59 +1,37 @@
-// load_simulate_config: one flat table of config keys from a JSON or TOML document
-// (io/document.hpp), each value checked against its key's type.
+// load_simulate_config: the 1-D config is one flat key table (section "") read by the one
+// config reader (config_reader.hpp) from a JSON or TOML document (io/document.hpp).
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/config_reader.hpp"
 #include "selfalign/io/document.hpp"
 #include "selfalign/io/simulate_config.hpp"
 
 namespace selfalign {
 namespace {
 
-using nlohmann::json;
-
 // A config is one table of keys whose values are numbers, strings or arrays of numbers.
 const DocumentKind kConfigDocument{"config file", "--config", 2};
 
-const ConfigKey& require_config_key(std::string_view name, const std::string& file) {
-  const ConfigKey* key = find_simulate_config_key(name);
-  if (!key)
-    throw InvalidParameter("config key", std::string(name),
-                           unknown_config_key_hint(name) + " (in " + file + ")");
-  return *key;
-}
-
-[[noreturn]] void throw_wrong_type(const ConfigKey& key, const json& value,
-                                   const std::string& file) {
-  throw InvalidParameter(std::string(key.name), document_value_text(value),
-                         std::string(key.field.index() == 2 ? "must be an " : "must be a ") +
-                             std::string(config_type_name(key)) + " (in " + file + ")");
-}
-
 }  // namespace
 
+void set_simulate_config_value(SimulateConfig& config, const ConfigKey& key, ConfigValue value) {
+  std::visit(
+      [&](auto field) {
+        using Value = typename std::remove_reference_t<decltype(config.*field)>::value_type;
+        config.*field = std::get<Value>(std::move(value));
+      },
+      key.field);
+}
+
 SimulateConfig load_simulate_config(const std::string& path) {
-  const json doc = read_document(path, kConfigDocument);
+  const nlohmann::json doc = read_document(path, kConfigDocument);
   if (!doc.is_object())
     throw InvalidParameter("config file", path, "must contain one JSON object of keys");
   SimulateConfig config;
-  for (const auto& [name, value] : doc.items()) {
-    const ConfigKey& key = require_config_key(name, path);
-    if (auto* text_field = std::get_if<TextField>(&key.field)) {
-      if (!value.is_string()) throw_wrong_type(key, value, path);
-      config.**text_field = value.get<std::string>();
-    } else if (auto* number_field = std::get_if<NumberField>(&key.field)) {
-      if (!value.is_number()) throw_wrong_type(key, value, path);
-      config.**number_field = value.get<double>();
-    } else {
-      const auto* list = std::get_if<NumberListField>(&key.field);
-      if (!value.is_array()) throw_wrong_type(key, value, path);
-      std::vector<double> numbers;
-      for (const auto& item : value) {
-        if (!item.is_number()) throw_wrong_type(key, value, path);
-        numbers.push_back(item.get<double>());
-      }
-      config.**list = std::move(numbers);
-    }
-  }
+  const ConfigValues values = read_config_values(doc, simulate_config_key_table(), path);
+  for (const ConfigValues::Entry& entry : values.entries())
+    set_simulate_config_value(config, *find_simulate_config_key(entry.key->name),
+                              entry.value);
   return config;
 }
 

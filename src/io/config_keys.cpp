@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/config_reader.hpp"
 #include "selfalign/io/simulate_config.hpp"
-#include "selfalign/io/spelling.hpp"
 
 namespace selfalign {
 namespace {
@@ -153,6 +153,19 @@ std::string format_list(const std::vector<double>& values) {
 
 std::span<const ConfigKey> simulate_config_keys() { return kKeys; }
 
+const KeyTable& simulate_config_key_table() {
+  static const std::vector<KeySpec> specs = [] {
+    constexpr ValueType kTypes[] = {ValueType::text, ValueType::number, ValueType::numbers};
+    std::vector<KeySpec> s;
+    for (const ConfigKey& key : kKeys)
+      s.push_back({"", key.name, kTypes[key.field.index()], key.dimension, {}, {}, key.unit_si,
+                   key.help});
+    return s;
+  }();
+  static const KeyTable table{specs, "docs/config.md and `selfalign simulate --help`"};
+  return table;
+}
+
 const ConfigKey* find_simulate_config_key(std::string_view name) {
   for (const ConfigKey& key : kKeys)
     if (key.name == name) return &key;
@@ -169,13 +182,7 @@ std::string simulate_config_key_list() {
 }
 
 std::string unknown_config_key_hint(std::string_view name) {
-  std::vector<std::string> names;
-  for (const ConfigKey& key : kKeys) names.emplace_back(key.name);
-  const std::string best = closest_name(name, names);
-  std::string hint = "unknown key";
-  if (!best.empty()) hint += " (did you mean " + best + "?)";
-  return hint + "; keys: units, method, profile, period, stroke, a2, a3, ..., every one in "
-                "docs/config.md and `selfalign simulate --help`";
+  return unknown_key_message(simulate_config_key_table(), "", name);
 }
 
 std::string config_flag(const ConfigKey& key) {

@@ -1,14 +1,14 @@
 #include "selfalign/io/planar_config.hpp"
 
 #include <cmath>
-#include <fstream>
+#include <algorithm>
 #include <initializer_list>
-#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_law.hpp"
+#include "selfalign/io/config_reader.hpp"
 #include "selfalign/io/document.hpp"
 #include "selfalign/io/unit_system.hpp"
 #include "selfalign/io/spelling.hpp"
@@ -23,125 +23,65 @@ namespace {
 
 using nlohmann::json;
 
-// One table of the file with its allowed keys: every read is checked, every key must be known.
-class Section {
- public:
-  Section(const json& node, std::string name, std::set<std::string> allowed)
-      : node_(node), name_(std::move(name)) {
-    if (!node_.is_object()) throw InvalidParameter(name_, document_value_text(node_), "must be a table");
-    for (const auto& [k, v] : node_.items())
-      if (!allowed.count(k)) {
-        const std::string best =
-            closest_name(k, std::vector<std::string>(allowed.begin(), allowed.end()));
-        throw InvalidParameter(key(k), "unknown key",
-                               "is not a key of [" + name_ + "]" +
-                                   (best.empty() ? "" : " (did you mean " + best + "?)"));
-      }
-  }
-  std::string key(const std::string& k) const { return name_.empty() ? k : name_ + "." + k; }
-  bool has(const std::string& k) const { return node_.contains(k); }
-  double number(const std::string& k, double fallback) const {
-    if (!has(k)) return fallback;
-    return as_number(node_.at(k), k);
-  }
-  double required(const std::string& k) const {
-    if (!has(k)) throw InvalidParameter(key(k), "missing", "is required");
-    return as_number(node_.at(k), k);
-  }
-  int integer(const std::string& k, int fallback, int lo, int hi) const {
-    const double v = number(k, fallback);
-    if (!(v >= lo && v <= hi) || v != std::floor(v))
-      throw InvalidParameter(key(k), v,
-                             "must be a whole number in [" + std::to_string(lo) + ", " +
-                                 std::to_string(hi) + "]");
-    return static_cast<int>(v);
-  }
-  std::string text(const std::string& k, const std::string& fallback) const {
-    if (!has(k)) return fallback;
-    if (!node_.at(k).is_string()) throw InvalidParameter(key(k), document_value_text(node_.at(k)), "must be a string");
-    return node_.at(k).get<std::string>();
-  }
-  std::vector<double> list(const std::string& k, std::vector<double> fallback = {}) const {
-    if (!has(k)) return fallback;
-    const json& a = node_.at(k);
-    if (!a.is_array()) throw InvalidParameter(key(k), document_value_text(a), "must be an array of numbers");
-    std::vector<double> out;
-    for (const auto& v : a) out.push_back(as_number(v, k));
-    return out;
-  }
-  const json& raw(const std::string& k) const { return node_.at(k); }
-
- private:
-  double as_number(const json& v, const std::string& k) const {
-    if (v.is_number()) return v.get<double>();  // TOML nan and inf included
-    throw InvalidParameter(key(k), document_value_text(v), "must be a number");
-  }
-  const json& node_;
-  std::string name_;
-};
+using Section = ConfigSection;
 
 // Sections ([table.x], [part], ...) hold numbers, strings and arrays; [stop] entries are an
 // array of [x, y, angle] arrays: 4 levels.
 const DocumentKind kPlanarDocument{"config", "--config", 4};
 
-using D = Dimension;
-
-std::unique_ptr<TableProfile> make_profile(const Section& p, const InputUnits& u, bool angular) {
+// One axis of [table], in model units (the rotation's coefficients are angles: the key table
+// gives them no dimension).
+std::unique_ptr<TableProfile> make_profile(const Section& p, bool angular) {
   const std::string kind = p.text("profile", "three-phase");
   if (kind == "three-phase") {
     if (angular)
       throw InvalidParameter(p.key("profile"), kind, "a rotation needs profile = \"fourier\"");
-    const double period = u(D::time, p.required("period")), stroke = u(D::length, p.required("stroke"));
-    const double a2 = u(D::acceleration, p.required("a2")), a3 = u(D::acceleration, p.required("a3"));
-    return make_three_phase_profile({period, stroke, a2, a3},
-                                    p.has("jerk") ? u(D::jerk, p.required("jerk")) : kInf);
+    return make_three_phase_profile(
+        {p.required("period"), p.required("stroke"), p.required("a2"), p.required("a3")},
+        p.has("jerk") ? p.required("jerk") : kInf);
   }
-  if (kind == "fourier") {
-    std::vector<double> c = p.list("cos"), s = p.list("sin");
-    for (auto* v : {&c, &s})
-      for (double& x : *v) x = angular ? x : u(D::length, x);  // rad stay rad
-    return std::make_unique<FourierProfile>(u(D::time, p.required("period")), c, s);
-  }
+  if (kind == "fourier")
+    return std::make_unique<FourierProfile>(p.required("period"), p.list("cos"), p.list("sin"));
   throw InvalidParameter(p.key("profile"), kind, "must be \"three-phase\" or \"fourier\"");
 }
 
-void xy(const Section& s, const std::string& k, const InputUnits& u, double& x, double& y) {
+// A point [x, y] (the key table checks its length and converts it).
+void xy(const Section& s, std::string_view k, double& x, double& y) {
   const std::vector<double> v = s.list(k, {0.0, 0.0});
-  if (v.size() != 2) throw InvalidParameter(s.key(k), std::to_string(v.size()) + " values", "must be [x, y]");
-  x = u(D::length, v[0]), y = u(D::length, v[1]);
+  x = v[0], y = v[1];
 }
 
 PlanarField make_field(const Section& f, const InputUnits& u) {
   const std::string type = f.text("type", "uniform");
   const double c_mu = f.number("c_mu", 2.5);
-  const double width = u(D::length, f.number("width", u.si() ? 0.1 * u.scales().length() : 0.1));
+  const double width = f.number("width", u.si() ? 0.1 * u.scales().length() : 0.1);
   if (type == "uniform") return UniformPlanarField{f.number("level", 1.0)};
   if (type == "half-plane") {
     HalfPlaneStepField h{0, 0, f.number("angle", 0), width, c_mu};
-    xy(f, "origin", u, h.origin_x, h.origin_y);
+    xy(f, "origin", h.origin_x, h.origin_y);
     return h;
   }
   if (type == "strip") {
-    StripField h{0, 0, f.number("angle", 0), u(D::length, f.required("half_width")), width, c_mu};
-    xy(f, "origin", u, h.origin_x, h.origin_y);
+    StripField h{0, 0, f.number("angle", 0), f.required("half_width"), width, c_mu};
+    xy(f, "origin", h.origin_x, h.origin_y);
     return h;
   }
   if (type == "rectangle") {
-    RectangularPocketField h{0, 0, f.number("angle", 0), u(D::length, f.required("half_length")),
-                             u(D::length, f.required("half_width")), width, c_mu};
-    xy(f, "centre", u, h.centre_x, h.centre_y);
+    RectangularPocketField h{0, 0, f.number("angle", 0), f.required("half_length"),
+                             f.required("half_width"), width, c_mu};
+    xy(f, "centre", h.centre_x, h.centre_y);
     return h;
   }
   if (type == "circle") {
-    CircularPocketField h{0, 0, u(D::length, f.required("radius")), width, c_mu};
-    xy(f, "centre", u, h.centre_x, h.centre_y);
+    CircularPocketField h{0, 0, f.required("radius"), width, c_mu};
+    xy(f, "centre", h.centre_x, h.centre_y);
     return h;
   }
   if (type == "grid") {
     GridField g;
-    xy(f, "origin", u, g.origin_x, g.origin_y);
+    xy(f, "origin", g.origin_x, g.origin_y);
     g.angle = f.number("angle", 0);
-    g.dx = u(D::length, f.required("dx")), g.dy = u(D::length, f.required("dy"));
+    g.dx = f.required("dx"), g.dy = f.required("dy");
     g.nx = f.integer("nx", 2, 2, 100000), g.ny = f.integer("ny", 2, 2, 100000);
     g.levels = f.list("levels");
     return g;
@@ -150,30 +90,23 @@ PlanarField make_field(const Section& f, const InputUnits& u) {
                          "must be uniform, half-plane, strip, rectangle, circle or grid");
 }
 
-ContactPatch make_patch(const Section& p, const InputUnits& u) {
+ContactPatch make_patch(const Section& p) {
   const std::string shape = p.text("shape", "point");
-  const auto lengths = [&](const std::string& k) {
-    std::vector<double> v = p.list(k);
-    for (double& x : v) x = u(D::length, x);
-    return v;
-  };
   if (shape == "point") return point_patch();
   if (shape == "disc")
-    return disc_patch(u(D::length, p.required("radius")), p.integer("rings", 4, 1, 10000),
+    return disc_patch(p.required("radius"), p.integer("rings", 4, 1, 10000),
                       p.integer("sectors", 8, 1, 10000));
   if (shape == "rectangle")
-    return rectangle_patch(u(D::length, p.required("length")), u(D::length, p.required("width")),
-                           p.integer("nx", 4, 1, 10000), p.integer("ny", 4, 1, 10000));
+    return rectangle_patch(p.required("length"), p.required("width"), p.integer("nx", 4, 1, 10000),
+                           p.integer("ny", 4, 1, 10000));
   if (shape == "polygon")
-    return polygon_patch(lengths("xs"), lengths("ys"), p.integer("subdivisions", 2, 1, 100));
-  if (shape == "points") return weighted_points_patch(lengths("xs"), lengths("ys"), p.list("loads"));
+    return polygon_patch(p.list("xs"), p.list("ys"), p.integer("subdivisions", 2, 1, 100));
+  if (shape == "points") return weighted_points_patch(p.list("xs"), p.list("ys"), p.list("loads"));
   throw InvalidParameter(p.key("shape"), shape, "must be point, disc, rectangle, polygon or points");
 }
 
-PlanarPose pose_from(const std::vector<double>& v, const std::string& key, const InputUnits& u) {
-  if (v.size() != 3) throw InvalidParameter(key, std::to_string(v.size()) + " values", "must be [x, y, angle]");
-  return {u(D::length, v[0]), u(D::length, v[1]), v[2]};
-}
+// A pose [x, y, angle] (the key table checks its length and converts it).
+PlanarPose pose_from(const std::vector<double>& v) { return {v[0], v[1], v[2]}; }
 
 // The library's names of what a section builds, as the section's keys (messages name the key
 // the user wrote, with its section: "table.x.cos", "part.loads").
@@ -209,60 +142,86 @@ const SectionNames kFieldNames{{"centre_x", "field.centre"}, {"centre_y", "field
 const SectionNames kRunNames{{"step", "run.step"}, {"theta", "run.theta"},
                              {"inertia", "part.inertia"}};
 
+// One --set "section.key=value": the value parsed by the key's type (parse_config_value) and
+// written into the document before it is read, so that it is checked as the file's values are.
+void apply_setting(json& doc, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InvalidParameter("--set", assignment, "must be SECTION.KEY=VALUE, e.g. run.step=4e-5");
+  const std::string name = assignment.substr(0, eq);
+  const std::size_t dot = name.rfind('.');
+  const std::string section = dot == std::string::npos ? "" : name.substr(0, dot);
+  const std::string key = dot == std::string::npos ? name : name.substr(dot + 1);
+  const KeyTable& table = planar_config_keys();
+  if (table.has_section(name))
+    throw InvalidParameter("--set", name, "is a table: set one of its keys, " + name + ".KEY=VALUE");
+  if (!table.has_section(section))
+    throw InvalidParameter("--set", name, "[" + section + "] is not a table of the config; " +
+                                              unknown_key_message(table, "", name));
+  const KeySpec* spec = table.find(section, key);
+  if (!spec) throw InvalidParameter("--set", name, unknown_key_message(table, section, key));
+  json* node = &doc;
+  for (std::size_t begin = 0; begin < section.size();) {
+    const std::size_t end = std::min(section.find('.', begin), section.size());
+    json& child = (*node)[section.substr(begin, end - begin)];
+    if (child.is_null()) child = json::object();
+    if (!child.is_object())
+      throw InvalidParameter(section.substr(0, end), document_value_text(child), "must be a table");
+    node = &child;
+    begin = end + 1;
+  }
+  (*node)[key] = to_json(parse_config_value(*spec, assignment.substr(eq + 1)));
+}
+
 }  // namespace
 
-PlanarSetup load_planar_config(const std::string& path) {
-  const json doc = read_document(path, kPlanarDocument);
+PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set) {
+  json doc = read_document(path, kPlanarDocument);
   if (!doc.is_object()) throw InvalidParameter("config", path, "must be a table of sections");
-  const Section top(doc, "", {"units", "scales", "table", "part", "friction", "field", "run",
-                              "field_map", "stop"});
+  for (const std::string& assignment : set) apply_setting(doc, assignment);
+  const ConfigValues values = read_config_values(doc, planar_config_keys(), path);
   PlanarSetup st;
   st.path = path;
+  const Section top(values, "", InputUnits());
   const std::string units = top.text("units", "si");
   if (units != "si" && units != "dimensionless")
     throw InvalidParameter("units", units, "must be \"si\" or \"dimensionless\"");
   st.si = units == "si";
-  const json empty = json::object();
-  const auto section = [&](const char* name, std::set<std::string> keys) {
-    return Section(doc.contains(name) ? doc.at(name) : empty, name, std::move(keys));
-  };
-  const Section sc = section("scales", {"length", "mu", "g"});
+  const Section sc(values, "scales", InputUnits());  // the scales are the unit system itself
   st.scales = with_user_names(
       kScalesNames.names,
       [&] { return Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81)); },
       "scales.");
   const InputUnits u = st.si ? InputUnits(st.scales) : InputUnits();
-  const Section table = section("table", {"x", "y", "rotation"});
-  const std::set<std::string> profile_keys{"profile", "period", "stroke", "a2", "a3", "jerk", "cos", "sin"};
+  const auto section = [&](std::string name) { return Section(values, std::move(name), u); };
   PlanarTableMotion& m = st.problem.motion;
   for (const char* axis : {"x", "y", "rotation"}) {
-    if (!table.has(axis)) continue;
-    const Section p(table.raw(axis), std::string("table.") + axis, profile_keys);
+    const Section p = section(std::string("table.") + axis);
+    if (!values.has_section(p.name())) continue;
     const SectionNames names = axis_names(p.key(""));
     st.profiles.push_back(with_user_names(
-        names.names, [&] { return make_profile(p, u, std::string(axis) == "rotation"); },
+        names.names, [&] { return make_profile(p, std::string(axis) == "rotation"); },
         p.key("")));
     const TableProfile* ptr = st.profiles.back().get();
     (std::string(axis) == "x" ? m.first : std::string(axis) == "y" ? m.second : m.rotation) = ptr;
   }
   if (st.profiles.empty())
     throw InvalidParameter("table", "no motion", "needs [table.x], [table.y] or [table.rotation]");
-  const Section part = section("part", {"mass", "inertia", "shape", "radius", "rings", "sectors",
-                                        "length", "width", "nx", "ny", "xs", "ys", "subdivisions",
-                                        "loads"});
+  const Section part = section("part");
   st.mass = part.number("mass", 1.0);
   require_positive_moderate("part.mass", st.mass);
   const double inertia = part.required("inertia");
+  // I [kg m^2] to the model's j = I/(m L^2) (docs/planar.md): by hand, it needs the mass.
   st.problem.part.inertia = st.si ? inertia / (st.mass * st.scales.length() * st.scales.length()) : inertia;
   if (!(inertia > 0) || !std::isfinite(inertia))
     throw InvalidParameter("part.inertia", inertia, "must be finite and > 0");
   st.problem.part.patch =
-      with_user_names(kPartNames.names, [&] { return make_patch(part, u); }, "part.");
+      with_user_names(kPartNames.names, [&] { return make_patch(part); }, "part.");
   // One convention for coefficients everywhere (issue 21; docs/config.md "Friction law"):
   // absolute coefficients, the kinetic one being the model's unit [scales] mu, as --mu in the
   // 1-D subcommands. The keys of the relative convention before it are refused by name, never
   // read as absolute values (a static = 1.2 would silently become mu_static = 1.2).
-  const Section fr = section("friction", {"mu_static", "static", "kinetic"});
+  const Section fr = section("friction");
   for (const char* old : {"static", "kinetic"})
     if (fr.has(old))
       throw InvalidParameter(fr.key(old), format_number(fr.number(old, 0.0)),
@@ -273,9 +232,7 @@ PlanarSetup load_planar_config(const std::string& path) {
   st.problem.law = with_user_names(
       kFrictionNames.names,
       [&] { return law_of_coefficients(st.scales.mu(), mu_static, std::nullopt); }, "");
-  const Section field = section("field", {"type", "level", "origin", "centre", "angle", "width",
-                                          "half_width", "half_length", "radius", "c_mu", "dx",
-                                          "dy", "nx", "ny", "levels"});
+  const Section field = section("field");
   st.problem.field = with_user_names(
       kFieldNames.names,
       [&] {
@@ -284,9 +241,8 @@ PlanarSetup load_planar_config(const std::string& path) {
         return f;
       },
       "field.");
-  const Section run = section("run", {"step", "theta", "periods", "pose", "twist", "every",
-                                      "transient", "window", "steady_periods", "tolerance"});
-  st.problem.options.step = u(D::time, run.required("step"));
+  const Section run = section("run");
+  st.problem.options.step = run.required("step");
   st.problem.options.theta = run.number("theta", 0.5);
   st.periods = run.integer("periods", 10, 1, 1000000);
   st.transient = run.integer("transient", 0, 0, 100000);
@@ -300,30 +256,17 @@ PlanarSetup load_planar_config(const std::string& path) {
   if (!(st.tolerance >= 0 && st.tolerance < 1))
     throw InvalidParameter(run.key("tolerance"), st.tolerance, "must be in [0, 1) (0: the default)");
   st.every = run.integer("every", 1, 1, 1000000000);
-  st.pose = pose_from(run.list("pose", {0, 0, 0}), "run.pose", u);
+  st.pose = pose_from(run.list("pose", {0, 0, 0}));
   const std::vector<double> tw = run.list("twist", {0, 0, 0});
-  if (tw.size() != 3) throw InvalidParameter("run.twist", std::to_string(tw.size()) + " values", "must be [ux, uy, omega]");
-  st.twist = {u(D::velocity, tw[0]), u(D::velocity, tw[1]), u(D::rate, tw[2])};
-  const Section fm = section("field_map", {"x", "y", "angles", "periods"});
+  st.twist = {tw[0], tw[1], tw[2]};
+  const Section fm = section("field_map");
   st.grid_x = fm.list("x", {0.0}), st.grid_y = fm.list("y", {0.0});
-  for (double& v : st.grid_x) v = u(D::length, v);
-  for (double& v : st.grid_y) v = u(D::length, v);
   st.grid_angles = fm.list("angles", {0.0});
   st.field_periods = fm.integer("periods", 1, 1, 100000);
-  const Section stop = section("stop", {"entries", "max_periods"});
+  const Section stop = section("stop");
   st.max_periods = stop.integer("max_periods", 2000, 1, 1000000);
   if (stop.has("entries")) {
-    const json& e = stop.raw("entries");
-    if (!e.is_array()) throw InvalidParameter("stop.entries", document_value_text(e), "must be an array of [x, y, angle]");
-    for (const auto& row : e) {
-      if (!row.is_array()) throw InvalidParameter("stop.entries", document_value_text(row), "must be [x, y, angle]");
-      std::vector<double> v;
-      for (const auto& x : row) {
-        if (!x.is_number()) throw InvalidParameter("stop.entries", document_value_text(x), "must be numbers");
-        v.push_back(x.get<double>());
-      }
-      st.entries.push_back(pose_from(v, "stop.entries", u));
-    }
+    for (const std::vector<double>& row : stop.rows("entries")) st.entries.push_back(pose_from(row));
   } else {
     st.entries.push_back(st.pose);
   }

@@ -3,7 +3,6 @@
 
 #include "selfalign/io/simulate_config.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 
@@ -32,21 +31,6 @@ SimulateConfig convert_config(const SimulateConfig& config, const Scales& scales
       for (double& v : *(r.**f)) v = convert(key.dimension, v, scales, si);
   }
   return r;
-}
-
-std::string trim(std::string_view s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string_view::npos) return "";
-  return std::string(s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1));
-}
-
-// C-locale number, whole text (surrounding blanks allowed); "nan" and "inf" parse.
-bool parse_number(std::string_view text, double& out) {
-  std::string t = trim(text);
-  if (!t.empty() && t[0] == '+') t.erase(0, 1);
-  if (t.empty()) return false;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
-  return ec == std::errc{} && end == t.data() + t.size();
 }
 
 }  // namespace
@@ -92,35 +76,9 @@ void set_simulate_config_value(SimulateConfig& config, std::string_view name,
                                const std::string& text) {
   const ConfigKey* key = find_simulate_config_key(name);
   if (!key)
-    throw InvalidParameter("config key", std::string(name),
-                           unknown_config_key_hint(name));
-  if (auto* text_field = std::get_if<TextField>(&key->field)) {
-    config.**text_field = text;
-  } else if (auto* number_field = std::get_if<NumberField>(&key->field)) {
-    double v = 0;
-    if (!parse_number(text, v)) throw InvalidParameter(std::string(name), text, "must be a number");
-    config.**number_field = v;
-  } else {
-    const NumberListField field = std::get<NumberListField>(key->field);
-    std::string list = trim(text);
-    if (list.size() >= 2 && list.front() == '[' && list.back() == ']')
-      list = list.substr(1, list.size() - 2);
-    std::vector<double> values;
-    if (!trim(list).empty()) {
-      std::size_t begin = 0;
-      while (true) {
-        const std::size_t comma = list.find(',', begin);
-        double v = 0;
-        if (!parse_number(std::string_view(list).substr(begin, comma - begin), v))
-          throw InvalidParameter(std::string(name), text,
-                                 "must be a comma-separated list of numbers");
-        values.push_back(v);
-        if (comma == std::string::npos) break;
-        begin = comma + 1;
-      }
-    }
-    config.*field = std::move(values);
-  }
+    throw InvalidParameter("config key", std::string(name), unknown_config_key_hint(name));
+  set_simulate_config_value(
+      config, *key, parse_config_value(*simulate_config_key_table().find("", name), text));
 }
 
 SimulateConfig merge(const SimulateConfig& base, const SimulateConfig& overrides) {

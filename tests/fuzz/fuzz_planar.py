@@ -2,7 +2,9 @@
 """Seeded fuzz of `selfalign planar` configs (standard library only): each case mutates one or
 two keys of a small valid TOML config (numbers to 0, negatives, NaN, inf, huge, tiny, wrong
 types, wrong array lengths; unknown keys; removed keys; other shapes and field types) and runs
-one of simulate/steady/field/stop with --csv and --out. A few cases instead name the config as
+one of simulate/steady/field/stop with --csv and --out; some cases set keys with --set
+SECTION.KEY=VALUE instead of (or over) the file (good, bad and unknown keys, malformed
+assignments: the same key table and checks as the file's values). A few cases instead name the config as
 an output, or one file by both outputs (./o.csv and o.csv, a parent path, a link: issue 20, D24,
 D25), or nest the config 1e5 deep (D23): these must be refused. A case fails on a signal, an
 exit code other than 0 or 2, an exit 2 whose stderr is not one "selfalign: error: " line or that
@@ -49,6 +51,23 @@ EXTRA = {  # keys that other shapes and types need, with good and bad values
               "nx": ["2", "1"], "ny": ["2"], "half_width": ["0.1", "0"], "half_length": ["0.2"],
               "origin": ["[0.1, 0.0]"], "angle": ["0.3", "nan"], "level": ["2.0", "-1"], "colour": ['"red"']},
 }
+SET_VALUES = ["0", "-1", "nan", "inf", "1e300", "2", "0.5", "abc", "", "0.1,0.2", "[1, 2, 3]",
+              "0,0,0", "[[0, 0, 0]]", "[[0, 0]]", "[[0, 0, nan]]", "3.5", "point", "fourier"]
+
+
+def set_flags(rng):
+    """Zero to three --set assignments: known keys (from BASE and EXTRA), unknown ones, or
+    malformed text."""
+    flags = []
+    for _ in range(rng.choice([0, 0, 1, 1, 2, 3])):
+        kind = rng.random()
+        if kind < 0.1:
+            flags += ["--set", rng.choice(["run.step", "=1", "run..step=1", "table.x=1", "stop=3"])]
+            continue
+        section = rng.choice([k for k, v in BASE.items() if isinstance(v, dict)] + ["run", "bogus"])
+        keys = list(BASE.get(section, {})) + list(EXTRA.get(section, {})) + ["colour"]
+        flags += ["--set", f"{section}.{rng.choice(keys)}={rng.choice(SET_VALUES)}"]
+    return flags
 
 
 def render(cfg):
@@ -122,7 +141,7 @@ def main():
                 f.write(text)
             work = os.path.join(root, "work")
             os.mkdir(work)
-            args = [a.binary, "planar", command, "--config", path] + outputs
+            args = [a.binary, "planar", command, "--config", path] + outputs + set_flags(rng)
             try:
                 r = subprocess.run(args, cwd=work, capture_output=True, text=True, timeout=a.timeout)
             except subprocess.TimeoutExpired:

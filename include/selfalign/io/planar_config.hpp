@@ -5,13 +5,16 @@
 /// converted to the dimensionless model with the scales L, mu, g (units.hpp). docs/planar.md
 /// lists every table and key; examples/planar.toml is a complete example. The file is read by
 /// read_document (document.hpp: registered as the --config input, at most 4 levels deep, errors
-/// with line and column). Unknown keys and values out of range are refused with
-/// InvalidParameter naming the key.
+/// with line and column), then checked against the planar key table (planar_config_keys) by
+/// the one config reader of the 1-D and planar configs (config_reader.hpp), which converts
+/// each value by its key's dimension. Unknown keys and values out of range are refused with
+/// InvalidParameter naming the key with its section ("part.radius").
 
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "selfalign/io/config_reader.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/units.hpp"
@@ -44,7 +47,13 @@ struct PlanarSetup {
   std::string path;  ///< the file read
 };
 
-/// Reads and validates a .toml or .json planar configuration.
-PlanarSetup load_planar_config(const std::string& path);
+/// Every section and key of a planar config: type, dimension, unit, meaning (docs/planar.md).
+const KeyTable& planar_config_keys();
+
+/// Reads and validates a .toml or .json planar configuration. `set` holds "section.key=value"
+/// assignments (the CLI's --set) applied over the file's values before they are checked, each
+/// value parsed by its key's type (parse_config_value: numbers "4e-5", arrays "0.01,0" or
+/// "[0.01, 0]", rows as JSON); InvalidParameter("--set", ...) for an unknown key.
+PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set = {});
 
 }  // namespace selfalign

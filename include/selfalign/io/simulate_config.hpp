@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "selfalign/io/config_reader.hpp"  // KeyTable, ConfigValue
 #include "selfalign/io/unit_system.hpp"  // Dimension, to_si, to_dimensionless
 #include "selfalign/units.hpp"
 
@@ -100,6 +101,9 @@ struct ConfigKey {
 
 /// Every key, in documentation order.
 std::span<const ConfigKey> simulate_config_keys();
+/// The same keys as the config reader's key table (one section, ""): what reads a config file
+/// and parses a flag's text (config_reader.hpp).
+const KeyTable& simulate_config_key_table();
 /// The key named `name`, or nullptr.
 const ConfigKey* find_simulate_config_key(std::string_view name);
 /// Comma-separated list of all key names (for error messages).
@@ -129,6 +133,8 @@ SimulateConfig load_simulate_config(const std::string& path);
 /// or text that is not of the key's type.
 void set_simulate_config_value(SimulateConfig& config, std::string_view key,
                                const std::string& text);
+/// Sets `key`'s field to `value` (of the key's type: the config reader's value of that key).
+void set_simulate_config_value(SimulateConfig& config, const ConfigKey& key, ConfigValue value);
 
 /// `base` with every key set in `overrides` replaced (file values, then flags).
 SimulateConfig merge(const SimulateConfig& base, const SimulateConfig& overrides);
