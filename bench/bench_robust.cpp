@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/robust/monte_carlo.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -72,7 +73,7 @@ void bare_exact_same_periods(benchmark::State& st, const Process& p) {
   const MonteCarloResult mc = monte_carlo(q, p, u, o);
   struct Run {
     std::unique_ptr<ThreePhaseProfile> profile;
-    TwoRegionFriction friction;
+    FieldFriction friction;
     double t_end;
   };
   std::vector<Run> prepared;
@@ -90,7 +91,7 @@ void bare_exact_same_periods(benchmark::State& st, const Process& p) {
     // A run that never entered stopped at a repeated state: at least one period.
     const double t_end = std::isnan(t_si) ? P : std::max(1.0, std::ceil(sc.time_from_si(t_si) / P)) * P;
     periods += t_end / P;
-    prepared.push_back({std::move(profile), TwoRegionFriction(sc.length_from_si(p.x_mu), 1.0, v[1]),
+    prepared.push_back({std::move(profile), two_region_friction(sc.length_from_si(p.x_mu), 1.0, v[1]),
                         t_end});
   }
   for (auto _ : st)

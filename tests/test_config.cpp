@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/simulate_model.hpp"
@@ -202,7 +203,7 @@ TEST(BuildSimulateModel, DefaultsGiveTheSection72Model) {
   EXPECT_EQ(m.units, UnitSystem::dimensionless);
   EXPECT_EQ(m.profile->kind(), "three-phase");
   EXPECT_EQ(m.profile->period(), 1.0);
-  const auto* friction = dynamic_cast<const TwoRegionFriction*>(m.friction.get());
+  const TwoRegionTable* friction = m.friction->two_region();
   ASSERT_NE(friction, nullptr);
   EXPECT_EQ(friction->width(), 0.05);
   EXPECT_EQ(m.options.method, Method::exact);
@@ -277,7 +278,7 @@ TEST(BuildSimulateModel, SiInputsAreConvertedWithOneScales) {
   c.width = 1e-4;  // 0.05 L
   c.x0 = 4e-4;     // 0.2 L
   const SimulateModel m = build_simulate_model(c);
-  const auto* friction = dynamic_cast<const TwoRegionFriction*>(m.friction.get());
+  const TwoRegionTable* friction = m.friction->two_region();
   ASSERT_NE(friction, nullptr);
   EXPECT_NEAR(friction->width(), 0.05, kRoundTripTolerance);
   EXPECT_NEAR(m.initial.x, 0.2, kRoundTripTolerance);

@@ -8,6 +8,7 @@
 
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -97,7 +98,7 @@ TEST(ExactSolver, TransitionRegionMatchesFortyThreeToFortySeven) {
   const ThreePhaseProfile profile(p);
   const ThreePhaseSolution& r = profile.solution();
   const double x_mu = 0.3, w = 0.05, c_mu = 2.5;
-  const TwoRegionFriction friction(x_mu, w, c_mu);
+  const FieldFriction friction = two_region_friction(x_mu, w, c_mu);
   const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
 
   const double delta = 0.01, v0 = 0.3, A = p.a3;  // start x_mu - delta at t2 with x' = v0
@@ -152,7 +153,7 @@ TEST(ExactSolver, AllArcKindsAgreeWithFineTimeSteppingInTheTransitionRegion) {
   int hyperbolic = 0, harmonic = 0;
   for (auto [a2, a3] : {std::pair{2.3, 1.3}, std::pair{1.8, 1.1}}) {
     const ThreePhaseProfile profile({1.0, 0.084, a2, a3});
-    const TwoRegionFriction friction(0.1, 0.05, 2.5);
+    const FieldFriction friction = two_region_friction(0.1, 0.05, 2.5);
     const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
     for (double x0 : {0.0, 0.013, 0.027, 0.041}) {
       KindCount kinds;

@@ -20,6 +20,7 @@
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/analysis/stopping.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/simulate/simulate.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -164,7 +165,7 @@ TEST(FiniteJerk, SaltationAndFiniteDifferencesAgreeForEveryPatternFound) {
 // there, and time-stepping (a second method) ends at the same place.
 TEST(FiniteJerk, StoppingObservesTheAccumulationAtTheStickPositionMinimum) {
   const JerkLimitedThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3, 50.0});
-  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 2.5);
   const StoppingRun run = stopping_run(profile, friction, FrictionLaw{}, {0, 0, 0});
   ASSERT_EQ(run.kind, StopKind::accumulation);
   EXPECT_FALSE(run.accumulation_proven);
@@ -203,7 +204,7 @@ TEST(FiniteJerk, AStallingSlipFromRestOnATransitionRampStaysStuck) {
   // stuck, and the run end at eq. (41)'s x_stick,min = x_mu + w (y2'' - 1)/(c_mu - 1).
   const JerkLimitedThreePhaseProfile profile({0.8578975958119944, 0.05, 1.6983965990298877,
                                               1.3587172792239102, 1979719499.5311377});
-  const TwoRegionFriction friction(5.0, 1.0, 2.5);
+  const FieldFriction friction = two_region_friction(5.0, 1.0, 2.5);
   const ExactSetup setup{*profile.piecewise_polynomial(), *friction.piecewise_affine()};
   ExactState state = make_exact_state(setup, {0, 0, 0});
   ArcBudget budget(2'000'000);

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/planar/planar_point.hpp"
 #include "selfalign/profiles/three_phase.hpp"
@@ -23,7 +24,7 @@ TEST(PlanarPoint, AlongOneAxisItIsTheOneDimensionalScheme) {
   // The table moves along x; the two-region table rises along x (eq. 7, x_mu = 0.3, w = 0.05).
   // The planar stepper must give the 1-D scheme's x and x' (rounding of m(x) aside) and y = 0.
   for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.3, 1.0)}) {
-    const TwoRegionFriction one_d(0.3, 0.05, 2.5);
+    const FieldFriction one_d = two_region_friction(0.3, 0.05, 2.5);
     const PlanarField field = HalfPlaneStepField{0.3, 0.0, 0.0, 0.05, 2.5};
     TimeSteppingOptions o;
     o.step = 1e-3;

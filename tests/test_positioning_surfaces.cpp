@@ -9,6 +9,7 @@
 
 #include "selfalign/analysis/positioning.hpp"
 #include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/friction/friction_field.hpp"
 
 using namespace selfalign;
 
@@ -36,8 +37,8 @@ int diagonal_periods_bound(double a, double p) {
 
 bool every_entry_proven(double a2, double a3) {
   if (!solve_three_phase({kPeriod, kStroke, a2, a3}).physical) return false;
-  const TwoRegionFriction friction(0.0, kWidth, kCMu);  // the map is translation invariant
-  const StickPositionMap map(ThreePhaseProfile({kPeriod, kStroke, a2, a3}), friction);
+  const TwoRegionTable table(0.0, kWidth, kCMu);  // the map is translation invariant
+  const StickPositionMap map(ThreePhaseProfile({kPeriod, kStroke, a2, a3}), table);
   return map.accumulates_for_every_entry() == true;
 }
 

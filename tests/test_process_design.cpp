@@ -9,6 +9,7 @@
 
 #include "selfalign/design/process_design.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/simulate/simulate.hpp"
 #include "selfalign/units.hpp"
 
@@ -51,7 +52,7 @@ TEST(ProcessDesign, ReplayReachesTheTargetInThePredictedTimeAndStaysInTheBand) {
     // Replay in model units (L = width) through simulate(), sampled at Δt/200.
     const Scales sc(q.width, q.mu, q.gravity);
     const ThreePhaseProfile profile(d.dimensionless);
-    const TwoRegionFriction friction(d.x_mu_dimensionless, 1.0, q.c_mu);
+    const FieldFriction friction = two_region_friction(d.x_mu_dimensionless, 1.0, q.c_mu);
     SimulationOptions o;
     o.duration = sc.time_from_si(d.process_time) + 20 * profile.period();
     o.output_step = profile.period() / 200;

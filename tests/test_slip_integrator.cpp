@@ -25,6 +25,7 @@
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/analysis/stopping.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
@@ -271,7 +272,7 @@ TEST(SlipIntegrator, RefusesBadInputNamingTheParameter) {
 TEST(SlipIntegrator, StoppingRunMatchesTheExactSolversWhenStaticEqualsKinetic) {
   constexpr double kTol = 1e-9;
   const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});
-  const TwoRegionFriction friction(0.1, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.1, 0.05, 2.5);
   StoppingOptions o;
   o.fractions = {0.5, 0.9};
   o.integrator = {1e-12, 1e-14};

@@ -20,6 +20,7 @@
 #include "oracles/single_harmonic.hpp"
 #include "selfalign/analysis/period_map.hpp"
 #include "selfalign/analysis/steady_state.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/design/fourier_design.hpp"
 #include "selfalign/profiles/fourier.hpp"
@@ -145,7 +146,7 @@ struct AffineCount final : MotionObserver {
 
 // |x, x' exact - integrated| after `duration` from `start`: the closed form against the slip
 // integrator at rtol 1e-13 (a second method: Dormand-Prince on the same ODE).
-double gap_to_integrator(const FourierProfile& profile, const TwoRegionFriction& friction,
+double gap_to_integrator(const FourierProfile& profile, const FieldFriction& friction,
                          const FrictionLaw& law, const ObjectState& start, double duration,
                          AffineCount& count) {
   ObjectState exact = start, integrated = start;
@@ -164,7 +165,7 @@ double gap_to_integrator(const FourierProfile& profile, const TwoRegionFriction&
 TEST(SmoothExact, TransitionRegionIsClosedFormForFourierProfiles) {
   constexpr double kGap = 1e-12;
   const FourierProfile profile(1.0, {0.035, 0.004}, {0.0, 0.0});
-  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 2.5);
   AffineCount count;
   for (const FrictionLaw& law : {FrictionLaw(1.0, 1.0), FrictionLaw(1.2, 1.0)}) {
     ASSERT_EQ(PeriodMap(profile, friction, law).method(), Method::exact);
@@ -182,7 +183,7 @@ TEST(SmoothExact, TransitionRegionAtResonanceIsClosedForm) {
   constexpr double kGap = 1e-12;
   const double two_pi = 6.283185307179586;
   const FourierProfile profile(1.0, {0.035, 0.004}, {0.0, 0.0});
-  const TwoRegionFriction friction(0.5, 0.05, 1 + two_pi * two_pi * 0.05);  // b = (2 pi)^2
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 1 + two_pi * two_pi * 0.05);  // b = (2 pi)^2
   AffineCount count;
   EXPECT_LT(gap_to_integrator(profile, friction, FrictionLaw(1.0, 1.0), {0, 0.45, 0}, 10.0,
                               count),
@@ -196,7 +197,7 @@ TEST(SmoothExact, TransitionRegionAtResonanceIsClosedForm) {
 // central finite differences (h = 1e-7: truncation O(h^2), rounding 1e-16 / 1e-7): 1e-6.
 TEST(SmoothExact, TransitionRegionMoreauOrderAndSaltation) {
   const FourierProfile profile(1.0, {0.035, 0.004}, {0.0, 0.0});
-  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 2.5);
   const FrictionLaw law(1.2, 1.0);
   const PeriodMap map(profile, friction, law);
   ASSERT_EQ(map.method(), Method::exact);

@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -48,7 +49,7 @@ TEST(SolverCrossChecks, FourierAcrossTheTransitionRegionClosedFormMatchesTheInte
     for (double& v : b) v *= scale;
     const FourierProfile profile(period, a, b);
     const double w = 0.01 + 0.1 * p(rng), c_mu = 1.2 + 3 * p(rng), x_mu = 0.5;
-    const TwoRegionFriction friction(x_mu, w, c_mu);
+    const FieldFriction friction = two_region_friction(x_mu, w, c_mu);
     const FrictionLaw law(1 + 0.5 * p(rng), 1.0);
     const ObjectState start{p(rng) * period, x_mu - 0.2 * w + 1.4 * w * p(rng), 0.3 * u(rng)};
     ObjectState exact = start, integrated = start;
@@ -78,7 +79,7 @@ TEST(SolverCrossChecks, ThreePhaseOnTwoRegionTablesExactMatchesTheIntegrator) {
       continue;
     }
     const double w = 0.01 + 0.1 * p(rng), c_mu = 1.2 + 3 * p(rng), x_mu = 0.5;
-    const TwoRegionFriction friction(x_mu, w, c_mu);
+    const FieldFriction friction = two_region_friction(x_mu, w, c_mu);
     const FrictionLaw law(1 + 0.5 * p(rng), 1.0);
     const ObjectState start{p(rng), x_mu - 0.3 * w + 1.6 * w * p(rng), 0.3 * u(rng)};
     const ExactSetup setup{*profile->piecewise_polynomial(), *friction.piecewise_affine(), law};

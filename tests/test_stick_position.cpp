@@ -23,19 +23,19 @@ struct StopPositions final : MotionObserver {
 }  // namespace
 
 TEST(StickPosition, MinimumIsEquationFortyOne) {
-  const TwoRegionFriction f(0.2, 0.05, 2.5);
-  EXPECT_NEAR(stick_position_min(f, 2.2), 0.2 + 0.05 * 1.2 / 1.5, 1e-15);
-  EXPECT_EQ(stick_position_min(f, 0.7), 0.2);      // sticks anywhere
-  EXPECT_TRUE(std::isinf(stick_position_min(f, 2.6)));  // beyond mu_2: never for good
+  const FieldFriction f = two_region_friction(0.2, 0.05, 2.5);
+  EXPECT_NEAR(stick_position_min(*f.two_region(), 2.2), 0.2 + 0.05 * 1.2 / 1.5, 1e-15);
+  EXPECT_EQ(stick_position_min(*f.two_region(), 0.7), 0.2);      // sticks anywhere
+  EXPECT_TRUE(std::isinf(stick_position_min(*f.two_region(), 2.6)));  // beyond mu_2: never for good
   EXPECT_TRUE(sticks_permanently(f, 2.2, 0.25));
   EXPECT_FALSE(sticks_permanently(f, 2.2, 0.2 + 0.04 - 1e-9));
 }
 
 TEST(StickPosition, MapMatchesExactSuccessiveStickPositionsFigureEighteen) {
   const ThreePhaseProfile profile({1.05, 0.084, 2.2, 0.9});
-  const TwoRegionFriction friction(0.3, 0.05, 2.5);
-  const StickPositionMap map(profile, friction);
-  const double x_stick_min = stick_position_min(friction, profile.peak_acceleration());
+  const FieldFriction friction = two_region_friction(0.3, 0.05, 2.5);
+  const StickPositionMap map(profile, *friction.two_region());
+  const double x_stick_min = stick_position_min(*friction.two_region(), profile.peak_acceleration());
   // eq. (60) = eq. (41): two closed forms of one position; rounding only.
   EXPECT_NEAR(map.fixed_point(), x_stick_min, 1e-12);
 
@@ -61,9 +61,9 @@ TEST(StickPosition, MapMatchesExactSuccessiveStickPositionsFigureEighteen) {
 
 TEST(StickPosition, AccumulationForEveryEntryIsTheMapAtXMu) {
   // Sect. 7.3: x_{n+1}(x_mu) < x_stick,min <=> every entry accumulates; check the basin bound.
-  const TwoRegionFriction friction(0.0, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.0, 0.05, 2.5);
   const ThreePhaseProfile accumulating({1.0, 0.084, 2.3, 1.3}), overshooting({1.0, 0.084, 1.8, 1.1});
-  const StickPositionMap a(accumulating, friction), o(overshooting, friction);
+  const StickPositionMap a(accumulating, *friction.two_region()), o(overshooting, *friction.two_region());
   EXPECT_EQ(a.accumulates_for_every_entry(), std::optional<bool>(true));
   EXPECT_LT(a(0.0), a.fixed_point());
   EXPECT_EQ(o.accumulates_for_every_entry(), std::optional<bool>(false));
@@ -89,17 +89,17 @@ TEST(StickPosition, EveryEntryConditionAppliesOnlyWhereItsDerivationHolds) {
       {{1.0, 0.01, 0.9, 0.8}, 0.05, 2.5, "<= 1"},          // held wherever it stops
   };
   for (const Case& c : outside) {
-    const TwoRegionFriction friction(0.008, c.width, c.c_mu);
-    const StickPositionMap map(ThreePhaseProfile(c.p), friction);
+    const FieldFriction friction = two_region_friction(0.008, c.width, c.c_mu);
+    const StickPositionMap map(ThreePhaseProfile(c.p), *friction.two_region());
     const EveryEntryAccumulation e = map.every_entry_accumulation();
     EXPECT_FALSE(e.applies) << c.reason;
     EXPECT_EQ(map.accumulates_for_every_entry(), std::nullopt) << c.reason;
     EXPECT_NE(e.reason.find(c.reason), std::string::npos) << e.reason;
   }
   // Inside the domain it is the paper's condition (Fig. 16 settings, Sect. 7.2).
-  const TwoRegionFriction friction(0.0, 0.05, 2.5);
-  const StickPositionMap upper(ThreePhaseProfile({1.0, 0.084, 2.3, 1.3}), friction);
-  const StickPositionMap lower(ThreePhaseProfile({1.0, 0.084, 1.8, 1.1}), friction);
+  const FieldFriction friction = two_region_friction(0.0, 0.05, 2.5);
+  const StickPositionMap upper(ThreePhaseProfile({1.0, 0.084, 2.3, 1.3}), *friction.two_region());
+  const StickPositionMap lower(ThreePhaseProfile({1.0, 0.084, 1.8, 1.1}), *friction.two_region());
   EXPECT_TRUE(upper.every_entry_accumulation().applies);
   EXPECT_TRUE(upper.every_entry_accumulation().reason.empty());
   EXPECT_EQ(upper.accumulates_for_every_entry(), upper(0.0) < upper.fixed_point());
@@ -112,7 +112,7 @@ namespace {
 // through [t0, t1]), from rest at x1 at t = 0. The look is formed as the solver forms its
 // switch times (n Δt + begin, Δt the segments' own period), so it lands on the switch.
 std::vector<double> rest_positions_at_t1(const ThreePhaseProfile& profile,
-                                         const TwoRegionFriction& friction, double x1, int n) {
+                                         const FieldFriction& friction, double x1, int n) {
   const PiecewisePolynomialProfile& pwc = *profile.piecewise_polynomial();
   const ExactSetup setup{pwc, *friction.piecewise_affine()};
   ExactState s = make_exact_state(setup, {0, x1, 0});
@@ -135,12 +135,12 @@ TEST(StickPosition, DiagonalStickPositionsContractByCosThetaCoshTheta) {
   // not cos θ: 0.46 per period. Second method: the exact event-driven solver.
   const ThreePhaseParameters p{1.0, 0.084, 2.45, 2.45};
   const ThreePhaseProfile profile(p);
-  const TwoRegionFriction friction(0.5, 0.05, 2.5);
-  const StickPositionMap map(profile, friction);
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 2.5);
+  const StickPositionMap map(profile, *friction.two_region());
   const double c1 = map.fixed_point();
-  EXPECT_NEAR(c1, stick_position_min(friction, 2.45), 1e-12);  // eq. (60) = eq. (41)
+  EXPECT_NEAR(c1, stick_position_min(*friction.two_region(), 2.45), 1e-12);  // eq. (60) = eq. (41)
   const ThreePhaseSolution& r = profile.solution();
-  const double omega = std::sqrt(friction.b1());
+  const double omega = std::sqrt(friction.two_region()->b1());
   const double lambda = std::cos(omega * (r.t2 - r.t1)) * std::cosh(omega * (r.t3 - r.t2));
   // One closed form evaluated twice: rounding only.
   EXPECT_NEAR(map.contraction_at_fixed_point(), lambda, 1e-12);

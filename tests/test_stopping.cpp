@@ -19,7 +19,7 @@ using namespace selfalign;
 namespace {
 // End position by brute force: Moreau time-stepping for a fixed number of periods (a second
 // method that knows nothing of eqs. 40, 59).
-double brute_force_end(const ThreePhaseProfile& profile, const TwoRegionFriction& friction,
+double brute_force_end(const ThreePhaseProfile& profile, const FieldFriction& friction,
                        ObjectState start, double h, int periods) {
   TimeSteppingState s = make_time_stepping_state(profile, start);
   advance_time_stepping(profile, friction, {h, 0.5}, s,
@@ -48,7 +48,7 @@ struct LowestAfter final : MotionObserver {
 
 TEST(Stopping, PermanentStickIsHeldForGood) {
   const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});
-  const TwoRegionFriction friction(0.1, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.1, 0.05, 2.5);
   const StoppingRun run = stopping_run(profile, friction, {0, 0, 0});
   ASSERT_EQ(run.kind, StopKind::permanent_stick);
   EXPECT_GE(friction.bound(run.end_position), profile.peak_acceleration());  // eq. (40)
@@ -64,7 +64,7 @@ TEST(Stopping, PermanentStickIsHeldForGood) {
 
 TEST(Stopping, AccumulationEndsAtStickPositionMin) {
   const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
-  const TwoRegionFriction friction(0.1, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.1, 0.05, 2.5);
   const StoppingRun run = stopping_run(profile, friction, {0, 0, 0});
   ASSERT_EQ(run.kind, StopKind::accumulation);
   EXPECT_TRUE(std::isinf(run.process_time));
@@ -89,7 +89,7 @@ TEST(Stopping, DiagonalAccumulatesLikeItsNeighbour) {
   // is accumulation, as for y3'' = y2'' - 1e-10; it was reported as a permanent stick once an
   // iterate rounded onto x_stick,min. The classification must not depend on rounding: both
   // accumulate, at x_stick,min, and reach each p in the same number of periods.
-  const TwoRegionFriction friction(0.5, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 2.5);
   const ThreePhaseProfile diagonal({1.0, 0.084, 2.45, 2.45});
   const ThreePhaseProfile neighbour({1.0, 0.084, 2.45, 2.4499999999});
   const StoppingRun d = stopping_run(diagonal, friction, {0, 0, 0});
@@ -98,7 +98,7 @@ TEST(Stopping, DiagonalAccumulatesLikeItsNeighbour) {
     EXPECT_EQ(run->kind, StopKind::accumulation);
     EXPECT_TRUE(std::isinf(run->process_time));
     // eq. (60) = eq. (41) for the same peak 2.45: two closed forms, rounding only.
-    EXPECT_NEAR(run->end_position, stick_position_min(friction, 2.45), 1e-12);
+    EXPECT_NEAR(run->end_position, stick_position_min(*friction.two_region(), 2.45), 1e-12);
   }
   EXPECT_EQ(d.periods_to_fraction, n.periods_to_fraction);
   // A second method: the exact solution over 60 periods creeps up to x_stick,min from below
@@ -123,7 +123,7 @@ TEST(Stopping, EndPositionsOfExactAndTimeSteppingAgreeWithinOrderH) {
   // Permanent stick: time-stepping's end position converges at O(h) (docs/time-stepping.md);
   // at h = 1e-5 the difference must be below C h with C = 10.
   const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});
-  const TwoRegionFriction friction(0.1, 0.05, 2.5);
+  const FieldFriction friction = two_region_friction(0.1, 0.05, 2.5);
   for (double x0 : {0.0, -0.02, -0.04}) {
     const StoppingRun run = stopping_run(profile, friction, {0, x0, 0});
     ASSERT_EQ(run.kind, StopKind::permanent_stick);
@@ -152,7 +152,7 @@ TEST(Positioning, SectionSevenTwoSettingsAgainstBruteForce) {
     ASSERT_TRUE(acc.reaches);
     ASSERT_TRUE(acc.all_stopped);
     EXPECT_EQ(acc.accumulates, e.accumulates);
-    const TwoRegionFriction friction(acc.x_mu, 0.05, 2.5);
+    const FieldFriction friction = two_region_friction(acc.x_mu, 0.05, 2.5);
     double lo = 1e300, hi = -1e300;
     for (double x0 : acc.entries) {
       const double end = brute_force_end(profile, friction, {0, x0, acc.steady.x_dot_0s}, h, 40);

@@ -49,7 +49,7 @@ double model_length(const SimulateModel& model, double x) {
 // x1, x2 = map(x1), ... [-] while below the fixed point and still moving (in floating point),
 // at most kMaxIterations applications; and for each p, the applications until
 // x >= x_mu + p (x_stick,min - x_mu) (null: not within them).
-json iterates_json(const StickPositionMap& map, const TwoRegionFriction& f, double x_stick_min,
+json iterates_json(const StickPositionMap& map, const TwoRegionTable& f, double x_stick_min,
                    double x1, const OutputUnits& u) {
   std::vector<double> x{x1};
   while (static_cast<int>(x.size()) <= kMaxIterations && x.back() < map.fixed_point()) {
@@ -77,7 +77,7 @@ json iterates_json(const StickPositionMap& map, const TwoRegionFriction& f, doub
 
 json accumulation_json(const SimulateModel& model, const StickPositionMap& map, double x1) {
   const OutputUnits u = model.output_units();
-  const TwoRegionFriction& f = two_region(model);
+  const TwoRegionTable& f = two_region(model);
   const double x_stick_min = stick_position_min(f, model.profile->peak_acceleration());
   json j = stopping_context_json(model, true);
   j["fixed_point"] = u.length(map.fixed_point());           // eq. (60)
@@ -153,7 +153,7 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
                            "only (static = kinetic, no Stribeck or viscous term): leave out "
                            "mu_static, mu_backward, stribeck_velocity, viscous; stop and accuracy "
                            "take any law");
-  const TwoRegionFriction& friction = two_region(model);
+  const TwoRegionTable& friction = two_region(model);
   const StickPositionMap map(three_phase_profile(model), friction);
   const OutputUnits u = model.output_units();
   const double x_mu = friction.x_mu();

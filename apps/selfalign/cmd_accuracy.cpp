@@ -100,7 +100,7 @@ void run_accuracy(const ConfigFlags& flags, const AccuracyFlags& f) {
   options.steady.integrator = options.stopping.integrator = model.options.integrator;
   // The two-region table is placed at x_mu = Δx (the paper's Sect. 7.1); a field stands where
   // its file puts it, and the entries are placed before its rise.
-  const TwoRegionFriction* two = model.friction->two_region();
+  const TwoRegionTable* two = model.friction->two_region();
   const PositioningAccuracy a =
       two ? positioning_accuracy(*model.profile, model.law, two->width(), two->c_mu(), options)
           : positioning_accuracy(*model.profile, model.law, *model.friction, options);

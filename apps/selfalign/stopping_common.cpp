@@ -43,8 +43,8 @@ SimulateModel stopping_model(const SimulateConfig& config, const std::string& co
   return build_simulate_model(c);
 }
 
-const TwoRegionFriction& two_region(const SimulateModel& model) {
-  const TwoRegionFriction* two = model.friction->two_region();
+const TwoRegionTable& two_region(const SimulateModel& model) {
+  const TwoRegionTable* two = model.friction->two_region();
   if (!two)  // stopping_model() builds the two-region table; anything else is a caller's error
     throw InvalidParameter("friction", "not two-region", "this analysis needs the two-region table");
   return *two;
@@ -55,7 +55,7 @@ nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu)
   nlohmann::json j;
   j["units"] = to_string(model.units);
   j["profile"] = model.profile->kind();
-  if (const TwoRegionFriction* f = model.friction->two_region()) {
+  if (const TwoRegionTable* f = model.friction->two_region()) {
     if (with_x_mu) j["x_mu"] = u.length(f->x_mu());
     j["width"] = u.length(f->width());
     j["c_mu"] = f->c_mu();

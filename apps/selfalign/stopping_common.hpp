@@ -36,7 +36,7 @@ SimulateModel stopping_model(const SimulateConfig& config, const std::string& co
                              bool field_allowed = false);
 
 /// The model's friction map, which stopping_model made two-region (commands without a field).
-const TwoRegionFriction& two_region(const SimulateModel& model);
+const TwoRegionTable& two_region(const SimulateModel& model);
 
 /// The unit system and the table's friction parameters of a report: "units", "profile",
 /// "x_mu" (omitted when `with_x_mu` is false), "width", "c_mu"; lengths in the run's units.

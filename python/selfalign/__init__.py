@@ -72,7 +72,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     TimeSteppingOptions,
     TimeSteppingState,
     Trajectory,
-    TwoRegionFriction,
+    TwoRegionTable,
     CoulombFriction,
     FrictionLaw,
     IntegratorOptions,
@@ -120,6 +120,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     sweep_accelerations,
     sweep_period,
     sweep_stroke,
+    two_region_friction,
     velocity_convergence,
     # robust design under uncertainty (docs/robust-design.md)
     Known,

@@ -388,7 +388,7 @@ def fig16(out_dir: str) -> Figure:
     for ax, (a2, a3) in zip(axes, ((2.3, 1.3), (1.8, 1.1))):
         profile = _three_phase(1.0, 0.084, a2, a3)
         acc = sa.positioning_accuracy(profile, WIDTH, C_MU)  # 100 entries, Sect. 7.1
-        friction = sa.TwoRegionFriction(acc.x_mu, WIDTH, C_MU)
+        friction = sa.two_region_friction(acc.x_mu, WIDTH, C_MU)
         for k, x0 in enumerate((acc.entries[10], acc.entries[60])):  # two of the entries
             tr = sa.simulate(profile, friction, sa.ObjectState(0, x0, acc.steady.x_dot_0s),
                              sa.SimulationOptions(duration=12.0, output_step=2e-3)).trajectory
@@ -482,9 +482,9 @@ def fig17(out_dir: str, progress: Progress = None, n: int = FIG17_CELLS,
 def fig18(out_dir: str) -> Figure:
     """Fig. 18: the stick-position map (59), the diagonal and the fixed point."""
     profile = _three_phase(1.05, 0.084, 2.2, 0.9)
-    friction = sa.TwoRegionFriction(0.0, WIDTH, C_MU)
-    m = sa.StickPositionMap(profile, friction)
-    x_stick_min = sa.stick_position_min(friction, profile.peak_acceleration)
+    table = sa.TwoRegionTable(0.0, WIDTH, C_MU)
+    m = sa.StickPositionMap(profile, table)
+    x_stick_min = sa.stick_position_min(table, profile.peak_acceleration)
     x = np.linspace(0.0, WIDTH, 400)
     x_next = m(x)
     basin = m.basin_lower_bound()

@@ -188,15 +188,53 @@ is the field's average over that window (eq. 7). Validated by FieldFriction.)doc
            [](const UniformFootprint& u) { return Repr("UniformFootprint")("width", u.width).str(); });
   def_record(uniform, field("width", &UniformFootprint::width));
 
+  py::class_<TwoRegionTable> table(m, "TwoRegionTable", R"doc(
+The parameters of the paper's two-region table (Sect. 3.3, eq. 9): x_mu, width w, c_mu, and
+b1, b2 of eq. (42). A value; the friction map is two_region_friction(x_mu, width, c_mu) (or
+FieldFriction(table)). StickPositionMap and stick_position_min take it.)doc");
+  table
+      .def(py::init<double, double, double>(), py::arg("x_mu"), py::arg("width"), py::arg("c_mu"),
+           R"doc(
+x_mu:  start of the high-friction region [-], finite
+width: object width w [-], > 0, with x_mu + w finite and w >= 1e-9 |x_mu|
+c_mu:  friction ratio mu_2/mu_1 [-], > 1, with (c_mu - 1)/w <= 1e12
+Raises InvalidParameter naming the offending argument.)doc")
+      .def_property_readonly("x_mu", &TwoRegionTable::x_mu, "start of the transition [-]")
+      .def_property_readonly("width", &TwoRegionTable::width, "object width w [-]")
+      .def_property_readonly("c_mu", &TwoRegionTable::c_mu, "mu_2/mu_1 [-]")
+      .def_property_readonly("b1", &TwoRegionTable::b1,
+                             "b_1 = (c_mu - 1)/w, the stiffness of the transition (eq. 42) [-]")
+      .def_property_readonly("b2", &TwoRegionTable::b2,
+                             "b_2 = (c_mu - 1) x_mu / w - 1 (eq. 42) [-]")
+      .def("__repr__", [](const TwoRegionTable& t) {
+        return Repr("TwoRegionTable")("x_mu", t.x_mu())("width", t.width())("c_mu", t.c_mu())
+            .str();
+      });
+  def_record(
+      table,
+      [](double x_mu, double width, double c_mu) { return TwoRegionTable(x_mu, width, c_mu); },
+      field("x_mu", &TwoRegionTable::x_mu), field("width", &TwoRegionTable::width),
+      field("c_mu", &TwoRegionTable::c_mu));
+
   py::class_<FieldFriction, FrictionMap> field_friction(m, "FieldFriction", R"doc(
 The friction level m(x) = the table's field averaged over the object's footprint (eq. 7):
 a point footprint gives m = field; a uniform footprint of width w the window average over
-[x - w, x], which for FrictionField.steps([x_mu], [1, c_mu]) is TwoRegionFriction(x_mu, w,
-c_mu). Piecewise affine (so the exact solver applies) for a point footprint, or a uniform one
+[x - w, x], which for FrictionField.steps([x_mu], [1, c_mu]) is the paper's two-region table
+(eq. 9; its named constructor two_region_friction(x_mu, w, c_mu) also carries the table's
+parameters, .two_region). Piecewise affine (so the exact solver applies) for a point footprint, or a uniform one
 on a step field; a uniform footprint on a field with ramps gives a piecewise-quadratic level
 (pieces() is None: time-stepping only).)doc");
   const auto make_field_friction = [](const FrictionField& field, const py::object& footprint) {
     return FieldFriction(field, footprint_from(footprint));
+  };
+  // Pickle state: the field, the footprint and the table it was named as (None for data).
+  const auto restore_field_friction = [](const FrictionField& field, const py::object& footprint,
+                                         const py::object& table) {
+    if (!table.is_none()) return FieldFriction(table.cast<TwoRegionTable>());
+    return FieldFriction(field, footprint_from(footprint));
+  };
+  const auto two_region = [](const FieldFriction& f) -> py::object {
+    return f.two_region() ? py::cast(*f.two_region()) : py::none();
   };
   const auto footprint = [](const FieldFriction& f) { return footprint_object(f.footprint()); };
   field_friction
@@ -206,15 +244,31 @@ field: a FrictionField; footprint: PointFootprint(), UniformFootprint(width) or 
 (uniform). Raises InvalidParameter for a width outside [1e-50, 1e50] or below 1e-9 max
 |position|, or a level that cannot be resolved (slopes above 1e12, ramps narrower than 1e-9
 |position| under a point footprint); TypeError for another footprint type.)doc")
+      .def(py::init<const TwoRegionTable&>(), py::arg("table"),
+           "The paper's table as the field it is (two_region_friction builds the same).")
       .def_property_readonly("field", &FieldFriction::field, "the table's FrictionField")
       .def_property_readonly("footprint", footprint,
                              "the object's footprint (PointFootprint or UniformFootprint)")
+      .def_property_readonly("two_region", two_region,
+                             "the TwoRegionTable it was built as (two_region_friction), else None")
       .def("__repr__", [](const FieldFriction& f) {
+        if (const TwoRegionTable* t = f.two_region())
+          return Repr("two_region_friction")("x_mu", t->x_mu())("width", t->width())(
+                     "c_mu", t->c_mu())
+              .str();
         return "<FieldFriction nodes=" + std::to_string(f.field().nodes().size()) +
                " footprint=" + footprint_repr(f.footprint()) + ">";
       });
-  def_record(field_friction, make_field_friction, field("field", &FieldFriction::field),
-             field("footprint", footprint));
+  def_record(field_friction, restore_field_friction, field("field", &FieldFriction::field),
+             field("footprint", footprint), field("two_region", two_region));
+
+  m.def("two_region_friction", &two_region_friction, py::arg("x_mu"), py::arg("width"),
+        py::arg("c_mu"), R"doc(
+The paper's two-region table (Sect. 3.3) as a FieldFriction: mu_1 for x < x_mu,
+mu_2 = c_mu mu_1 beyond x_mu + w, in between the width-averaged transition of eqs. (7)-(9):
+  m(x) = 1 + (c_mu - 1)/w * z,   z = min(max(x - x_mu, 0), w)
+x the object's leading edge [-], w its dimensionless width. Its .two_region is the
+TwoRegionTable(x_mu, width, c_mu). Raises InvalidParameter as TwoRegionTable does.)doc");
 }
 
 }  // namespace
@@ -291,7 +345,7 @@ object is held as long as |y''| <= static m(x); while slipping in direction sigm
   py::class_<FrictionMap>(m, "FrictionMap", R"doc(
 A friction law m(x) = mu_bar(x)/mu_1 >= 0 [-] (eqs. 7-9): in the dimensionless model
 (Sect. 3.2) the friction force lies in -m(x) Sign(x'); m = 1 on the low-friction table.
-Abstract: use UniformFriction, TwoRegionFriction or FieldFriction.)doc")
+Abstract: use UniformFriction or FieldFriction (the paper's table: two_region_friction).)doc")
       .def(
           "bound",
           [](const FrictionMap& f, const py::object& x) {
@@ -316,35 +370,6 @@ arrays 'begin', 'end', 'bound_at_begin', 'slope'; None when the map is not piece
       });
   def_record(uniform, [](double level) { return UniformFriction(level); },
              field("level", &UniformFriction::level));
-
-  py::class_<TwoRegionFriction, FrictionMap> two(m, "TwoRegionFriction", R"doc(
-The paper's two-region table (Sect. 3.3): mu_1 for x < x_mu, mu_2 = c_mu mu_1 beyond x_mu + w,
-and in between the width-averaged transition of eqs. (7)-(9):
-  m(x) = 1 + (c_mu - 1)/w * z,   z = min(max(x - x_mu, 0), w)
-x is the position of the object's leading edge [-], w its dimensionless width.)doc");
-  two
-      .def(py::init<double, double, double>(), py::arg("x_mu"), py::arg("width"), py::arg("c_mu"),
-           R"doc(
-x_mu:  start of the high-friction region [-], finite
-width: object width w [-], > 0
-c_mu:  friction ratio mu_2/mu_1 [-], > 1
-Raises InvalidParameter naming the offending argument.)doc")
-      .def_property_readonly("x_mu", &TwoRegionFriction::x_mu, "start of the transition [-]")
-      .def_property_readonly("width", &TwoRegionFriction::width, "object width w [-]")
-      .def_property_readonly("c_mu", &TwoRegionFriction::c_mu, "mu_2/mu_1 [-]")
-      .def_property_readonly("b1", &TwoRegionFriction::b1,
-                             "b_1 = (c_mu - 1)/w, the stiffness of the transition (eq. 42) [-]")
-      .def_property_readonly("b2", &TwoRegionFriction::b2,
-                             "b_2 = (c_mu - 1) x_mu / w - 1 (eq. 42) [-]")
-      .def("__repr__", [](const TwoRegionFriction& f) {
-        return Repr("TwoRegionFriction")("x_mu", f.x_mu())("width", f.width())("c_mu", f.c_mu())
-            .str();
-      });
-  def_record(
-      two,
-      [](double x_mu, double width, double c_mu) { return TwoRegionFriction(x_mu, width, c_mu); },
-      field("x_mu", &TwoRegionFriction::x_mu), field("width", &TwoRegionFriction::width),
-      field("c_mu", &TwoRegionFriction::c_mu));
 
   bind_friction_field(m);
 }

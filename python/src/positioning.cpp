@@ -115,7 +115,7 @@ GIL.)doc");
       py::kw_only(), py::arg("law") = FrictionLaw{}, py::call_guard<py::gil_scoped_release>(),
       R"doc(
 Sect. 7.1 on a friction level where it stands (a FieldFriction of steps, or ramps under a point
-footprint; a TwoRegionFriction too): x_mu is the level's rise X, the entries lie in
+footprint; two_region_friction too): x_mu is the level's rise X, the entries lie in
 [X - Δx - v̄Δt, X - Δx], overshoots are end - X and x_stick_min is eq. (41) on the level's
 pieces. The level must be 1 before its rise (the part arrives in the uniform table's steady
 state). Raises InvalidParameter naming "friction" otherwise. Runs without the GIL.)doc");

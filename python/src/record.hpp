@@ -20,9 +20,9 @@
 // read by a getter (member function or lambda) names a setter, field(name, get, set), set a
 // data member or a callable (T&, value). Classes with invariants instead name a factory,
 // called with the fields' values in order (their types decoded from its parameters):
-//   def_record(cls, [](double x_mu, double w, double c) { return TwoRegionFriction(x_mu, w, c); },
-//              field("x_mu", &TwoRegionFriction::x_mu), field("width", &TwoRegionFriction::width),
-//              field("c_mu", &TwoRegionFriction::c_mu));
+//   def_record(cls, [](double x_mu, double w, double c) { return TwoRegionTable(x_mu, w, c); },
+//              field("x_mu", &TwoRegionTable::x_mu), field("width", &TwoRegionTable::width),
+//              field("c_mu", &TwoRegionTable::c_mu));
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

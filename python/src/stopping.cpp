@@ -25,10 +25,11 @@ void bind_stick_position(py::module_& m) {
       "eq. (40): True where an object at rest at x [-] is held by friction whatever the table "
       "does, i.e. m(x) >= max |y''| (bool, or a bool ndarray shaped like x).");
   m.def("stick_position_min",
-        py::overload_cast<const TwoRegionFriction&, double>(&stick_position_min),
-        py::arg("friction"),
+        py::overload_cast<const TwoRegionTable&, double>(&stick_position_min),
+        py::arg("table"),
         py::arg("peak_acceleration"), R"doc(
-eq. (41) [-]: x_stick,min = x_mu + w (max|y''| - 1)/(c_mu - 1), the smallest x >= x_mu at
+eq. (41) [-] on the paper's table (a TwoRegionTable; a friction map built by
+two_region_friction gives its own as .two_region): x_stick,min = x_mu + w (max|y''| - 1)/(c_mu - 1), the smallest x >= x_mu at
 which eq. (40) holds; x_mu when the peak acceleration is <= 1, +inf when it exceeds c_mu (the
 object never stops for good).)doc");
 
@@ -40,8 +41,10 @@ with fixed point c1 (eq. 60) and slope cos θ there (docs/accumulation.md). Call
 works elementwise on floats and ndarrays. next_stick_position adds the slide back that follows
 a stop where friction cannot hold the object (m < a3; on the diagonal a3 = a2 at every stop
 below x_stick,min).)doc")
-      .def(py::init<const ThreePhaseProfile&, const TwoRegionFriction&>(), py::arg("profile"),
-           py::arg("friction"))
+      .def(py::init<const ThreePhaseProfile&, const TwoRegionTable&>(), py::arg("profile"),
+           py::arg("table"),
+           "profile: the three-phase table motion; table: the paper's TwoRegionTable (a map "
+           "built by two_region_friction gives its own as .two_region).")
       .def(
           "__call__",
           [](const StickPositionMap& map, const py::object& x_n) {
@@ -185,9 +188,6 @@ void bind_stopping_run(py::module_& m) {
       "stopping_run",
       [](const TableProfile& profile, const FrictionMap& friction, const ObjectState& start,
          const StoppingOptions& options, const FrictionLaw& law) {
-        if (const TwoRegionFriction* two = friction.two_region();
-            two && law.is_unit())
-          return stopping_run(profile, *two, start, options);
         return stopping_run(profile, friction, law, start, options);
       },
       py::arg("profile"), py::arg("friction"), py::arg("start"),

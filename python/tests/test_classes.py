@@ -135,7 +135,7 @@ def test_every_class_under_every_protocol_round_trips_or_refuses():
         import selfalign as sa
         P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
         others = {"PeriodMap": sa.PeriodMap(P),
-                  "StickPositionMap": sa.StickPositionMap(P, sa.TwoRegionFriction(0.5, 0.05, 2.5))}
+                  "StickPositionMap": sa.StickPositionMap(P, sa.TwoRegionTable(0.5, 0.05, 2.5))}
         for cls in bound_classes():
             values = ([m for m in cls.__members__.values()] if hasattr(cls, "__members__")
                       else [others[cls.__name__]] if cls.__name__ in others else [])

@@ -25,7 +25,7 @@ def test_design_meets_limits_and_replays():
     assert abs(d.end_position - req.distance) <= d.error_band + 1e-12
     scales = sa.Scales(req.width, req.mu, req.gravity)
     profile = sa.ThreePhaseProfile(d.dimensionless)
-    friction = sa.TwoRegionFriction(d.x_mu_dimensionless, 1.0, req.c_mu)
+    friction = sa.two_region_friction(d.x_mu_dimensionless, 1.0, req.c_mu)
     t_p = scales.time_from_si(d.process_time)
     run = sa.simulate(profile, friction, sa.ObjectState(),
                       sa.SimulationOptions(duration=t_p + 10 * profile.period,

@@ -14,7 +14,7 @@ def test_invalid_parameter_is_a_value_error():
 
 def test_negative_width_names_the_width():
     with pytest.raises(sa.InvalidParameter) as info:
-        sa.TwoRegionFriction(x_mu=0.5, width=-1.0, c_mu=2.5)
+        sa.two_region_friction(x_mu=0.5, width=-1.0, c_mu=2.5)
     e = info.value
     assert (e.name, e.value, e.allowed) == ("width", "-1", "must be > 0")
     assert str(e) == "invalid width = -1: must be > 0"
@@ -23,14 +23,14 @@ def test_negative_width_names_the_width():
 @pytest.mark.parametrize("width", [0.0, -0.05])
 def test_width_must_be_positive(width):
     with pytest.raises(sa.InvalidParameter) as info:
-        sa.TwoRegionFriction(0.5, width, 2.5)
+        sa.two_region_friction(0.5, width, 2.5)
     assert info.value.name == "width"
 
 
 @pytest.mark.parametrize("c_mu", [1.0, 0.5])
 def test_friction_ratio_must_exceed_one(c_mu):
     with pytest.raises(sa.InvalidParameter) as info:
-        sa.TwoRegionFriction(0.5, 0.05, c_mu)
+        sa.two_region_friction(0.5, 0.05, c_mu)
     assert info.value.name == "c_mu"
     assert "1" in info.value.allowed
 
@@ -64,7 +64,7 @@ def test_exact_request_on_a_sloped_friction_map_is_exact_for_a_fourier_profile()
     # Since issue 11 Fourier profiles are exact on piecewise-constant levels and across the
     # transition region's slope too (harmonic-by-harmonic closed form), no longer refused.
     profile = sa.FourierProfile(1.0, [0.0], [0.05])
-    r = sa.simulate(profile, sa.TwoRegionFriction(0.5, 0.05, 2.5),
+    r = sa.simulate(profile, sa.two_region_friction(0.5, 0.05, 2.5),
                     options=sa.SimulationOptions(method="exact", duration=2.0))
     assert r.method == sa.Method.exact
     assert r.integrator.steps == 0
@@ -114,7 +114,7 @@ def test_nan_and_huge_ints_are_refused_naming_the_argument():
 def test_exact_state_is_read_only_and_checked():
     # Issue 9, D03: setting ExactState.segment from Python crashed the solver.
     profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
-    friction = sa.TwoRegionFriction(0.5, 0.05, 2.5)
+    friction = sa.two_region_friction(0.5, 0.05, 2.5)
     state = sa.make_exact_state(profile, friction)
     for attribute in ("segment", "period_index", "object"):
         with pytest.raises(AttributeError):
@@ -126,7 +126,7 @@ def test_exact_state_is_read_only_and_checked():
 def test_oversized_requests_are_refused_before_allocating():
     # Issue 9, D11: bad_alloc / vector::reserve messages, or minutes of work.
     profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
-    friction = sa.TwoRegionFriction(0.5, 0.05, 2.5)
+    friction = sa.two_region_friction(0.5, 0.05, 2.5)
     cases = ((lambda: sa.simulate(profile, friction,
                                   options=sa.SimulationOptions(duration=1e308)), "duration"),
              (lambda: sa.simulate(profile, friction,

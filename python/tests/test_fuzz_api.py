@@ -46,7 +46,7 @@ PRELUDE = ("import copy, math, pickle, numpy as np, selfalign as sa; nan, inf = 
            "P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3); "
            "Q = sa.PiecewiseConstantProfile.from_accelerations([0.3, 0.4, 0.3], [0.0, -3.0, 4.0]); "
            "R = sa.FourierProfile(1.0, [0.04], [0.0]); "
-           "F = sa.TwoRegionFriction(0.5, 0.05, 2.5); U = sa.UniformFriction()")
+           "F = sa.two_region_friction(0.5, 0.05, 2.5); U = sa.UniformFriction()")
 
 INTERNALS = ["std::", "vector::", "bad_alloc", "bad_array_new_length", "basic_string", "_M_",
              "Unable to cast", "json.exception", "terminate called", "nlohmann", "tbb::",
@@ -73,10 +73,13 @@ AR = lambda *valid, big=(): (list(valid), BAD_ARRAY, list(big))  # noqa: E731
 
 PROFILES = (["P", "Q"], ["R", "None", "F", "sa.ThreePhaseParameters(1, 0.084, 2.3, 1.3)", "1"], [])
 TPROFILES = (["P"], ["Q", "R", "None", "'P'"], [])
-FRICTIONS = (["F", "U"], ["None", "P", "sa.TwoRegionFriction(0.5, 5e-324, 2.5)",
-                          "sa.TwoRegionFriction(1e308, 0.05, 2.5)", "sa.UniformFriction(1e308)"], [])
-TWO_REGION = (["F"], ["U", "None", "sa.TwoRegionFriction(0.5, 5e-324, 2.5)",
-                      "sa.TwoRegionFriction(0.5, 0.05, 1e308)", "sa.TwoRegionFriction(-1e308, 1e308, 3e16)"], [])
+FRICTIONS = (["F", "U"], ["None", "P", "sa.two_region_friction(0.5, 5e-324, 2.5)",
+                          "sa.two_region_friction(1e308, 0.05, 2.5)", "sa.UniformFriction(1e308)"], [])
+TWO_REGION = (["F"], ["U", "None", "sa.two_region_friction(0.5, 5e-324, 2.5)",
+                      "sa.two_region_friction(0.5, 0.05, 1e308)", "sa.two_region_friction(-1e308, 1e308, 3e16)"], [])
+TABLE = (["F.two_region", "sa.TwoRegionTable(0.5, 0.05, 2.5)"],
+         ["U", "F", "None", "sa.TwoRegionTable(0.5, 5e-324, 2.5)", "sa.TwoRegionTable(0.5, 0.05, 1e308)",
+          "sa.TwoRegionTable(-1e308, 1e308, 3e16)", "sa.TwoRegionTable(1e51, 1e43, 2.5)"], [])
 THREADS = IN("0", "1", "2", big=["10**9", "2**31 - 1"])
 PROGRESS = (["None", "lambda done, total: None"], BAD_CALLBACK + [RAISING_CALLBACK], [])
 METHOD = (["'exact'", "'time-stepping'", "sa.Method.exact"],
@@ -99,7 +102,7 @@ CATALOGUE = [
       "value": (["1.0", "[1.0, 2.0]"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
     ("result = sa.UniformFriction({level}).bound({x})",
      {"level": FL("1.0"), "x": (["0.3", "[0.0, 1.0]"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
-    ("f = sa.TwoRegionFriction({x_mu}, {width}, {c_mu}); result = (f.bound({x}), f.pieces(), f.b1, f.b2)",
+    ("f = sa.two_region_friction({x_mu}, {width}, {c_mu}); result = (f.bound({x}), f.pieces(), f.two_region.b1, f.two_region.b2)",
      {"x_mu": FL("0.5"), "width": FL("0.05"), "c_mu": FL("2.5"),
       "x": (["0.52", "np.linspace(0, 1, 5)"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
     ("result = sa.solve_three_phase(sa.ThreePhaseParameters({period}, {stroke}, {a2}, {a3}))",
@@ -195,13 +198,13 @@ CATALOGUE = [
      {"family": (["sa.ThreePhaseFamily(2.3, 1.3)", "sa.ScaledShapeFamily.paper_like()",
                   "sa.ScaledFourierFamily([0.04], [0.0])"], ["sa.ThreePhaseFamily(0.0, 1.3)"], []),
       "period": FL("1.0"), "stroke": FL("0.084")}, "none"),
-    ("result = (sa.sticks_permanently({friction}, {peak}, {x}), sa.stick_position_min({friction}, {peak}))",
-     {"friction": TWO_REGION, "peak": FL("2.3"), "x": (["0.6", "[0.5, 0.6]"], BAD_FLOAT + BAD_ARRAY, [])},
+    ("result = (sa.sticks_permanently({friction}, {peak}, {x}), sa.stick_position_min({table}, {peak}))",
+     {"friction": TWO_REGION, "table": TABLE, "peak": FL("2.3"), "x": (["0.6", "[0.5, 0.6]"], BAD_FLOAT + BAD_ARRAY, [])},
      "finite_or_inf_if_finite_inputs"),
-    ("m = sa.StickPositionMap({profile}, {friction}); result = (m({x}), m.fixed_point(), "
+    ("m = sa.StickPositionMap({profile}, {table}); result = (m({x}), m.fixed_point(), "
      "m.slope_at_fixed_point(), m.basin_lower_bound(), m.accumulates_for_every_entry(), "
      "m.proves_accumulation_from({x1}), m.slip_duration({x}))",
-     {"profile": TPROFILES, "friction": TWO_REGION,
+     {"profile": TPROFILES, "table": TABLE,
       "x": (["0.52", "np.linspace(0.5, 0.55, 4)"], BAD_FLOAT + BAD_ARRAY, []), "x1": FL("0.52")},
      "finite_if_finite_inputs"),
     ("result = sa.stopping_run({profile}, {friction}, sa.ObjectState({t0}, {x0}, {v0}), "
@@ -353,7 +356,7 @@ VALID_BY_TYPE = {
 }
 VALID_BY_CLASS = {  # classes without a default constructor, or an example that is cheap
     "TableProfile": "P", "ThreePhaseProfile": "P", "FourierProfile": "R",
-    "PiecewisePolynomialProfile": "Q", "FrictionMap": "F", "TwoRegionFriction": "F",
+    "PiecewisePolynomialProfile": "Q", "FrictionMap": "F", "TwoRegionTable": "F.two_region",
     "AccelerationSamples": "sa.AccelerationSamples([0.0, 0.5, 1.0], [1.0, -1.0, 0.0])",
     "ExactState": "sa.make_exact_state(P, F)", "TimeSteppingState": "sa.make_time_stepping_state(P)",
     "PeriodMap": "sa.PeriodMap(P)", "ProfileFamily": "sa.ThreePhaseFamily(2.3, 1.3)",
@@ -495,8 +498,8 @@ CORPUS = [
     ("result = sa.simulate(P, F, options=sa.SimulationOptions(method=sa.Method(5), duration=1.0))", "simulation"),
     ("result = sa.make_sampled_profile(sa.AccelerationSamples([0.0, 0.5, 1.0], [1.0, -1.0, 0.0]), "
      "sa.Interpolation(7)).sample(0.3)", "finite_if_finite_inputs"),
-    ("result = sa.TwoRegionFriction(0.5, -1.0, 2.5)", "none"),
-    ("result = sa.TwoRegionFriction('a', 1, 2)", "none"),
+    ("result = sa.two_region_friction(0.5, -1.0, 2.5)", "none"),
+    ("result = sa.two_region_friction('a', 1, 2)", "none"),
     ("result = sa.sweep_accelerations(1.0, 0.084, [2.0, 3.0], [1.5], progress=lambda done, total: 1 / 0)", "sweep"),
     ("result = sa.velocity_convergence(P, sa.ConvergenceOptions(v2=-1e308, duration=2.0))", "convergence"),
     ("result = sa.floquet_multipliers(P, sa.FloquetOptions(fd_step=1e308))", "floquet"),

@@ -108,7 +108,7 @@ def test_steady_velocity_tends_to_the_jump_profiles_like_one_over_jerk():
 
 def test_step_field_under_a_uniform_footprint_is_the_two_region_table():
     field = sa.FrictionField.steps([0.5], [1.0, 2.5])
-    two = sa.TwoRegionFriction(0.5, 0.05, 2.5)
+    two = sa.two_region_friction(0.5, 0.05, 2.5)
     x = np.linspace(0.3, 0.7, 40_001)
     for footprint in (0.05, sa.UniformFootprint(0.05)):
         friction = sa.FieldFriction(field, footprint)
@@ -156,7 +156,7 @@ def test_stopping_on_a_field_is_the_stop_on_the_two_region_table():
     start = sa.ObjectState(0.0, 0.3, 0.0)
     field = sa.FieldFriction(sa.FrictionField.steps([0.5], [1.0, 2.5]), 0.05)
     on_field = sa.stopping_run(profile, field, start, law=law)
-    on_two = sa.stopping_run(profile, sa.TwoRegionFriction(0.5, 0.05, 2.5), start, law=law)
+    on_two = sa.stopping_run(profile, sa.two_region_friction(0.5, 0.05, 2.5), start, law=law)
     assert on_field.kind == sa.StopKind.permanent_stick
     assert on_field.end_position == on_two.end_position
     # eq. (40) with the static coefficient: static m(x) >= max|y''| = 3 from
@@ -215,11 +215,11 @@ def test_period_map_integrates_what_the_exact_solvers_cannot_take():
     # A Fourier profile is exact on the transition region's slope too (issue 11); a Stribeck
     # law is not: there the map takes the slip integrator (no arcs, no step).
     period_map = sa.PeriodMap(sa.FourierProfile(1.0, [0.05], [0.0]),
-                              sa.TwoRegionFriction(0.5, 0.05, 2.5), steps_per_period=200)
+                              sa.two_region_friction(0.5, 0.05, 2.5), steps_per_period=200)
     assert period_map.method == sa.Method.exact
     assert len(period_map.arcs(0.49, 0.05)) > 0
     stribeck = sa.PeriodMap(sa.FourierProfile(1.0, [0.05], [0.0]),
-                            sa.TwoRegionFriction(0.5, 0.05, 2.5),
+                            sa.two_region_friction(0.5, 0.05, 2.5),
                             sa.FrictionLaw(1.2, 1.0).with_stribeck(0.01), steps_per_period=200)
     assert stribeck.method == sa.Method.integrator
     assert stribeck.step == 0.0

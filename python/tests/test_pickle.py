@@ -58,7 +58,7 @@ EXAMPLES = {
     "Scales": lambda: sa.Scales(0.02, 0.25, gravity=9.7),
     "FrictionLaw": lambda: STRIBECK,
     "UniformFriction": lambda: sa.UniformFriction(1.5),
-    "TwoRegionFriction": lambda: sa.TwoRegionFriction(0.1, 0.5, 2.5),
+    "TwoRegionTable": lambda: sa.TwoRegionTable(0.1, 0.5, 2.5),
     "FrictionField": lambda: FIELD,
     "PointFootprint": lambda: sa.PointFootprint(),
     "UniformFootprint": lambda: sa.UniformFootprint(0.3),
@@ -89,7 +89,7 @@ EXAMPLES = {
         method="time-stepping", duration=3.5, step=2e-4, theta=0.75, output_step=0.01,
         record=False, integrator=sa.IntegratorOptions(relative_tolerance=1e-7)),
     "SimulationResult": lambda: sa.simulate(  # shorter than a period: NaN mean velocity
-        PROFILE, sa.TwoRegionFriction(0.1, 0.5, 2.5), sa.ObjectState(0.0, 0.05, 0.1),
+        PROFILE, sa.two_region_friction(0.1, 0.5, 2.5), sa.ObjectState(0.0, 0.05, 0.1),
         sa.SimulationOptions(duration=0.6)),
     "ExactState": _exact_state,
     "TimeSteppingOptions": lambda: sa.TimeSteppingOptions(step=1e-3, theta=1.0),
@@ -112,7 +112,7 @@ EXAMPLES = {
                                                   integrator=sa.IntegratorOptions(
                                                       relative_tolerance=1e-9)),
     "StoppingRun": lambda: sa.stopping_run(  # not_stopped: NaN end position and times
-        PROFILE, sa.TwoRegionFriction(5.0, 0.5, 2.5), sa.ObjectState(0.0, 0.0, 0.0),
+        PROFILE, sa.two_region_friction(5.0, 0.5, 2.5), sa.ObjectState(0.0, 0.0, 0.0),
         sa.StoppingOptions(max_periods=3)),
     "PositioningOptions": lambda: sa.PositioningOptions(
         entries=7, stopping=sa.StoppingOptions(max_periods=30), stop_at_first_failure=True,
@@ -321,7 +321,7 @@ def test_equality_nan_exactness_and_other_types():
     assert sa.ObjectState(0.1 + 0.2, 0.0, 0.0) != sa.ObjectState(0.3, 0.0, 0.0)
     assert sa.ObjectState().__eq__(sa.TableState()) is NotImplemented
     assert sa.ObjectState() != sa.TableState() and sa.ObjectState() != (0.0, 0.0, 0.0)
-    assert sa.UniformFriction(1.0) != sa.TwoRegionFriction(0.0, 0.5, 2.0)
+    assert sa.UniformFriction(1.0) != sa.two_region_friction(0.0, 0.5, 2.0)
     assert sa.FrictionLaw(1.0, 1.0) == sa.FrictionLaw()  # the same law however spelled
     assert sa.FrictionLaw(1.2, 1.0) != sa.FrictionLaw(1.2, 1.0).with_viscous(0.1)
     assert sa.UniformFootprint(0.2) == sa.UniformFootprint(0.2) != sa.PointFootprint()
@@ -376,7 +376,7 @@ def test_every_class_is_covered_or_listed():
 
 def test_types_without_value_semantics_refuse_pickling():
     for x in (sa.PeriodMap(PROFILE),
-              sa.StickPositionMap(PROFILE, sa.TwoRegionFriction(0.1, 0.05, 4.0))):
+              sa.StickPositionMap(PROFILE, sa.TwoRegionTable(0.1, 0.05, 4.0))):
         with pytest.raises(TypeError):
             pickle.dumps(x)
 
@@ -442,13 +442,13 @@ def test_option_reprs_evaluate_back_to_equal_options():
     for name in ("ActuatorLimits", "OptimizeOptions", "SimulationOptions", "SteadyStateOptions",
                  "ConvergenceOptions", "TimeSteppingOptions", "ThreePhaseParameters",
                  "JerkLimitedThreePhaseParameters", "ObjectState", "TableState", "Scales",
-                 "UniformFriction", "TwoRegionFriction", "UniformFootprint", "PointFootprint"):
+                 "UniformFriction", "TwoRegionTable", "UniformFootprint", "PointFootprint"):
         x = example(name)
         again = eval(repr(x), vars(sa))
         assert type(again) is type(x) and repr(again) == repr(x), name
     for name in ("ActuatorLimits", "ThreePhaseParameters", "JerkLimitedThreePhaseParameters",
                  "ObjectState", "TableState", "Scales", "UniformFriction",
-                 "TwoRegionFriction", "UniformFootprint", "PointFootprint"):
+                 "TwoRegionTable", "UniformFootprint", "PointFootprint"):
         assert eval(repr(example(name)), vars(sa)) == example(name), name
     law = sa.FrictionLaw(1.2, 1.0, 0.9)
     assert eval(repr(law), vars(sa)) == law

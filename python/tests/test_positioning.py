@@ -28,9 +28,9 @@ def test_positioning_accuracy_is_eq_39(case1_profile):
     dx_d = (overshoot.max() - overshoot.min()) / 2  # eq. (39)
     assert acc.dx_d == pytest.approx(dx_d, abs=CLOSED_FORM_TOL)
     assert acc.x_d == pytest.approx(acc.x_mu + overshoot.min() + dx_d, abs=CLOSED_FORM_TOL)
-    friction = sa.TwoRegionFriction(acc.x_mu, W, C_MU)
+    friction = sa.two_region_friction(acc.x_mu, W, C_MU)
     assert acc.x_stick_min == pytest.approx(
-        sa.stick_position_min(friction, case1_profile.peak_acceleration), rel=CLOSED_FORM_TOL)
+        sa.stick_position_min(friction.two_region, case1_profile.peak_acceleration), rel=CLOSED_FORM_TOL)
     assert acc.accumulating_entries == sum(r.kind == sa.StopKind.accumulation for r in acc.runs)
 
 

@@ -210,7 +210,7 @@ def _slip_slip_limit(out):
 
 
 def _friction(out):
-    f = sa.TwoRegionFriction(0.3, 0.05, 2.5)
+    f = sa.two_region_friction(0.3, 0.05, 2.5)
     x = np.array([0.2, 0.3, 0.31, 0.325, 0.35, 0.4])
     expected = 1 + 1.5 * np.clip(x - 0.3, 0, 0.05) / 0.05  # eqs. (7)-(9)
     return np.abs(f.bound(x) - expected).max() < EXACT_TOL \
@@ -218,9 +218,9 @@ def _friction(out):
 
 
 def _stick_min(out):
-    f = sa.TwoRegionFriction(0.3, 0.05, 2.5)
-    return abs(sa.stick_position_min(f, 2.2) - _x_stick_min(0.3, 0.05, 2.5, 2.2)) < EXACT_TOL \
-        and math.isinf(sa.stick_position_min(f, 2.6))
+    f = sa.two_region_friction(0.3, 0.05, 2.5)
+    return abs(sa.stick_position_min(f.two_region, 2.2) - _x_stick_min(0.3, 0.05, 2.5, 2.2)) < EXACT_TOL \
+        and math.isinf(sa.stick_position_min(f.two_region, 2.6))
 
 
 def _dx_d(out):
@@ -233,7 +233,7 @@ def _dx_d(out):
 def _ts_end_positions(a2, a3, entries, periods=8):
     profile = sa.ThreePhaseProfile(1.0, 0.084, a2, a3)
     acc = sa.positioning_accuracy(profile, 0.05, 2.5, sa.PositioningOptions(entries=entries))
-    friction = sa.TwoRegionFriction(acc.x_mu, 0.05, 2.5)
+    friction = sa.two_region_friction(acc.x_mu, 0.05, 2.5)
     options = sa.SimulationOptions(method="time-stepping", step=TS_STEP, duration=periods,
                                    record=False)
     ends = [sa.simulate(profile, friction, sa.ObjectState(0, float(x0), acc.steady.x_dot_0s),
@@ -266,7 +266,7 @@ def _fig17_zero(out):
 
 def _fixed_point(out):
     profile = sa.ThreePhaseProfile(1.05, 0.084, 2.2, 0.9)
-    fixed = sa.StickPositionMap(profile, sa.TwoRegionFriction(0.0, 0.05, 2.5)).fixed_point()
+    fixed = sa.StickPositionMap(profile, sa.TwoRegionTable(0.0, 0.05, 2.5)).fixed_point()
     t21 = profile.solution.t2 - profile.solution.t1
     return abs(fixed - _x_stick_min(0.0, 0.05, 2.5, 2.2)) < EXACT_TOL \
         and abs(_next_stop(fixed, 2.2, 0.9, 0.05, 2.5, 0.0, t21) - fixed) < EXACT_TOL
@@ -275,7 +275,7 @@ def _fixed_point(out):
 def _map(out):
     """From rest at x_n at t = 0 (stuck through [t0, t1]) the exact solver's next stop."""
     profile = sa.ThreePhaseProfile(1.05, 0.084, 2.2, 0.9)
-    friction = sa.TwoRegionFriction(0.0, 0.05, 2.5)
+    friction = sa.two_region_friction(0.0, 0.05, 2.5)
     t21 = profile.solution.t2 - profile.solution.t1
     for x_n in (0.01, 0.02, 0.03):
         tr = sa.simulate(profile, friction, sa.ObjectState(0, x_n, 0),
@@ -289,7 +289,7 @@ def _map(out):
 def _accumulation(out):
     profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
     acc = sa.positioning_accuracy(profile, 0.05, 2.5, sa.PositioningOptions(entries=1))
-    friction = sa.TwoRegionFriction(acc.x_mu, 0.05, 2.5)
+    friction = sa.two_region_friction(acc.x_mu, 0.05, 2.5)
     tr = sa.simulate(profile, friction, sa.ObjectState(0, float(acc.entries[0]),
                                                        acc.steady.x_dot_0s),
                      sa.SimulationOptions(duration=12.0, output_step=1.0)).trajectory
@@ -301,7 +301,7 @@ def _accumulation(out):
 def _stays(out):
     profile = sa.ThreePhaseProfile(1.0, 0.084, 2.45, 0.95)
     acc = sa.positioning_accuracy(profile, 0.05, 2.5, sa.PositioningOptions(entries=4))
-    friction = sa.TwoRegionFriction(acc.x_mu, 0.05, 2.5)
+    friction = sa.two_region_friction(acc.x_mu, 0.05, 2.5)
     for x0 in acc.entries:
         x = sa.simulate(profile, friction, sa.ObjectState(0, float(x0), acc.steady.x_dot_0s),
                         sa.SimulationOptions(duration=8.0, output_step=1e-3)).trajectory.x
@@ -332,7 +332,7 @@ def _periods(out):
         acc = sa.positioning_accuracy(profile, 0.05, 2.5, sa.PositioningOptions(
             entries=figures.FIG17_ENTRIES, stopping=sa.StoppingOptions(max_periods=300)))
         target = _x_stick_min(acc.x_mu, 0.05, 2.5, max(a2, a3))
-        friction = sa.TwoRegionFriction(acc.x_mu, 0.05, 2.5)
+        friction = sa.two_region_friction(acc.x_mu, 0.05, 2.5)
         longest = [0, 0]
         for x0 in acc.entries:
             tr = sa.simulate(profile, friction, sa.ObjectState(0, float(x0), acc.steady.x_dot_0s),
@@ -358,7 +358,7 @@ def _always(out):
     t21 = profile.solution.t2 - profile.solution.t1
     assert _next_stop(acc.x_mu, a2, a3, w, c_mu, acc.x_mu, t21) < target  # the condition holds
     assert math.sqrt((c_mu - 1) / w) * t21 < math.pi  # eq. (59) applies
-    friction = sa.TwoRegionFriction(acc.x_mu, w, c_mu)
+    friction = sa.two_region_friction(acc.x_mu, w, c_mu)
     options = sa.SimulationOptions(method="time-stepping", step=TS_STEP, duration=6 * period,
                                    record=False)
     ends = np.array([sa.simulate(profile, friction,

@@ -83,7 +83,7 @@ def test_summary_only_run_records_nothing(case1_profile):
 
 
 def test_exact_and_time_stepping_agree(case1_profile):
-    friction = sa.TwoRegionFriction(0.3, 0.05, 2.5)
+    friction = sa.two_region_friction(0.3, 0.05, 2.5)
     exact = sa.simulate(case1_profile, friction, options=sa.SimulationOptions(duration=6.0))
     stepped = sa.simulate(case1_profile, friction,
                           options=sa.SimulationOptions(method="time-stepping", duration=6.0,
@@ -109,7 +109,7 @@ def test_time_stepping_state_matches_simulate(case1_profile):
 
 
 def test_exact_state_matches_simulate(case1_profile):
-    friction = sa.TwoRegionFriction(0.2, 0.05, 2.5)
+    friction = sa.two_region_friction(0.2, 0.05, 2.5)
     state = sa.make_exact_state(case1_profile, friction, sa.ObjectState(0.0, 0.0, 0.0))
     arcs = sa.advance_exact(case1_profile, friction, state, 5.0)
     assert arcs > 0 and state.object.t == 5.0
@@ -118,7 +118,7 @@ def test_exact_state_matches_simulate(case1_profile):
 
 
 def test_exact_arcs_are_contiguous_closed_forms(case1_profile):
-    friction = sa.TwoRegionFriction(0.15, 0.05, 2.5)
+    friction = sa.two_region_friction(0.15, 0.05, 2.5)
     arcs = sa.exact_arcs(case1_profile, friction, sa.ObjectState(0, 0, 0), duration=7.9)
     n = len(arcs["t0"])
     assert n > 10
@@ -142,7 +142,7 @@ def test_exact_arcs_are_contiguous_closed_forms(case1_profile):
     # The object enters the transition region, where arcs are harmonic (eqs. 42-47).
     assert np.any(kinds == sa.ArcKind.harmonic)
     harmonic = kinds == sa.ArcKind.harmonic
-    np.testing.assert_allclose(arcs["omega"][harmonic], np.sqrt(friction.b1), rtol=1e-12)
+    np.testing.assert_allclose(arcs["omega"][harmonic], np.sqrt(friction.two_region.b1), rtol=1e-12)
 
 
 def test_set_valued_friction_law_eq_2():

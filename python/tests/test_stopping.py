@@ -21,16 +21,16 @@ def profile():
 
 @pytest.fixture
 def friction():
-    return sa.TwoRegionFriction(0.07, W, C_MU)
+    return sa.two_region_friction(0.07, W, C_MU)
 
 
 def test_stick_position_min_is_eq_41(friction):
     for peak in (1.5, 3.0, 3.9):
-        expected = friction.x_mu + W * (peak - 1) / (C_MU - 1)
-        assert sa.stick_position_min(friction, peak) == pytest.approx(expected,
+        expected = friction.two_region.x_mu + W * (peak - 1) / (C_MU - 1)
+        assert sa.stick_position_min(friction.two_region, peak) == pytest.approx(expected,
                                                                       rel=CLOSED_FORM_TOL)
-    assert sa.stick_position_min(friction, 0.8) == friction.x_mu
-    assert math.isinf(sa.stick_position_min(friction, C_MU + 0.1))
+    assert sa.stick_position_min(friction.two_region, 0.8) == friction.two_region.x_mu
+    assert math.isinf(sa.stick_position_min(friction.two_region, C_MU + 0.1))
 
 
 def test_sticks_permanently_is_eq_40(friction):
@@ -44,7 +44,7 @@ def test_sticks_permanently_is_eq_40(friction):
 def eq59(x_n, friction):
     """eq. (59), written out from docs/accumulation.md."""
     t1, t2, _, _ = three_phase_times(PERIOD, STROKE, A2, A3)
-    b1, b2 = friction.b1, friction.b2
+    b1, b2 = friction.two_region.b1, friction.two_region.b2
     c1, c2, K = (b2 + A2) / b1, (b2 - A3) / b1, (A2 + A3) / b1
     theta = math.sqrt(b1) * (t2 - t1)
     d = x_n - c1
@@ -52,8 +52,8 @@ def eq59(x_n, friction):
 
 
 def test_stick_position_map_is_eq_59(profile, friction):
-    m = sa.StickPositionMap(profile, friction)
-    x = np.linspace(friction.x_mu, friction.x_mu + W, 11)
+    m = sa.StickPositionMap(profile, friction.two_region)
+    x = np.linspace(friction.two_region.x_mu, friction.two_region.x_mu + W, 11)
     expected, c1, K, theta = eq59(x, friction)
     np.testing.assert_allclose(m(x), expected, rtol=CLOSED_FORM_TOL)
     assert m(float(x[3])) == pytest.approx(expected[3], rel=CLOSED_FORM_TOL)
@@ -68,18 +68,18 @@ def test_stick_position_map_is_eq_59(profile, friction):
 
 
 def test_fixed_point_of_the_map_equals_stick_position_min(profile, friction):
-    m = sa.StickPositionMap(profile, friction)
-    x_min = sa.stick_position_min(friction, profile.peak_acceleration)
+    m = sa.StickPositionMap(profile, friction.two_region)
+    x_min = sa.stick_position_min(friction.two_region, profile.peak_acceleration)
     assert m.fixed_point() == pytest.approx(x_min, rel=CLOSED_FORM_TOL)
     assert m(x_min) == pytest.approx(x_min, rel=CLOSED_FORM_TOL)
-    assert m.accumulates_for_every_entry() == (m(friction.x_mu) < x_min)
+    assert m.accumulates_for_every_entry() == (m(friction.two_region.x_mu) < x_min)
 
 
 def test_stopping_run_ends_where_simulate_stops(profile, friction):
     run = sa.stopping_run(profile, friction, sa.ObjectState(0.0, 0.0, 0.0))
     assert run.kind == sa.StopKind.permanent_stick
-    assert run.x_stick_min == pytest.approx(sa.stick_position_min(friction, A2))
-    assert run.end_position >= friction.x_mu
+    assert run.x_stick_min == pytest.approx(sa.stick_position_min(friction.two_region, A2))
+    assert run.end_position >= friction.two_region.x_mu
     assert sa.sticks_permanently(friction, A2, run.end_position)
     assert run.entry_time <= run.process_time < math.inf
     later = sa.simulate(profile, friction, options=sa.SimulationOptions(
@@ -94,8 +94,8 @@ def test_stopping_run_ends_where_simulate_stops(profile, friction):
 
 def test_accumulating_runs_follow_the_map_to_x_stick_min(profile):
     acc = sa.positioning_accuracy(profile, W, C_MU, sa.PositioningOptions(entries=10))
-    friction = sa.TwoRegionFriction(acc.x_mu, W, C_MU)
-    m = sa.StickPositionMap(profile, friction)
+    friction = sa.two_region_friction(acc.x_mu, W, C_MU)
+    m = sa.StickPositionMap(profile, friction.two_region)
     accumulating = [r for r in acc.runs if r.kind == sa.StopKind.accumulation]
     assert accumulating
     for r in accumulating:
@@ -115,7 +115,7 @@ def test_stopping_options_defaults():
     np.testing.assert_array_equal(o.fractions, [0.5])
     with pytest.raises(sa.InvalidParameter):
         sa.stopping_run(sa.ThreePhaseProfile(PERIOD, STROKE, A2, A3),
-                        sa.TwoRegionFriction(0.07, W, C_MU), sa.ObjectState(),
+                        sa.two_region_friction(0.07, W, C_MU), sa.ObjectState(),
                         sa.StoppingOptions(fractions=[1.5]))
 
 
@@ -124,16 +124,13 @@ def test_every_entry_condition_is_none_outside_its_derivation():
     and to be the map's fixed point (a2 >= a3, eq. 60); elsewhere it is None, with a reason."""
     beyond_c_mu = sa.StickPositionMap(
         sa.ThreePhaseProfile(0.60597757985852, 0.012412335492963484, 8.508483283348117,
-                             1.2561507198610682),
-        sa.TwoRegionFriction(0.008150211493444207, 0.06676181403696926, 4.739200637052614))
-    a3_above_a2 = sa.StickPositionMap(sa.ThreePhaseProfile(PERIOD, STROKE, 1.3, 2.3),
-                                      sa.TwoRegionFriction(0.5, 0.05, 2.5))
+                             1.2561507198610682), sa.TwoRegionTable(0.008150211493444207, 0.06676181403696926, 4.739200637052614))
+    a3_above_a2 = sa.StickPositionMap(sa.ThreePhaseProfile(PERIOD, STROKE, 1.3, 2.3), sa.TwoRegionTable(0.5, 0.05, 2.5))
     for m, phrase in ((beyond_c_mu, "> c_mu"), (a3_above_a2, "y3'' > y2''")):
         assert m.accumulates_for_every_entry() is None
         assert m.accumulation_condition_applies() is False
         assert phrase in m.accumulation_condition_reason()
-    inside = sa.StickPositionMap(sa.ThreePhaseProfile(PERIOD, STROKE, 2.3, 1.3),
-                                 sa.TwoRegionFriction(0.5, 0.05, 2.5))
+    inside = sa.StickPositionMap(sa.ThreePhaseProfile(PERIOD, STROKE, 2.3, 1.3), sa.TwoRegionTable(0.5, 0.05, 2.5))
     assert inside.accumulation_condition_applies() is True
     assert inside.accumulation_condition_reason() == ""
     assert inside.accumulates_for_every_entry() is (inside(0.5) < inside.fixed_point())
@@ -145,10 +142,10 @@ def test_diagonal_stick_positions_contract_by_cos_cosh():
     per period (docs/accumulation.md), and a stopping run reports accumulation."""
     a = 2.45
     profile = sa.ThreePhaseProfile(PERIOD, STROKE, a, a)
-    friction = sa.TwoRegionFriction(0.5, 0.05, 2.5)
-    m = sa.StickPositionMap(profile, friction)
+    friction = sa.two_region_friction(0.5, 0.05, 2.5)
+    m = sa.StickPositionMap(profile, friction.two_region)
     t1, t2, _, _ = three_phase_times(PERIOD, STROKE, a, a)
-    omega = math.sqrt(friction.b1)
+    omega = math.sqrt(friction.two_region.b1)
     lam = math.cos(omega * (t2 - t1)) * math.cosh(omega * (PERIOD - t2))
     assert m.contraction_at_fixed_point() == pytest.approx(lam, rel=1e-9)
     # Iterates of the composed arcs approach x_stick,min from below at that rate.
@@ -162,7 +159,7 @@ def test_diagonal_stick_positions_contract_by_cos_cosh():
     assert d[-1] / d[-2] == pytest.approx(lam, abs=1e-3)
     run = sa.stopping_run(profile, friction, sa.ObjectState(0.0, 0.0, 0.0))
     assert run.kind == sa.StopKind.accumulation
-    assert run.end_position == pytest.approx(sa.stick_position_min(friction, a),
+    assert run.end_position == pytest.approx(sa.stick_position_min(friction.two_region, a),
                                              rel=CLOSED_FORM_TOL)
 
 
@@ -170,7 +167,7 @@ def test_a_run_that_never_stops_has_no_end_position():
     # Issue 9: the end position of a run that never stops was 0.0 in Python (null in the CLI).
     # On the uniform part of the table, x_mu far ahead: the object never arrives in 3 periods.
     profile = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
-    run = sa.stopping_run(profile, sa.TwoRegionFriction(50.0, 0.05, 2.5), sa.ObjectState(),
+    run = sa.stopping_run(profile, sa.two_region_friction(50.0, 0.05, 2.5), sa.ObjectState(),
                           sa.StoppingOptions(max_periods=3))
     assert run.kind == sa.StopKind.not_stopped
     assert np.isnan(run.end_position) and np.isnan(run.process_time)

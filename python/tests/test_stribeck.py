@@ -75,7 +75,7 @@ def test_stopping_through_the_integrator_matches_the_exact_run():
     # static = kinetic: the integrator's events (entry, targets, stops) against the exact
     # solver's closed-form arcs
     p = sa.ThreePhaseProfile(sa.ThreePhaseParameters(1.0, 0.084, 1.8, 1.1))
-    f = sa.TwoRegionFriction(0.1, 0.05, 2.5)
+    f = sa.two_region_friction(0.1, 0.05, 2.5)
     o = sa.StoppingOptions(fractions=[0.5, 0.9],
                            integrator=sa.IntegratorOptions(relative_tolerance=1e-12,
                                                            absolute_tolerance=1e-14))

@@ -120,7 +120,7 @@ bool arrive(PositioningAccuracy& r, const TableProfile& profile, const FrictionL
 void walk_onto(PositioningAccuracy& r, const TableProfile& profile, const FrictionLaw& law,
                const FrictionMap& friction, double dx, const PositioningOptions& o) {
   r.x_mu = friction_rise(friction);
-  const TwoRegionFriction* two = friction.two_region();
+  const TwoRegionTable* two = friction.two_region();
   r.x_stick_min = two && law.is_unit()
                       ? stick_position_min(*two, profile.peak_acceleration())
                       : stick_position_min(*friction.piecewise_affine(), law,
@@ -135,12 +135,12 @@ PositioningAccuracy positioning_accuracy(const TableProfile& profile, const Fric
                                          const PositioningOptions& o) {
   validate(o);
   require_exact_profile(profile, "positioning");
-  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  TwoRegionTable(0.0, width, c_mu);  // validates width and c_mu by name
   PositioningAccuracy r;
   double dx = 0;
   if (!arrive(r, profile, law, o, dx)) return r;
   // The paper's placement: x_mu = Δx.
-  walk_onto(r, profile, law, TwoRegionFriction(dx, width, c_mu), dx, o);
+  walk_onto(r, profile, law, two_region_friction(dx, width, c_mu), dx, o);
   return r;
 }
 
@@ -215,7 +215,7 @@ std::vector<PositioningCell> positioning_surfaces(double period, double stroke, 
                                                   const std::vector<double>& a3,
                                                   const PositioningOptions& o,
                                                   const SweepOptions& sweep) {
-  TwoRegionFriction(0.0, width, c_mu);  // validates width and c_mu by name
+  TwoRegionTable(0.0, width, c_mu);  // validates width and c_mu by name
   return surfaces(period, stroke, a2, a3, o, sweep,
                   [&](const TableProfile& profile, const PositioningOptions& per_cell) {
                     return positioning_accuracy(profile, sweep.law, width, c_mu, per_cell);

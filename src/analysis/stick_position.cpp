@@ -24,7 +24,7 @@ bool sticks_permanently(const FrictionMap& friction, const FrictionLaw& law,
 }
 
 double friction_rise(const FrictionMap& friction) {
-  if (const TwoRegionFriction* two = friction.two_region()) return two->x_mu();
+  if (const TwoRegionTable* two = friction.two_region()) return two->x_mu();
   const PiecewiseAffineFriction* pieces = friction.piecewise_affine();
   if (!pieces)
     throw InvalidParameter("friction", "not piecewise affine",
@@ -59,13 +59,13 @@ double stick_position_min(const PiecewiseAffineFriction& f, const FrictionLaw& l
   return std::max(x, friction_rise(f));
 }
 
-double stick_position_min(const TwoRegionFriction& f, double peak) {
+double stick_position_min(const TwoRegionTable& f, double peak) {
   if (peak <= 1) return f.x_mu();
   if (peak > f.c_mu()) return std::numeric_limits<double>::infinity();
   return f.x_mu() + f.width() * (peak - 1) / (f.c_mu() - 1);  // eq. (41)
 }
 
-StickPositionMap::StickPositionMap(const ThreePhaseProfile& profile, const TwoRegionFriction& f)
+StickPositionMap::StickPositionMap(const ThreePhaseProfile& profile, const TwoRegionTable& f)
     : p_(profile.parameters()),
       x_mu_(f.x_mu()),
       w_(f.width()),

@@ -111,7 +111,7 @@ bool observed_accumulation(const std::vector<double>& x, double x_stick_min, dou
 
 }  // namespace
 
-StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
+StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const ObjectState& start, const StoppingOptions& o) {
   return stopping_run(profile, friction, FrictionLaw{}, start, o);
 }
@@ -131,7 +131,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   const double peak = profile.peak_acceleration(), P = profile.period();
   // The paper's table under the paper's law: eqs. (41), (59), (60) as written; otherwise their
   // general forms (the rise of the level, s m(x) >= peak), and no accumulation proof.
-  const TwoRegionFriction* two = friction.two_region();
+  const TwoRegionTable* two = friction.two_region();
   const bool paper = two && law.is_unit();
   const double x_mu = friction_rise(friction);
   StoppingRun r;

@@ -38,7 +38,7 @@ void validate(const DesignRequest& q) {
   friction_law(q);
   require_non_negative("tolerance", q.tolerance);
   require_moderate("tolerance", q.tolerance);
-  if (q.width < 1e-9 * q.distance)  // TwoRegionFriction's resolution bound at x_mu ~ distance
+  if (q.width < 1e-9 * q.distance)  // TwoRegionTable's resolution bound at x_mu ~ distance
     throw InvalidParameter("width", q.width,
                            "must be >= 1e-9 x distance = " + format_number(1e-9 * q.distance) +
                                " m (the transition region must be resolvable at the end position)");
@@ -303,7 +303,7 @@ DesignResult describe_design(const DesignRequest& q, const ThreePhaseParameters&
   const SteadyState steady = steady_state(*profile, law);
   r.motion_case = steady.motion_case;
   r.v_bar = sc.velocity_to_si(steady.v_bar);
-  const TwoRegionFriction friction(x_mu, 1.0, q.c_mu);
+  const FieldFriction friction = two_region_friction(x_mu, 1.0, q.c_mu);
   StoppingOptions so;
   so.fractions = {kFraction};
   const StoppingRun run = stopping_run(*profile, friction, law, {0, 0, 0}, so);

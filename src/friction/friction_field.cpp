@@ -19,7 +19,7 @@ namespace selfalign {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-// Resolvability, as TwoRegionFriction (src/friction/friction_map.cpp): slopes of m at most
+// Resolvability, as TwoRegionTable (src/friction/two_region_table.cpp): slopes of m at most
 // 1e12, sloped stretches at least 1e-9 |position| wide.
 constexpr double kMaxSlope = 1e12;
 constexpr double kMinRelativePieceWidth = 1e-9;

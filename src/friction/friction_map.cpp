@@ -9,8 +9,6 @@
 #include "selfalign/error.hpp"
 
 namespace selfalign {
-namespace {
-}
 
 PiecewiseAffineFriction::PiecewiseAffineFriction(std::span<const AffinePiece> pieces) {
   if (pieces.empty() || pieces.size() > kMaxPieces)
@@ -55,55 +53,9 @@ PiecewiseAffineFriction uniform_pieces(double level) {
   const AffinePiece p{-kInf, kInf, level, 0.0};
   return PiecewiseAffineFriction({&p, 1});
 }
-PiecewiseAffineFriction two_region_pieces(double x_mu, double w, double c_mu) {
-  const AffinePiece p[3] = {{-kInf, x_mu, 1.0, 0.0},
-                            {x_mu, x_mu + w, 1.0, (c_mu - 1.0) / w},
-                            {x_mu + w, kInf, c_mu, 0.0}};
-  return PiecewiseAffineFriction(p);
-}
 }  // namespace
 
 UniformFriction::UniformFriction(double level)
     : level_(require_positive("friction level", level)), affine_(uniform_pieces(level)) {}
-
-namespace {
-// The transition region must be resolvable in double precision, or the exact solver's harmonic
-// arcs there (frequency sqrt(b1), amplitude ~ y''/b1) shrink below the rounding of t and x and
-// the object chatters through ~1e8 zero-progress arcs a period (issue 9, D09, D12).
-//  - b1 = (c_mu - 1)/w <= 1e12: arcs last >= 1e-6 periods and their amplitude is >= 1e-12 (for
-//    |y''| ~ 1), four orders above the rounding of positions of order 1;
-//  - w >= 1e-9 |x_mu|: the transition spans >= 4e6 ulps of x_mu.
-constexpr double kMaxTransitionStiffness = 1e12;  // largest b1 [1/-]
-constexpr double kMinRelativeWidth = 1e-9;        // smallest w / |x_mu| [-]
-
-double resolvable_width(double x_mu, double width, double c_mu) {
-  if (!std::isfinite(x_mu + width))
-    throw InvalidParameter("width", width,
-                           "x_mu + width must be finite (x_mu = " + format_number(x_mu) + ")");
-  if (width < kMinRelativeWidth * std::abs(x_mu))
-    throw InvalidParameter("width", width,
-                           "must be >= 1e-9 |x_mu| = " +
-                               format_number(kMinRelativeWidth * std::abs(x_mu)) +
-                               " for the transition region to be resolvable");
-  if (!((c_mu - 1.0) / width <= kMaxTransitionStiffness))
-    throw InvalidParameter("c_mu, width", format_number(c_mu) + ", " + format_number(width),
-                           "the friction transition must be resolvable: need (c_mu - 1)/width "
-                           "<= 1e12, i.e. c_mu <= " +
-                               format_number(1.0 + kMaxTransitionStiffness * width) +
-                               " for this width");
-  return width;
-}
-}  // namespace
-
-TwoRegionFriction::TwoRegionFriction(double x_mu, double width, double c_mu)
-    : x_mu_(require_finite("x_mu", x_mu)),
-      width_(require_positive("width", width)),
-      c_mu_(require_greater("c_mu", c_mu, 1.0)),
-      affine_(two_region_pieces(x_mu_, resolvable_width(x_mu_, width_, c_mu_), c_mu_)) {}
-
-double TwoRegionFriction::bound(double x) const {
-  const double z = std::min(std::max(x - x_mu_, 0.0), width_);  // eq. (8)
-  return 1.0 + (c_mu_ - 1.0) / width_ * z;                      // eqs. (7), (9)
-}
 
 }  // namespace selfalign

@@ -131,7 +131,7 @@ Footprint make_footprint(const SimulateConfig& c) {
 std::unique_ptr<FrictionMap> make_friction(const SimulateConfig& c, UnitSystem units,
                                            const Scales& scales) {
   if (*c.friction == "two-region")
-    return std::make_unique<TwoRegionFriction>(*c.x_mu, *c.width, *c.c_mu);
+    return std::make_unique<FieldFriction>(TwoRegionTable(*c.x_mu, *c.width, *c.c_mu));
   if (*c.friction == "uniform") return std::make_unique<UniformFriction>(1.0);
   if (*c.friction == "field")
     return std::make_unique<FieldFriction>(load_field(c, units, scales), make_footprint(c));

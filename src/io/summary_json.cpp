@@ -68,7 +68,7 @@ json scales_json(const SimulateModel& m) {
 }  // namespace
 
 json friction_json(const FrictionMap& f, const OutputUnits& u) {
-  if (const TwoRegionFriction* two = f.two_region())
+  if (const TwoRegionTable* two = f.two_region())
     return {{"kind", "two-region"},
             {"x_mu", u.length(two->x_mu())},    // [-] | [m]
             {"width", u.length(two->width())},  // [-] | [m]

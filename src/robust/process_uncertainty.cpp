@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/io/parameter_view.hpp"
 #include "selfalign/io/simulate_model.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -180,7 +181,7 @@ ProcessModel::ProcessModel(const ProcessFamily& family, const InputValues& v)
   SimulateModel m = build_simulate_model(family.config(v));
   profile = std::move(m.profile);
   law = m.law;
-  const TwoRegionFriction* table = m.friction->two_region();
+  const TwoRegionTable* table = m.friction->two_region();
   c_mu = table->c_mu();
   x_mu = table->x_mu();
 }
@@ -269,7 +270,7 @@ ProcessOutcome run_process(const DesignRequest& q, const Process& p, const Input
 
 ProcessOutcome run_process(const ProcessFamily& family, const InputValues& v, int max_periods) {
   const ProcessModel m(family, v);
-  const TwoRegionFriction friction(m.x_mu, 1.0, m.c_mu);
+  const FieldFriction friction = two_region_friction(m.x_mu, 1.0, m.c_mu);
   const StoppingOptions so = ProcessModel::stopping(max_periods);
   return m.outcome(stopping_run(*m.profile, friction, m.law, {0, 0, 0}, so));
 }

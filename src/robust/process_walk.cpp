@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "selfalign/friction/friction_field.hpp"
+
 namespace selfalign {
 
 ProcessWalk::ProcessWalk(const DesignRequest& q, const Process& p, const InputValues& v,
@@ -37,7 +39,7 @@ ProcessOutcome ProcessWalk::at(double x_mu) {
       first_reached == reach_.begin() ? 0 : static_cast<std::size_t>(first_reached - reach_.begin()) - 1;
   const int budget = max_periods_ - static_cast<int>(k);
   if (budget < 1) return {};  // the budget ended on the smooth region: never entered
-  const TwoRegionFriction friction(start, 1.0, model_.c_mu);
+  const FieldFriction friction = two_region_friction(start, 1.0, model_.c_mu);
   return model_.outcome(
       stopping_run(*model_.profile, friction, model_.law, looks_[k], ProcessModel::stopping(budget)));
 }

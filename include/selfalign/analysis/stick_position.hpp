@@ -17,6 +17,7 @@
 #include <string>
 
 #include "selfalign/friction/friction_law.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 
@@ -42,7 +43,7 @@ double stick_position_min(const PiecewiseAffineFriction& friction, const Frictio
 
 /// eq. (41) [-]: the smallest x >= x_mu at which eq. (40) holds. x_mu when the peak
 /// acceleration is <= 1; +inf when it exceeds c_mu (the object never stops for good).
-double stick_position_min(const TwoRegionFriction& friction, double peak_acceleration);
+double stick_position_min(const TwoRegionTable& table, double peak_acceleration);
 
 /// Sect. 7.3's statement "accumulation for every entry iff x_{n+1}(x_mu) < x_stick,min" at one
 /// setting, with the domain where its derivation holds (docs/accumulation.md). Every entry
@@ -62,7 +63,7 @@ struct EveryEntryAccumulation {
 ///   K = (y2'' + y3'')/b1,   θ = sqrt(b1) (t2 - t1).
 class StickPositionMap {
  public:
-  StickPositionMap(const ThreePhaseProfile& profile, const TwoRegionFriction& friction);
+  StickPositionMap(const ThreePhaseProfile& profile, const TwoRegionTable& table);
 
   double operator()(double x_n) const;  ///< x_{n+1}, eq. (59) [-]
   double fixed_point() const { return c1_; }  ///< eq. (60): (b2 + y2'')/b1 [-]

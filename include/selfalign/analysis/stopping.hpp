@@ -76,9 +76,10 @@ struct StoppingRun {
   std::vector<int> periods_to_fraction;
 };
 
-/// Runs the exact solver from `start` on the two-region table until the object stops for good
-/// (the profile must be piecewise constant). Throws InvalidParameter otherwise.
-StoppingRun stopping_run(const TableProfile& profile, const TwoRegionFriction& friction,
+/// Runs the exact solver from `start` on `friction` under the paper's law (FrictionLaw{}) until
+/// the object stops for good: the overload below with the unit law; on the paper's table
+/// (two_region_friction) eqs. (41), (59), (60) as written.
+StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const ObjectState& start, const StoppingOptions& options = {});
 /// The same on any piecewise-affine friction level (a FieldFriction, several steps, ...)
 /// under a Coulomb law. The paper's x_mu becomes the rise of the level (friction_rise), eq.

@@ -8,7 +8,8 @@
 /// with p the footprint's normalised contact pressure and x the object's LEADING edge. A point
 /// footprint gives m(x) = field(x); a uniform footprint of width w gives the window average
 /// m(x) = (1/w) * integral over [x - w, x] of field, which for the two-region field (mu_1 before
-/// x_mu, mu_2 = c_mu mu_1 after) is exactly TwoRegionFriction, eqs. (7)-(9).
+/// x_mu, mu_2 = c_mu mu_1 after) is exactly the paper's table, eqs. (7)-(9): the named
+/// constructor `two_region_friction(x_mu, width, c_mu)` builds it as a FieldFriction.
 
 #include <optional>
 #include <span>
@@ -84,6 +85,37 @@ class FrictionField {
   double min_level_ = 0, max_level_ = 0;
 };
 
+/// The parameters of the paper's two-region table (Sect. 3.3): mu_1 for x < x_mu, mu_2 = c_mu
+/// mu_1 beyond x_mu + w, in between the width-averaged transition of eqs. (7)-(9)
+///   m(x) = 1 + (c_mu - 1)/w * z,   z = min(max(x - x_mu, 0), w),
+/// x the object's leading edge [-], w its dimensionless width. A value: the friction map is
+/// `two_region_friction(x_mu, width, c_mu)` (a FieldFriction); the closed forms written for the
+/// table (eqs. 41, 42, 59, 60) read these parameters.
+class TwoRegionTable {
+ public:
+  /// \param x_mu  start of the high-friction region [-], finite, |x_mu| <= 1e50
+  /// \param width object width w [-], in [1e-50, 1e50], with w >= 1e-9 |x_mu|
+  /// \param c_mu  friction ratio mu_2/mu_1 [-], in (1, 1e50], with b1 = (c_mu - 1)/w <= 1e12
+  /// The last two bounds keep the transition region resolvable in double precision (a sharper
+  /// transition leaves the exact solver's arcs below the rounding of t and x); each violation
+  /// throws InvalidParameter naming the parameter(s) and the bound.
+  TwoRegionTable(double x_mu, double width, double c_mu);
+
+  double x_mu() const noexcept { return x_mu_; }
+  double width() const noexcept { return width_; }
+  double c_mu() const noexcept { return c_mu_; }
+  /// b_1 = (c_mu - 1)/w, the "stiffness" of the transition region (eq. 42) [-].
+  double b1() const noexcept { return (c_mu_ - 1.0) / width_; }
+  /// b_2 = (c_mu - 1) x_mu / w - 1 (eq. 42) [-].
+  double b2() const noexcept { return b1() * x_mu_ - 1.0; }
+  /// The table as a field: 1 before x_mu, c_mu from x_mu on (the footprint averages it).
+  FrictionField field() const;
+  bool operator==(const TwoRegionTable&) const = default;
+
+ private:
+  double x_mu_, width_, c_mu_;
+};
+
 /// A point contact: m(x) = field(x).
 struct PointFootprint {
   bool operator==(const PointFootprint&) const = default;
@@ -111,19 +143,27 @@ using Footprint = std::variant<PointFootprint, UniformFootprint>;
 /// Breakpoints closer than 4 ulps are merged (a sliver piece would stall the exact solver; the
 /// merged piece is off by at most slope x 4 ulps there).
 ///
-/// Resolvability (as TwoRegionFriction): the slopes of m must be <= 1e12 in magnitude, and its
+/// Resolvability (as TwoRegionTable): the slopes of m must be <= 1e12 in magnitude, and its
 /// sloped stretches must be wide enough to resolve in double precision: a ramp under a point
 /// footprint at least 1e-9 |position| wide, a uniform footprint's width >= 1e-9 max |position|.
 /// Violations throw a one-line InvalidParameter.
 class FieldFriction final : public FrictionMap {
  public:
   FieldFriction(FrictionField field, Footprint footprint);
+  /// The paper's two-region table (eq. 9) as the field it is: FrictionField::steps({x_mu},
+  /// {1, c_mu}) under UniformFootprint{width}; two_region() then gives `table`, so the closed
+  /// forms written for it (eqs. 41, 59, 60) apply. A field of that shape built by the general
+  /// constructor (e.g. read from a file) is the same level but is not tagged as the paper's.
+  explicit FieldFriction(const TwoRegionTable& table);
 
   double bound(double x) const override;
   const PiecewiseAffineFriction* piecewise_affine() const override {
     return affine_ ? &*affine_ : nullptr;
   }
   const FieldFriction* field_friction() const override { return this; }
+  const TwoRegionTable* two_region() const override {
+    return two_region_ ? &*two_region_ : nullptr;
+  }
 
   const FrictionField& field() const noexcept { return field_; }
   const Footprint& footprint() const noexcept { return footprint_; }
@@ -137,6 +177,13 @@ class FieldFriction final : public FrictionMap {
   std::vector<double> window_ends_;       // p_k + w (uniform footprint on steps)
   std::vector<double> jump_per_width_;    // (right_k - left_k)/w (uniform footprint on steps)
   std::optional<PiecewiseAffineFriction> affine_;
+  std::optional<TwoRegionTable> two_region_;  // set by the paper's named constructor only
 };
+
+/// The paper's two-region table (Sect. 3.3), eq. (9): m = 1 for x < x_mu, c_mu beyond
+/// x_mu + w, and in between the width-averaged transition m = 1 + (c_mu - 1)/w (x - x_mu).
+/// The named constructor of the field family: FieldFriction(TwoRegionTable(x_mu, width, c_mu)).
+/// Throws InvalidParameter as TwoRegionTable's constructor does.
+FieldFriction two_region_friction(double x_mu, double width, double c_mu);
 
 }  // namespace selfalign

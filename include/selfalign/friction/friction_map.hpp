@@ -14,7 +14,7 @@
 
 namespace selfalign {
 
-class TwoRegionFriction;
+class TwoRegionTable;
 class FieldFriction;
 class UniformFriction;
 
@@ -61,9 +61,10 @@ class FrictionMap {
   /// The map as affine pieces, or nullptr when it is not piecewise affine (then only the
   /// time-stepping solver can use it).
   virtual const PiecewiseAffineFriction* piecewise_affine() const { return nullptr; }
-  /// The map as the paper's two-region table (eq. 9), when it is one: eqs. (41), (59), (60)
-  /// and the stick-position map are written for it. nullptr otherwise.
-  virtual const TwoRegionFriction* two_region() const { return nullptr; }
+  /// The parameters of the paper's two-region table (eq. 9) when the map was built as it
+  /// (`two_region_friction`, friction_field.hpp): eqs. (41), (59), (60) and the stick-position
+  /// map are written for them. nullptr otherwise.
+  virtual const TwoRegionTable* two_region() const { return nullptr; }
   /// The map as a friction field averaged over a footprint (friction_field.hpp), when it is
   /// one. nullptr otherwise. (Capability queries: no caller casts a friction map.)
   virtual const FieldFriction* field_friction() const { return nullptr; }
@@ -84,37 +85,6 @@ class UniformFriction final : public FrictionMap {
 
  private:
   double level_;
-  PiecewiseAffineFriction affine_;
-};
-
-/// The paper's two-region table (Sect. 3.3): mu_1 for x < x_mu, mu_2 = c_mu mu_1 beyond
-/// x_mu + w, and in between the width-averaged transition of eqs. (7)-(9):
-///   m(x) = 1 + (c_mu - 1)/w * z,   z = min(max(x - x_mu, 0), w)          (eqs. 7, 8)
-/// x is the position of the object's leading edge [-], w its dimensionless width.
-class TwoRegionFriction final : public FrictionMap {
- public:
-  /// \param x_mu  start of the high-friction region [-], finite
-  /// \param width object width w [-], > 0, with x_mu + w finite and w >= 1e-9 |x_mu|
-  /// \param c_mu  friction ratio mu_2/mu_1 [-], > 1, with b1 = (c_mu - 1)/w <= 1e12
-  /// The last two bounds keep the transition region resolvable in double precision (a sharper
-  /// transition leaves the exact solver's arcs below the rounding of t and x); each violation
-  /// throws InvalidParameter naming the parameter(s) and the bound.
-  TwoRegionFriction(double x_mu, double width, double c_mu);
-
-  double bound(double x) const override;  // eq. (9)
-  const PiecewiseAffineFriction* piecewise_affine() const override { return &affine_; }
-  const TwoRegionFriction* two_region() const override { return this; }
-
-  double x_mu() const noexcept { return x_mu_; }
-  double width() const noexcept { return width_; }
-  double c_mu() const noexcept { return c_mu_; }
-  /// b_1 = (c_mu - 1)/w, the "stiffness" of the transition region (eq. 42) [-].
-  double b1() const noexcept { return (c_mu_ - 1.0) / width_; }
-  /// b_2 = (c_mu - 1) x_mu / w - 1 (eq. 42) [-].
-  double b2() const noexcept { return b1() * x_mu_ - 1.0; }
-
- private:
-  double x_mu_, width_, c_mu_;
   PiecewiseAffineFriction affine_;
 };
 

@@ -26,19 +26,19 @@ def fixed_point_is_stick_min() -> Claim:
     worst, count = 0.0, 0
     for period, w, c_mu, x_mu in itertools.product((1.0, 1.05), (0.02, 0.05, 0.1), (1.5, 2.5, 4.0),
                                                    (0.0, 0.3)):
-        friction = sa.TwoRegionFriction(x_mu, w, c_mu)
+        table = sa.TwoRegionTable(x_mu, w, c_mu)
         for a2, a3 in itertools.product(np.linspace(1.1, 3.9, 8), np.linspace(0.5, 3.9, 8)):
             if not (a3 <= a2 <= c_mu) or not _physical(period, 0.084, a2, a3):
                 continue
             profile = _profile(period, 0.084, a2, a3)
-            fixed = sa.StickPositionMap(profile, friction).fixed_point()
+            fixed = sa.StickPositionMap(profile, table).fixed_point()
             eq60 = stick_map_fixed_point(a2, w, c_mu, x_mu)
             on_map = float(stick_map(eq60, a2, a3, w, c_mu, x_mu, _t21(profile)))
             worst = max(worst, abs(fixed - eq60), abs(eq60 - x_stick_min(x_mu, w, c_mu, a2)),
                         abs(on_map - eq60))
             count += 1
     profile = _profile(1.05, 0.084, 2.2, 0.9)  # Fig. 18
-    fig18 = sa.StickPositionMap(profile, sa.TwoRegionFriction(0.0, 0.05, 2.5)).fixed_point()
+    fig18 = sa.StickPositionMap(profile, sa.TwoRegionTable(0.0, 0.05, 2.5)).fixed_point()
     return Claim("Fixed point of map (59)", "Sect. 7.3, eqs. (59), (60), (41)",
                  "the fixed point of the stick-position map is (b2 + y2'')/b1 = x_stick,min "
                  "(y2'' the peak acceleration)",
@@ -200,7 +200,7 @@ def case1_stays(grid: Optional[list[AccumulationCase]] = None) -> Claim:
     worst, runs = 0.0, 0
     for c in chosen:
         profile = _profile(c.period, c.stroke, c.a2, c.a3)
-        friction = sa.TwoRegionFriction(c.accuracy.x_mu, c.width, c.c_mu)
+        friction = sa.two_region_friction(c.accuracy.x_mu, c.width, c.c_mu)
         for x0 in np.asarray(c.accuracy.entries)[::8]:
             tr = sa.simulate(profile, friction,
                              sa.ObjectState(0.0, float(x0), c.accuracy.steady.x_dot_0s),

@@ -60,8 +60,9 @@ def _accumulation_case(setting: tuple) -> AccumulationCase:
     theta = slip_angle(w, c_mu, t21)
     target = x_stick_min(x_mu, w, c_mu, max(a2, a3))
     condition = bool(stick_map(x_mu, a2, a3, w, c_mu, x_mu, t21) < target)
-    friction = sa.TwoRegionFriction(x_mu, w, c_mu)
-    every = sa.StickPositionMap(profile, friction).accumulates_for_every_entry()
+    table = sa.TwoRegionTable(x_mu, w, c_mu)
+    every = sa.StickPositionMap(profile, table).accumulates_for_every_entry()
+    friction = sa.FieldFriction(table)  # the table as a friction map (two_region_friction)
     rests = []
     for x1 in np.linspace(x_mu, target, ACCUMULATION_RESTS, endpoint=False):
         run = sa.stopping_run(profile, friction, sa.ObjectState(0.0, float(x1), 0.0),

@@ -23,7 +23,7 @@ def stick_condition() -> Claim:
     x_mu = 0.3
     worst, disagree, total = 0.0, 0, 0
     for w, c_mu in itertools.product((0.02, 0.05, 0.1), (1.5, 2.5, 4.0)):
-        friction = sa.TwoRegionFriction(x_mu, w, c_mu)
+        friction = sa.two_region_friction(x_mu, w, c_mu)
         x = np.linspace(x_mu - 0.5 * w, x_mu + 1.5 * w, 401)
         m = friction_bound(x, x_mu, w, c_mu)  # eqs. (7)-(9)
         worst = max(worst, float(np.abs(np.asarray(friction.bound(x)) - m).max()))
@@ -43,9 +43,9 @@ def stick_condition() -> Claim:
 def stick_position_formula() -> Claim:
     worst = 0.0
     for x_mu, w, c_mu in itertools.product((0.0, 0.3), (0.02, 0.05, 0.1), (1.5, 2.5, 4.0)):
-        friction = sa.TwoRegionFriction(x_mu, w, c_mu)
+        table = sa.TwoRegionTable(x_mu, w, c_mu)
         for peak in np.linspace(1.0, c_mu, 7):
-            got = sa.stick_position_min(friction, float(peak))
+            got = sa.stick_position_min(table, float(peak))
             worst = max(worst, abs(got - x_stick_min(x_mu, w, c_mu, float(peak))))
     period, stroke, w, c_mu = SECT72
     outcomes = {}
@@ -54,7 +54,7 @@ def stick_position_formula() -> Claim:
                                       sa.PositioningOptions(entries=20, stopping=sa.StoppingOptions(
                                           max_periods=ACCUMULATION_MAX_PERIODS)))
         outcomes[a2] = sum(r.kind != sa.StopKind.not_stopped for r in acc.runs)
-    beyond = sa.stick_position_min(sa.TwoRegionFriction(0.0, w, c_mu), 2.6)
+    beyond = sa.stick_position_min(sa.TwoRegionTable(0.0, w, c_mu), 2.6)
     ok = worst <= ROUND_OFF and outcomes[2.4] == 20 and outcomes[2.6] == 0 and math.isinf(beyond)
     return Claim("x_stick,min and the c_mu limit", "Sect. 7.2, eqs. (40), (41)",
                  "x_stick,min = x_mu + w (max y_i'' - 1)/(c_mu - 1); permanent stick needs "
