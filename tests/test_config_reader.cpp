@@ -229,6 +229,46 @@ TEST(PlanarConfig, SetIsTheFilesValueGivenOnTheCommandLine) {
   expect_invalid([&] { load_planar_config(dir.file("p.toml"), {"tabel.x.a2=1"}); }, "--set");
 }
 
+// [field] type = "axis": the 1-D field along a direction, from positions/levels or a CSV file
+// (positions in [m], converted by L = 0.01 m: 0.003 m is 0.3 L), each the same field.
+TEST(PlanarConfig, AnAxisFieldIsTheOneDimensionalFieldFromTheConfigOrAFile) {
+  TempDir dir;
+  write_text(dir.file("f.csv"), "position,level\n0.003,1\n0.004,2.5\n");
+  write_text(dir.file("a.toml"), std::string(kPlanar) +
+                                     "[field]\ntype = \"axis\"\npositions = [0.003, 0.004]\n"
+                                     "levels = [1, 2.5]\nangle = 0.5\norigin = [0.001, 0]\n");
+  write_text(dir.file("b.toml"), std::string(kPlanar) + "[field]\ntype = \"axis\"\nfile = \"" +
+                                     dir.file("f.csv") + "\"\nangle = 0.5\norigin = [0.001, 0]\n");
+  const PlanarSetup a = load_planar_config(dir.file("a.toml"));
+  const PlanarSetup b = load_planar_config(dir.file("b.toml"));
+  const auto* fa = std::get_if<AxisField>(&a.problem.field);
+  const auto* fb = std::get_if<AxisField>(&b.problem.field);
+  ASSERT_NE(fa, nullptr);
+  ASSERT_NE(fb, nullptr);
+  EXPECT_EQ(*fa, *fb);
+  EXPECT_DOUBLE_EQ(fa->origin_x, 0.1);  // 0.001 m / L
+  EXPECT_EQ(fa->angle, 0.5);
+  ASSERT_EQ(fa->field.nodes().size(), 1u);  // steps: 1 before 0.4 L, 2.5 from there
+  EXPECT_DOUBLE_EQ(fa->field.nodes()[0].position, 0.4);
+  EXPECT_EQ(fa->field.nodes()[0].left, 1.0);
+  EXPECT_EQ(fa->field.nodes()[0].right, 2.5);
+  // linear interpolation: a ramp between the samples
+  const PlanarSetup lin = load_planar_config(dir.file("a.toml"), {"field.interpolation=linear"});
+  EXPECT_NEAR(planar_level(lin.problem.field, 0.1 + 0.35 * std::cos(0.5), 0.35 * std::sin(0.5)),
+              1.75, 1e-12);
+  // bad input names the key
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"field.levels=1,0"}); },
+                 "field.levels");
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"field.levels=1"}); },
+                 "field.levels");
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"field.positions=0.004,0.003"}); },
+                 "field.positions");
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"field.interpolation=cubic"}); },
+                 "field.interpolation");
+  expect_invalid([&] { load_planar_config(dir.file("b.toml"), {"field.levels=1,2"}); },
+                 "field.file");
+}
+
 // Every key of the planar key table is documented in docs/planar.md (as `key`).
 TEST(PlanarConfig, EveryKeyIsDocumented) {
   std::ifstream in(std::string(SELFALIGN_SOURCE_DIR) + "/docs/planar.md");

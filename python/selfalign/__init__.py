@@ -160,6 +160,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     RectangularPocketField,
     CircularPocketField,
     GridField,
+    AxisField,
     planar_level,
     rotated_field,
     PatchMode,

@@ -1731,6 +1731,25 @@ class GridField:
     def levels(self) -> FloatArray: ...
     def to_dict(self) -> dict[str, Any]: ...
 
+class AxisField:
+    def __init__(
+        self,
+        field: FrictionField,
+        *,
+        origin_x: float = 0.0,
+        origin_y: float = 0.0,
+        angle: float = 0.0,
+    ) -> None: ...
+    @property
+    def field(self) -> FrictionField: ...
+    @property
+    def origin_x(self) -> float: ...
+    @property
+    def origin_y(self) -> float: ...
+    @property
+    def angle(self) -> float: ...
+    def to_dict(self) -> dict[str, Any]: ...
+
 PlanarField: TypeAlias = Union[
     UniformPlanarField,
     HalfPlaneStepField,
@@ -1738,6 +1757,7 @@ PlanarField: TypeAlias = Union[
     RectangularPocketField,
     CircularPocketField,
     GridField,
+    AxisField,
 ]
 
 @overload

@@ -353,6 +353,34 @@ nearest edge value outside. Levels finite and > 0, nx, ny >= 2, nx ny levels.)do
              field("dx", &GridField::dx), field("dy", &GridField::dy), field("nx", &GridField::nx),
              field("ny", &GridField::ny), field("levels", &GridField::levels));
 
+  const AxisField a{FrictionField::steps({}, {1.0})};
+  const auto make_axis = [](const FrictionField& field, double origin_x, double origin_y,
+                            double angle) {
+    return checked_field(AxisField{field, origin_x, origin_y, angle});
+  };
+  py::class_<AxisField> axis(m, "AxisField", R"doc(
+The 1-D table's friction field (a FrictionField: steps, ramps, FrictionField.from_csv) laid
+along the direction n = (cos angle, sin angle) from (origin_x, origin_y), constant across it:
+m(x, y) = field(n . (p - origin)). The 1-D field is the planar family's one-axis case: a point
+contact at angle 0 and origin 0 reads field(x), and a contact patch averages the field over its
+points as eq. (7)'s footprint does in 1-D. Levels must be in (0, 1e6] everywhere.)doc");
+  axis.def(py::init(make_axis), py::arg("field"), py::kw_only(), py::arg("origin_x") = a.origin_x,
+           py::arg("origin_y") = a.origin_y, py::arg("angle") = a.angle,
+           "Raises InvalidParameter naming \"levels\" for a level of 0 (or above 1e6) somewhere, "
+           "or the origin / angle out of range.")
+      .def_readonly("field", &AxisField::field, "the 1-D FrictionField along the axis")
+      .def_readonly("origin_x", &AxisField::origin_x, "x where the field's position 0 lies [-]")
+      .def_readonly("origin_y", &AxisField::origin_y, "y where the field's position 0 lies [-]")
+      .def_readonly("angle", &AxisField::angle, "direction of increasing position [rad]")
+      .def("__repr__", [](const AxisField& f) {
+        return "<AxisField nodes=" + std::to_string(f.field.nodes().size()) +
+               " origin_x=" + format_number(f.origin_x) + " origin_y=" +
+               format_number(f.origin_y) + " angle=" + format_number(f.angle) + ">";
+      });
+  def_record(axis, make_axis, field("field", &AxisField::field),
+             field("origin_x", &AxisField::origin_x), field("origin_y", &AxisField::origin_y),
+             field("angle", &AxisField::angle));
+
   m.def(
       "planar_level",
       [](const PlanarField& f, const py::object& x, const py::object& y) -> py::object {
@@ -814,7 +842,7 @@ The table moves by T(t) = x_profile(t) x_direction + y_profile(t) y_direction an
 rotation(t) [rad] about its origin (None: no motion of that kind; each profile a TableProfile,
 their periods dividing the longest one). The part (RigidPart) lies on the friction level
 `field` (UniformPlanarField, HalfPlaneStepField, StripField, RectangularPocketField,
-CircularPocketField or GridField, in table coordinates) under `law` (FrictionLaw: isotropic,
+CircularPocketField, GridField or AxisField, in table coordinates) under `law` (FrictionLaw: isotropic,
 kinetic_forward = kinetic_backward, and velocity-independent), and is advanced by Moreau's
 time-stepping with step `step` [-] and theta `theta` (docs/planar.md). Everything is
 dimensionless: mass 1, lengths in L, friction per unit m g mu_1. Raises InvalidParameter

@@ -351,7 +351,8 @@ VALID_BY_TYPE = {
     "List[selfalign._selfalign.ContactPoint]": "[sa.ContactPoint(0.0, 0.0, 1.0)]",
     "Union[selfalign._selfalign.UniformPlanarField, selfalign._selfalign.HalfPlaneStepField, "
     "selfalign._selfalign.StripField, selfalign._selfalign.RectangularPocketField, "
-    "selfalign._selfalign.CircularPocketField, selfalign._selfalign.GridField]":
+    "selfalign._selfalign.CircularPocketField, selfalign._selfalign.GridField, "
+    "selfalign._selfalign.AxisField]":
         "sa.UniformPlanarField()",
 }
 VALID_BY_CLASS = {  # classes without a default constructor, or an example that is cheap

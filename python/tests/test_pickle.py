@@ -165,6 +165,7 @@ EXAMPLES = {
                                                           radius=0.3, width=0.05, c_mu=2.0),
     "GridField": lambda: sa.GridField(origin_x=-1.0, angle=0.1, dx=0.5, dy=0.25, nx=3, ny=2,
                                       levels=[1.0, 1.5, 2.0, 1.0, 2.5, 3.0]),
+    "AxisField": lambda: sa.AxisField(FIELD, origin_x=0.1, origin_y=-0.2, angle=0.3),
     "PlanarPose": lambda: sa.PlanarPose(0.1, -0.2, 0.3),
     "PlanarTwist": lambda: sa.PlanarTwist(0.1, -0.2, 2.0),
     "PlanarCensus": lambda: sa.PlanarCensus(3, 1, 2),

@@ -130,6 +130,26 @@ def test_planar_level_is_vectorised_and_matches_the_fields():
     rot = sa.rotated_field(step, math.pi / 2)
     assert type(rot) is sa.HalfPlaneStepField
     assert sa.planar_level(rot, 0.0, 2.0) == 3.0
+    # The 1-D field along an axis: steps 1 -> 3 at 0.3 along +y from (0, 0.1), any x.
+    axis = sa.AxisField(sa.FrictionField.steps([0.3], [1.0, 3.0]), origin_y=0.1,
+                        angle=math.pi / 2)
+    np.testing.assert_array_equal(sa.planar_level(axis, [5.0, -2.0], [0.35, 0.45]), [1.0, 3.0])
+    assert type(sa.rotated_field(axis, 0.2)) is sa.AxisField
+
+
+def test_a_point_part_on_an_axis_field_is_the_1d_scheme_on_that_field():
+    # The 1-D field is the planar family's one-axis case: the second method is the 1-D Moreau
+    # scheme on the same field under a point footprint (tolerance as the uniform case above).
+    field = sa.FrictionField.ramps([0.05, 0.08, 0.1, 0.16], [1.0, 1.4, 1.2, 4.0])
+    h, periods = 1e-3, 6
+    one_d = sa.simulate(PROFILE, sa.FieldFriction(field, sa.PointFootprint()), sa.ObjectState(),
+                        sa.SimulationOptions(method="time-stepping", duration=periods * 1.0,
+                                             step=h, theta=0.5)).trajectory
+    r = sa.simulate_planar(PROFILE, field=sa.AxisField(field), part=sa.RigidPart(), step=h,
+                           periods=periods)
+    assert one_d.x[-1] > 0.1  # it walks onto the rising friction
+    np.testing.assert_allclose(r["x"], one_d.x, rtol=0, atol=1e-10)
+    np.testing.assert_allclose(r["ux"], one_d.xd, rtol=0, atol=1e-10)
 
 
 # ---- (c) bad input -------------------------------------------------------------------------
@@ -141,6 +161,8 @@ def test_planar_level_is_vectorised_and_matches_the_fields():
     (lambda: sa.polygon_patch([0.0, 1.0, 1.0, 0.0], [0.0, 1.0, 0.0, 1.0]), "polygon"),
     (lambda: sa.weighted_points_patch([-0.1, 0.1], [0.0, 0.0], [0.5, 0.4]), "load_fractions"),
     (lambda: sa.GridField(levels=[1.0, math.nan, 1.0, 1.0]), "levels"),
+    (lambda: sa.AxisField(sa.FrictionField.steps([0.0], [1.0, 0.0])), "levels"),
+    (lambda: sa.AxisField(sa.FrictionField.steps([0.0], [1.0, 2.0]), angle=math.inf), "angle"),
     (lambda: sa.HalfPlaneStepField(width=-1.0), "width"),
     (lambda: sa.simulate_planar(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(),
                                 step=0.01, periods=1, every=0), "every"),

@@ -159,6 +159,21 @@ FrictionField FrictionField::from_csv(const std::string& path, FieldInterpolatio
   if (std::none_of(levels.begin(), levels.end(), [](double l) { return l > 0; }))
     throw InvalidParameter("friction field " + path + " levels", "all 0",
                            "must be > 0 somewhere");
+  return samples(positions, levels, interpolation);
+}
+
+FrictionField FrictionField::samples(const std::vector<double>& positions,
+                                     const std::vector<double>& levels,
+                                     FieldInterpolation interpolation) {
+  if (positions.empty() || positions.size() != levels.size())
+    throw InvalidParameter("friction field levels", static_cast<double>(levels.size()),
+                           "must give one level per position (" +
+                               std::to_string(positions.size()) + " positions), at least one");
+  for (std::size_t i = 1; i < positions.size(); ++i)  // steps drops the first position
+    if (!(positions[i] > positions[i - 1]))
+      throw InvalidParameter("friction field positions", positions[i],
+                             "must be > the previous position " +
+                                 format_number(positions[i - 1]) + " (strictly increasing)");
   if (interpolation == FieldInterpolation::linear) return ramps(positions, levels);
   // Each sample's level holds from its position to the next one (and before the first).
   return steps(std::vector<double>(positions.begin() + 1, positions.end()), levels);

@@ -10,6 +10,7 @@
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/io/config_reader.hpp"
 #include "selfalign/io/document.hpp"
+#include "selfalign/io/run_files.hpp"
 #include "selfalign/io/unit_system.hpp"
 #include "selfalign/io/spelling.hpp"
 #include "selfalign/profiles/fourier.hpp"
@@ -51,6 +52,47 @@ void xy(const Section& s, std::string_view k, double& x, double& y) {
   x = v[0], y = v[1];
 }
 
+// The 1-D field of an axis field: the rows of `file` (positions in the config's length unit) or
+// `positions` and `levels`, read by the 1-D field's own readers (friction_field.hpp).
+FrictionField axis_profile(const Section& f, const InputUnits& u) {
+  const FieldInterpolation interpolation = [&] {
+    try {
+      return parse_field_interpolation(f.text("interpolation", "steps"));
+    } catch (const InvalidParameter& e) {
+      throw InvalidParameter(f.key("interpolation"), e.value(), e.allowed());
+    }
+  }();
+  if (f.has("file")) {
+    if (f.has("positions") || f.has("levels"))
+      throw InvalidParameter(f.key("file"), f.text("file", ""),
+                             "give either file or positions and levels, not both");
+    const FrictionField read = [&] {
+      try {
+        return FrictionField::from_csv(f.text("file", ""), interpolation);
+      } catch (const InvalidParameter& e) {  // "friction field <path>:<line> ...": the key's file
+        constexpr std::string_view kReader = "friction field";
+        std::string where = e.name();
+        if (!where.starts_with(kReader)) throw;
+        where.erase(0, kReader.size());
+        throw InvalidParameter(f.key("file") + where, e.value(), e.allowed());
+      }
+    }();
+    std::vector<FieldNode> nodes(read.nodes().begin(), read.nodes().end());
+    for (FieldNode& n : nodes) n.position = u(Dimension::length, n.position);
+    return FrictionField(std::move(nodes));
+  }
+  if (!f.has("positions") || !f.has("levels"))
+    throw InvalidParameter(f.key(f.has("positions") ? "levels" : "positions"), "missing",
+                           "is required for an axis field (or give file)");
+  const std::vector<double> positions = f.list("positions"), levels = f.list("levels");
+  try {
+    return FrictionField::samples(positions, levels, interpolation);
+  } catch (const InvalidParameter& e) {
+    const bool position = e.name().find("position") != std::string::npos;
+    throw InvalidParameter(f.key(position ? "positions" : "levels"), e.value(), e.allowed());
+  }
+}
+
 PlanarField make_field(const Section& f, const InputUnits& u) {
   const std::string type = f.text("type", "uniform");
   const double c_mu = f.number("c_mu", 2.5);
@@ -86,8 +128,14 @@ PlanarField make_field(const Section& f, const InputUnits& u) {
     g.levels = f.list("levels");
     return g;
   }
+  if (type == "axis") {
+    AxisField a{axis_profile(f, u)};
+    xy(f, "origin", a.origin_x, a.origin_y);
+    a.angle = f.number("angle", 0);
+    return a;
+  }
   throw InvalidParameter(f.key("type"), type,
-                         "must be uniform, half-plane, strip, rectangle, circle or grid");
+                         "must be uniform, half-plane, strip, rectangle, circle, grid or axis");
 }
 
 ContactPatch make_patch(const Section& p) {
@@ -233,6 +281,9 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
       kFrictionNames.names,
       [&] { return law_of_coefficients(st.scales.mu(), mu_static, std::nullopt); }, "");
   const Section field = section("field");
+  // An axis field's file is an input of the run (io/run_files.hpp), registered under its key
+  // before it is read: an output naming it is refused naming the output and field.file.
+  if (field.has("file")) register_input_file(field.text("file", ""), "field.file");
   st.problem.field = with_user_names(
       kFieldNames.names,
       [&] {

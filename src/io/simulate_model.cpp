@@ -91,8 +91,7 @@ FrictionField inline_field(const SimulateConfig& c, FieldInterpolation interpola
                                  "] = " + format_number(x[i - 1]) + " (strictly increasing)");
     if (!(level[i] >= 0)) throw InvalidParameter("field_levels" + at, level[i], "must be >= 0");
   }
-  if (interpolation == FieldInterpolation::linear) return FrictionField::ramps(x, level);
-  return FrictionField::steps(std::vector<double>(x.begin() + 1, x.end()), level);
+  return FrictionField::samples(x, level, interpolation);
 }
 
 // The table's field from field_file, positions converted to [-] in SI runs (m -> x/L), or from

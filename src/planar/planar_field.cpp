@@ -79,6 +79,17 @@ void validate(const PlanarField& field) {
                        throw InvalidParameter("levels", f.levels[i],
                                               "must be finite and in (0, 1e6] (value " + std::to_string(i) + ")");
                  },
+                 [](const AxisField& f) {
+                   require_point("origin_x", f.origin_x, "origin_y", f.origin_y);
+                   require_finite("angle", f.angle);
+                   // The FrictionField checked its nodes; a planar level must be > 0 everywhere.
+                   if (!(f.field.min_level() > 0))
+                     throw InvalidParameter("levels", f.field.min_level(),
+                                            "must be > 0 everywhere on a planar table (a level "
+                                            "of 0 holds nothing)");
+                   if (!(f.field.max_level() <= 1e6))
+                     throw InvalidParameter("levels", f.field.max_level(), "must be <= 1e6");
+                 },
              },
              field);
 }
@@ -123,6 +134,10 @@ double planar_level(const PlanarField& field, double x, double y) {
                           return (1 - a) * (1 - b) * at(i, j) + a * (1 - b) * at(i + 1, j) +
                                  (1 - a) * b * at(i, j + 1) + a * b * at(i + 1, j + 1);
                         },
+                        [&](const AxisField& f) {
+                          return f.field(std::cos(f.angle) * (x - f.origin_x) +
+                                         std::sin(f.angle) * (y - f.origin_y));
+                        },
                     },
                     field);
 }
@@ -157,6 +172,12 @@ PlanarField rotated(const PlanarField& field, double angle) {
                         },
                         [&](const GridField& f) {
                           GridField r = f;
+                          rotate(angle, r.origin_x, r.origin_y);
+                          r.angle += angle;
+                          return PlanarField(r);
+                        },
+                        [&](const AxisField& f) {
+                          AxisField r = f;
                           rotate(angle, r.origin_x, r.origin_y);
                           r.angle += angle;
                           return PlanarField(r);

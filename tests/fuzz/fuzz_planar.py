@@ -39,7 +39,7 @@ VALUES = ["0", "-1", "nan", "inf", "-inf", "1e300", "-1e300", "1e-300", "2", "0.
           '"abc"', "[]", "[1.0]", "[1.0, 2.0, 3.0, 4.0]", "[nan, 1.0, 1.0]", "true", "3.5"]
 ALTERNATIVES = {
     ("part", "shape"): ['"point"', '"disc"', '"polygon"', '"points"', '"blob"'],
-    ("field", "type"): ['"uniform"', '"half-plane"', '"strip"', '"rectangle"', '"grid"', '"x"'],
+    ("field", "type"): ['"uniform"', '"half-plane"', '"strip"', '"rectangle"', '"grid"', '"axis"', '"x"'],
     ("table.x", "profile"): ['"fourier"', '"sampled"'],
 }
 EXTRA = {  # keys that other shapes and types need, with good and bad values
@@ -49,7 +49,10 @@ EXTRA = {  # keys that other shapes and types need, with good and bad values
              "loads": ["[0.5, 0.5]", "[0.6, 0.6]", "[1.5, -0.5]"], "subdivisions": ["2", "0"]},
     "field": {"levels": ["[1.0, 2.0, 1.0, 2.0]", "[1.0, nan, 1.0, 1.0]"], "dx": ["0.1"], "dy": ["0.1"],
               "nx": ["2", "1"], "ny": ["2"], "half_width": ["0.1", "0"], "half_length": ["0.2"],
-              "origin": ["[0.1, 0.0]"], "angle": ["0.3", "nan"], "level": ["2.0", "-1"], "colour": ['"red"']},
+              "origin": ["[0.1, 0.0]"], "angle": ["0.3", "nan"], "level": ["2.0", "-1"], "colour": ['"red"'],
+              "positions": ["[0.0, 0.1, 0.2, 0.3]", "[0.3, 0.1]", "[0.1]"],
+              "interpolation": ['"linear"', '"steps"', '"cubic"'],
+              "file": ['"missing_field.csv"']},
 }
 SET_VALUES = ["0", "-1", "nan", "inf", "1e300", "2", "0.5", "abc", "", "0.1,0.2", "[1, 2, 3]",
               "0,0,0", "[[0, 0, 0]]", "[[0, 0]]", "[[0, 0, nan]]", "3.5", "point", "fourier"]

@@ -59,6 +59,11 @@ class FrictionField {
   /// positions.size() >= 1.
   static FrictionField ramps(const std::vector<double>& positions,
                              const std::vector<double>& levels);
+  /// Samples (positions[i], levels[i]) as the rows of a field file: steps (each level holds from
+  /// its position to the next, the first also before it) or linear (ramps through them).
+  /// positions strictly increasing, one level per position, at least one.
+  static FrictionField samples(const std::vector<double>& positions,
+                               const std::vector<double>& levels, FieldInterpolation interpolation);
   /// Reads a CSV of rows "position,level" (one leading header line, blank lines and '#'
   /// comments allowed; positions strictly increasing; levels finite, in [0, 1e50], > 0
   /// somewhere). steps: each level holds from its position to the next (the first also before

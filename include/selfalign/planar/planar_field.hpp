@@ -5,10 +5,14 @@
 /// mu_1). A closed set, each exact: uniform; rough regions with a linear transition band of
 /// width w inside their boundary (m = 1 + (c_mu - 1) clamp(depth / w, 0, 1), depth = the signed
 /// distance into the region): a half-plane (the two-region table of eqs. 7-9 along any
-/// direction), a strip, a rectangular and a circular pocket; and a sampled grid (bilinear).
+/// direction), a strip, a rectangular and a circular pocket; a sampled grid (bilinear); and the
+/// 1-D friction field along an axis (AxisField: the 1-D FrictionField is the family's one-axis
+/// case).
 
 #include <variant>
 #include <vector>
+
+#include "selfalign/friction/friction_field.hpp"
 
 namespace selfalign {
 
@@ -65,8 +69,22 @@ struct GridField {
   std::vector<double> levels = {1, 1, 1, 1};
 };
 
+/// The 1-D table's friction field (friction_field.hpp: steps, ramps, the samples of a CSV file)
+/// laid along the direction n = (cos angle, sin angle) from `origin`, constant across it:
+///   m(x, y) = field(n . (p - origin)).
+/// The 1-D field is the one-axis case of the planar family: a point contact at angle 0 and
+/// origin 0 reads field(x) itself, and a contact patch averages the field over its points as
+/// eq. (7)'s footprint averages it in 1-D. Levels in (0, 1e6] everywhere (as a grid's).
+struct AxisField {
+  FrictionField field;
+  double origin_x = 0, origin_y = 0;  ///< where the field's position 0 lies [-]
+  double angle = 0;                   ///< direction of increasing position [rad]
+  bool operator==(const AxisField&) const = default;
+};
+
 using PlanarField = std::variant<UniformPlanarField, HalfPlaneStepField, StripField,
-                                 RectangularPocketField, CircularPocketField, GridField>;
+                                 RectangularPocketField, CircularPocketField, GridField,
+                                 AxisField>;
 
 /// Throws InvalidParameter naming the first field out of range (a grid level that is NaN, not
 /// positive or a count that does not match nx ny names "levels").
