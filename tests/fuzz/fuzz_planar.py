@@ -4,7 +4,9 @@ two keys of a small valid TOML config (numbers to 0, negatives, NaN, inf, huge, 
 types, wrong array lengths; unknown keys; removed keys; other shapes and field types) and runs
 one of simulate/steady/field/stop with --csv and --out; some cases set keys with --set
 SECTION.KEY=VALUE instead of (or over) the file (good, bad and unknown keys, malformed
-assignments: the same key table and checks as the file's values). A few cases instead name the config as
+assignments: the same key table and checks as the file's values). About 40% of the cases are
+valid-leaning instead: whole valid sections swapped in (every field type, part shape) and valid
+--set flags; these must run, and a refusal fails the case. A few cases instead name the config as
 an output, or one file by both outputs (./o.csv and o.csv, a parent path, a link: issue 20, D24,
 D25), or nest the config 1e5 deep (D23): these must be refused. A case fails on a signal, an
 exit code other than 0 or 2, an exit 2 whose stderr is not one "selfalign: error: " line or that
@@ -54,6 +56,31 @@ EXTRA = {  # keys that other shapes and types need, with good and bad values
               "interpolation": ['"linear"', '"steps"', '"cubic"'],
               "file": ['"missing_field.csv"']},
 }
+# Whole sections that are valid (each field type and part shape with the keys it needs): a
+# "valid-leaning" case swaps in one or two of them and sets valid keys, so that runs go ahead
+# and the solvers, not only the reader, see varied input.
+VALID_SECTIONS = {
+    "field": [
+        {"type": '"uniform"', "level": "2.0"},
+        {"type": '"half-plane"', "origin": "[0.2, 0.0]", "angle": "0.3", "width": "0.05", "c_mu": "3.0"},
+        {"type": '"strip"', "origin": "[0.2, 0.0]", "angle": "0.1", "half_width": "0.1", "width": "0.05", "c_mu": "2.0"},
+        {"type": '"rectangle"', "centre": "[0.3, 0.0]", "half_length": "0.1", "half_width": "0.2", "width": "0.05", "c_mu": "2.5"},
+        {"type": '"grid"', "origin": "[-0.5, -0.5]", "dx": "0.5", "dy": "0.5", "nx": "3", "ny": "3",
+         "levels": "[1.0, 1.2, 1.5, 1.0, 1.3, 2.0, 1.1, 1.4, 3.0]"},
+        {"type": '"axis"', "positions": "[0.0, 0.1, 0.25]", "levels": "[1.0, 1.5, 3.0]", "angle": "0.2"},
+        {"type": '"axis"', "positions": "[0.0, 0.15]", "levels": "[1.0, 2.5]", "interpolation": '"linear"'},
+    ],
+    "part": [
+        {"inertia": "0.02"},
+        {"inertia": "0.01", "shape": '"disc"', "radius": "0.1", "rings": "2", "sectors": "5"},
+        {"inertia": "0.01", "shape": '"polygon"', "xs": "[-0.1, 0.1, 0.0]", "ys": "[-0.05, -0.05, 0.1]"},
+        {"inertia": "0.01", "shape": '"points"', "xs": "[-0.1, 0.1]", "ys": "[0.0, 0.0]", "loads": "[0.5, 0.5]"},
+    ],
+    "table.y": [{"profile": '"three-phase"', "period": "0.5", "stroke": "0.02", "a2": "2.0", "a3": "1.0"}],
+    "friction": [{"mu_static": "0.3"}, {}],
+}
+VALID_SETS = ["run.periods=2", "run.theta=1", "run.step=0.025", "field.c_mu=3", "table.x.a2=4",
+              "run.pose=0.05,0.02,0.3", "run.twist=0,0,0", "stop.max_periods=5"]
 SET_VALUES = ["0", "-1", "nan", "inf", "1e300", "2", "0.5", "abc", "", "0.1,0.2", "[1, 2, 3]",
               "0,0,0", "[[0, 0, 0]]", "[[0, 0]]", "[[0, 0, nan]]", "3.5", "point", "fourier"]
 
@@ -108,6 +135,17 @@ def mutate(rng):
     return cfg
 
 
+def valid_leaning(rng):
+    """One or two valid sections swapped in, and zero to two valid --set flags."""
+    cfg = {k: (dict(v) if isinstance(v, dict) else v) for k, v in BASE.items()}
+    for section in rng.sample(list(VALID_SECTIONS), rng.choice([1, 2])):
+        cfg[section] = dict(rng.choice(VALID_SECTIONS[section]))
+    flags = []
+    for value in rng.sample(VALID_SETS, rng.choice([0, 1, 2])):
+        flags += ["--set", value]
+    return cfg, flags
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--binary", required=True)
@@ -119,7 +157,8 @@ def main():
     rng = random.Random(a.seed)
     failures, slow, ok, refused = [], 0, 0, 0
     for case in range(a.cases):
-        cfg = mutate(rng)
+        valid = rng.random() < 0.4
+        cfg, valid_flags = valid_leaning(rng) if valid else (mutate(rng), [])
         command = rng.choice(["simulate", "steady", "field", "stop"])
         special = rng.choice(["aliased outputs", "output over config", "deep config"]) \
             if rng.random() < 0.08 else None
@@ -144,7 +183,8 @@ def main():
                 f.write(text)
             work = os.path.join(root, "work")
             os.mkdir(work)
-            args = [a.binary, "planar", command, "--config", path] + outputs + set_flags(rng)
+            flags = valid_flags if valid else set_flags(rng)
+            args = [a.binary, "planar", command, "--config", path] + outputs + flags
             try:
                 r = subprocess.run(args, cwd=work, capture_output=True, text=True, timeout=a.timeout)
             except subprocess.TimeoutExpired:
@@ -161,6 +201,8 @@ def main():
                     why = "stderr not one error line: " + r.stderr[:300]
                 elif left:
                     why = f"left {left}"
+                elif valid and not special:
+                    why = "a valid config was refused: " + lines[0][:300]
             else:
                 ok += 1
                 # docs/cli.md "Warnings": a run that goes ahead may add warning lines (planar
