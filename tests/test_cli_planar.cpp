@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -205,6 +206,38 @@ TEST(CliPlanar, SetGivesAKeyOnTheCommandLineAsTheFileWould) {
                                        "--csv", "t.csv", "--out", "r.json"}),
                          {name});
   }
+}
+
+// planar parameters: the view's names, values as the file gives them, and the CSV of them; a
+// change by element name (field.levels[1]) is listed after it, and a bad one refused.
+TEST(CliPlanar, ParametersListsTheModelsNumbersAsTheFileGivesThem) {
+  CliSandbox box;
+  const std::string cfg = write_config(
+      box, "p.toml",
+      kBase + kPart + "[field]\ntype = \"axis\"\npositions = [0.2, 0.4]\nlevels = [1, 3]\n");
+  const auto r = box.run({"planar", "parameters", "--config", cfg, "--set", "field.levels[1]=2.5",
+                          "--json", "--csv", "p.csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["units"], "dimensionless");
+  std::map<std::string, json> by_name;
+  for (const json& p : j["parameters"]) by_name[p["name"].get<std::string>()] = p;
+  EXPECT_EQ(by_name.at("table.x.a2")["value"].get<double>(), 3.0);
+  EXPECT_EQ(by_name.at("table.x.a2")["unit"], "[-]");
+  EXPECT_EQ(by_name.at("friction.mu_static")["value"].get<double>(), 0.3);
+  EXPECT_EQ(by_name.at("part.length")["value"].get<double>(), 0.2);
+  EXPECT_EQ(by_name.at("field.positions[1]")["value"].get<double>(), 0.4);
+  EXPECT_EQ(by_name.at("field.levels[1]")["value"].get<double>(), 2.5);  // after --set
+  EXPECT_EQ(by_name.count("run.step"), 0u);  // a setting
+  EXPECT_EQ(by_name.count("part.nx"), 0u);   // discretisation
+  const auto rows = lines(read_text(box.work_file("p.csv")));
+  ASSERT_EQ(rows.size(), 1u + j["parameters"].size());
+  EXPECT_EQ(rows[0], "name,value,unit,group");
+  CliSandbox bad;
+  const std::string bad_cfg = write_config(bad, "p.toml", kBase + kPart);
+  expect_clean_failure(bad, bad.run({"planar", "parameters", "--config", bad_cfg, "--set",
+                                     "run.pose[0]=1", "--csv", "p.csv"}),
+                       {"--set", "run.pose"});
 }
 
 // planar steady is the fixed point of the period map (issue 21), and reports a part that walks

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ using nlohmann::json;
 using testing::expect_invalid;
 using testing::TempDir;
 using testing::write_text;
+using testing::read_text;
 using D = Dimension;
 using V = ValueType;
 
@@ -267,6 +269,69 @@ TEST(PlanarConfig, AnAxisFieldIsTheOneDimensionalFieldFromTheConfigOrAFile) {
                  "field.interpolation");
   expect_invalid([&] { load_planar_config(dir.file("b.toml"), {"field.levels=1,2"}); },
                  "field.file");
+}
+
+// The planar parameter view: the numbers the model read, as the file gives them (defaults where
+// unset), settings left out, arrays by element, only the keys the config's kinds read; and a
+// parameter changed by its name is the file that holds that value (second method: the file).
+TEST(PlanarConfig, TheParameterViewListsWhatTheModelReadAsTheFileGivesIt) {
+  TempDir dir;
+  const std::string axis = "[field]\ntype = \"axis\"\npositions = [0.003, 0.004]\nlevels = [1, 2.5]\n";
+  write_text(dir.file("a.toml"), std::string(kPlanar) + axis);
+  std::map<std::string, ModelParameter> view;
+  for (const ModelParameter& p : planar_model_parameters(dir.file("a.toml"))) {
+    EXPECT_TRUE(view.emplace(p.name, p).second) << "listed twice: " << p.name;
+  }
+  const auto expect = [&](const std::string& name, double value, const std::string& unit) {
+    const auto it = view.find(name);
+    ASSERT_NE(it, view.end()) << name;
+    EXPECT_EQ(it->second.value, value) << name;
+    EXPECT_EQ(it->second.unit, unit) << name;
+  };
+  expect("table.x.a2", 4.5, "[m/s^2]");            // the file's numbers, in its units
+  expect("table.x.period", 0.02, "[s]");
+  expect("part.inertia", 1e-8, "[kg m^2]");
+  expect("scales.mu", 0.2, "[-]");                 // defaults where the file is silent
+  expect("scales.g", 9.81, "[m/s^2]");
+  expect("field.positions[0]", 0.003, "[m]");
+  expect("field.levels[1]", 2.5, "[-]");
+  expect("field.angle", 0.0, "[rad]");
+  expect("run.pose[0]", 0.0, "[m]");
+  expect("run.pose[2]", 0.0, "[rad]");
+  expect("run.twist[2]", 0.0, "[rad/s]");
+  for (const char* absent : {"field.c_mu", "field.width", "run.step", "run.periods",
+                             "scales.length", "part.mass", "table.x.jerk", "stop.max_periods"})
+    EXPECT_EQ(view.count(absent), 0u) << absent;
+  EXPECT_EQ(view.at("field.levels[1]").group, "field");
+
+  // By name, as the file: levels [1, 3] and a2 = 5.
+  write_text(dir.file("b.toml"), std::regex_replace(std::string(kPlanar) + axis,
+                                                    std::regex("levels = \\[1, 2.5\\]"),
+                                                    "levels = [1, 3]"));
+  write_text(dir.file("b.toml"), std::regex_replace(read_text(dir.file("b.toml")),
+                                                    std::regex("a2 = 4.5"), "a2 = 5"));
+  const PlanarSetup set = load_planar_config(dir.file("a.toml"), {"field.levels[1]=3", "table.x.a2=5"});
+  const PlanarSetup file = load_planar_config(dir.file("b.toml"));
+  EXPECT_EQ(std::get<AxisField>(set.problem.field), std::get<AxisField>(file.problem.field));
+  EXPECT_EQ(set.problem.motion.first->peak_acceleration(),
+            file.problem.motion.first->peak_acceleration());
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"field.levels[2]=3"}); }, "--set");
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"run.pose[0]=3"}); }, "--set");
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"run.step[0]=3"}); }, "--set");
+  expect_invalid([&] { load_planar_config(dir.file("a.toml"), {"field.levels[x]=3"}); }, "--set");
+
+  // A dimensionless config: lengths in [-], angles in [rad].
+  write_text(dir.file("d.toml"), "units = \"dimensionless\"\n[table.x]\nperiod = 1\nstroke = 0.084\n"
+                                 "a2 = 3\na3 = 0.9\n[part]\ninertia = 0.5\n[run]\nstep = 0.01\n"
+                                 "pose = [0.1, 0.2, 0.3]\n");
+  std::map<std::string, ModelParameter> d;
+  for (const ModelParameter& p : planar_model_parameters(dir.file("d.toml"))) d.emplace(p.name, p);
+  EXPECT_EQ(d.at("run.pose[1]").value, 0.2);
+  EXPECT_EQ(d.at("run.pose[1]").unit, "[-]");
+  EXPECT_EQ(d.at("run.pose[2]").unit, "[rad]");
+  EXPECT_EQ(d.at("table.x.a2").unit, "[-]");
+  EXPECT_EQ(d.at("part.inertia").unit, "[-]");
+  EXPECT_EQ(d.count("field.level"), 1u);  // the default uniform field's level
 }
 
 // Every key of the planar key table is documented in docs/planar.md (as `key`).

@@ -213,6 +213,30 @@ void run_field(const PlanarFlags& f) {
   deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.str());
 }
 
+// The parameter view (planar_model_parameters): each number the model depends on, as the
+// config gives it (after --set), with unit, section and meaning.
+void run_parameters(const PlanarFlags& f) {
+  require_report_paths(f.out, ExtraFile{"csv", f.csv});
+  const std::vector<ModelParameter> view = planar_model_parameters(f.config, f.set);
+  const PlanarSetup s = load_planar_config(f.config, f.set);
+  json r = {{"config", s.path}, {"units", s.si ? "si" : "dimensionless"}};
+  r["parameters"] = json::array();
+  TextTable t;
+  std::ostringstream csv;
+  csv << "name,value,unit,group\n";
+  for (const ModelParameter& p : view) {
+    r["parameters"].push_back({{"name", p.name},
+                               {"value", number_or_null(p.value)},
+                               {"unit", p.unit},
+                               {"group", p.group},
+                               {"meaning", p.meaning}});
+    t.row(p.name, table_text(number_or_null(p.value)) + " " + p.unit);
+    csv << p.name << ',' << csv_number(p.value) << ',' << p.unit << ',' << p.group << '\n';
+  }
+  t.row("units", s.si ? "si" : "dimensionless");
+  deliver_report_with_file(r, t.str(), f.as_json, f.out, ExtraFile{"csv", f.csv}, csv.str());
+}
+
 void run_stop(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
   const Si si{s};
@@ -262,8 +286,9 @@ void add_planar_sub(CLI::App* parent, const char* name, const char* help, void (
       ->required()->type_name("FILE");
   sub->add_option("--set", f->set,
                   "set a config key over the file's value, as the file's table and key: "
-                  "--set run.step=4e-5 --set table.x.a2=5 --set run.pose=0.01,0,0 (repeatable; "
-                  "the value is checked as in the file; docs/planar.md lists the keys)")
+                  "--set run.step=4e-5 --set table.x.a2=5 --set run.pose=0.01,0,0, or one element "
+                  "of an array the file gives: --set field.levels[2]=1.5 (repeatable; the value is "
+                  "checked as in the file; docs/planar.md lists the keys)")
       ->type_name("SECTION.KEY=VALUE");
   sub->add_option("--csv", f->csv, csv_help)->type_name("FILE")->group("Output");
   sub->add_option("--out", f->out, "write the JSON report to FILE")
@@ -297,6 +322,12 @@ void add_planar_command(CLI::App& app) {
                  "stopping in the rough region from each [stop] entry pose: end pose, process "
                  "time, the 2-D end region and the orientation error",
                  &run_stop, "write one row per entry to FILE");
+  add_planar_sub(sub, "parameters",
+                 "the model's named parameters (its parameter view): every number the planar "
+                 "model of this config depends on (scales, table motion, part, friction, field, "
+                 "initial pose and twist) with its value as the config gives it and its unit; "
+                 "--set SECTION.KEY=VALUE or SECTION.KEY[i]=VALUE changes them first",
+                 &run_parameters, "write one row per parameter (name,value,unit,group) to FILE");
 }
 
 }  // namespace selfalign::cli

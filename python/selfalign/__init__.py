@@ -181,6 +181,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     ModelParameter,
     model_parameters,
     with_parameters,
+    planar_model_parameters,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

@@ -13,6 +13,7 @@
 #include "repr.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/io/parameter_view.hpp"
+#include "selfalign/io/planar_config.hpp"
 
 namespace selfalign::python {
 namespace {
@@ -119,6 +120,24 @@ stribeck_velocity, stribeck_exponent, viscous), g in SI runs, the friction table
 c_mu for two-region), the profile's (arrays by element, "accelerations[0]") with the factors
 amplitude_scale and time_scale (y(t) -> a y(t / p)), and t0, x0, v0. Raises InvalidParameter
 for a config that does not resolve.)doc");
+  m.def(
+      "planar_model_parameters",
+      [](const py::object& path, const std::vector<std::string>& set) {
+        if (!py::isinstance<py::str>(path) && !py::hasattr(path, "__fspath__"))
+          throw py::type_error("config: expected a str or os.PathLike, got " +
+                               python_type_name(path));
+        return planar_model_parameters(py::str(py::module_::import("os").attr("fspath")(path)),
+                                       set);
+      },
+      py::arg("config"), py::arg("set") = std::vector<std::string>{}, R"doc(
+The named parameters of the planar model a config file describes (C++
+planar_model_parameters, io/planar_config.hpp; `selfalign planar parameters`): every number the
+model depends on (scales, table motion, part, friction, field, initial pose and twist), in the
+order the model reads them, with its value as the file gives it (its default where unset) and
+unit; arrays by element ("field.levels[2]", "run.pose[0]"). Settings (the unit length, the
+reported mass, discretisation, solver and analysis keys) are not parameters. `set` holds
+"SECTION.KEY=VALUE" or "SECTION.KEY[i]=VALUE" changes applied first, checked as the file's
+values are (the same names). Raises InvalidParameter naming the key.)doc");
   m.def(
       "with_parameters",
       [](const py::dict& config, const py::dict& values) {

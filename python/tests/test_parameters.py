@@ -53,3 +53,35 @@ def test_a_fields_samples_in_the_config_are_parameters():
     assert names["field_levels[1]"].value == 2.5 and "c_mu" not in names
     changed = sa.with_parameters(config, {"field_levels[1]": 3.0})
     assert changed["friction"] == "field" and changed["field_levels"] == [1.0, 3.0]
+
+
+def test_the_planar_view_gives_the_files_numbers(tmp_path):
+    # Second method: the example file read with the standard library's TOML reader. Every
+    # parameter the file gives is listed with the file's value; a setting is not listed.
+    import pathlib
+    import tomllib
+    example = pathlib.Path(__file__).resolve().parents[2] / "examples" / "planar.toml"
+    doc = tomllib.loads(example.read_text())
+    view = {p.name: p for p in sa.planar_model_parameters(example)}
+    given = 0
+    for name, p in view.items():
+        section, _, key = name.rpartition(".")
+        node = doc
+        for part in section.split("."):
+            node = node.get(part, {})
+        key, _, index = key.partition("[")
+        if key in node:
+            value = node[key][int(index[:-1])] if index else node[key]
+            assert p.value == value, name
+            given += 1
+    assert given >= 20
+    assert "run.step" not in view and "scales.length" not in view and "part.mass" not in view
+    assert view["field.centre[0]"].unit == "[m]" and view["run.pose[2]"].unit == "[rad]"
+    # a change by name is applied first, checked as the file's values are
+    changed = {p.name: p.value for p in sa.planar_model_parameters(
+        str(example), ["field.centre[0]=0.02", "table.x.a2=5"])}
+    assert changed["field.centre[0]"] == 0.02 and changed["table.x.a2"] == 5.0
+    with pytest.raises(sa.InvalidParameter, match="field.c_mu"):
+        sa.planar_model_parameters(example, ["field.c_mu=0.5"])
+    with pytest.raises(TypeError):
+        sa.planar_model_parameters(3)

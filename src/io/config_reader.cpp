@@ -272,16 +272,23 @@ std::vector<double> ConfigSection::converted(const KeySpec& key, std::vector<dou
   return v;
 }
 
+void ConfigSection::note(const KeySpec& key, std::vector<double> values) const {
+  if (reads_) reads_->push_back({&key, std::move(values)});
+}
+
 double ConfigSection::number(std::string_view k, double fallback) const {
   const KeySpec& key = spec(k, ValueType::number);
   const ConfigValue* v = value(k);
-  return units_(key.dimension, v ? std::get<double>(*v) : fallback);
+  const double given = v ? std::get<double>(*v) : fallback;
+  note(key, {given});
+  return units_(key.dimension, given);
 }
 
 double ConfigSection::required(std::string_view k) const {
   const KeySpec& key = spec(k, ValueType::number);
   const ConfigValue* v = value(k);
   if (!v) throw InvalidParameter(this->key(k), "missing", "is required");
+  note(key, {std::get<double>(*v)});
   return units_(key.dimension, std::get<double>(*v));
 }
 
@@ -303,7 +310,9 @@ std::string ConfigSection::text(std::string_view k, const std::string& fallback)
 std::vector<double> ConfigSection::list(std::string_view k, std::vector<double> fallback) const {
   const KeySpec& key = spec(k, ValueType::numbers);
   const ConfigValue* v = value(k);
-  return converted(key, v ? std::get<std::vector<double>>(*v) : std::move(fallback));
+  std::vector<double> given = v ? std::get<std::vector<double>>(*v) : std::move(fallback);
+  note(key, given);
+  return converted(key, std::move(given));
 }
 
 std::vector<std::vector<double>> ConfigSection::rows(std::string_view k) const {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <algorithm>
 #include <initializer_list>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -95,27 +96,29 @@ FrictionField axis_profile(const Section& f, const InputUnits& u) {
 
 PlanarField make_field(const Section& f, const InputUnits& u) {
   const std::string type = f.text("type", "uniform");
-  const double c_mu = f.number("c_mu", 2.5);
-  const double width = f.number("width", u.si() ? 0.1 * u.scales().length() : 0.1);
+  // The rough regions' band, read by the types that have one (so that the parameter view lists
+  // them only there); braced initialisers evaluate left to right.
+  const auto width = [&] { return f.number("width", u.si() ? 0.1 * u.scales().length() : 0.1); };
+  const auto c_mu = [&] { return f.number("c_mu", 2.5); };
   if (type == "uniform") return UniformPlanarField{f.number("level", 1.0)};
   if (type == "half-plane") {
-    HalfPlaneStepField h{0, 0, f.number("angle", 0), width, c_mu};
+    HalfPlaneStepField h{0, 0, f.number("angle", 0), width(), c_mu()};
     xy(f, "origin", h.origin_x, h.origin_y);
     return h;
   }
   if (type == "strip") {
-    StripField h{0, 0, f.number("angle", 0), f.required("half_width"), width, c_mu};
+    StripField h{0, 0, f.number("angle", 0), f.required("half_width"), width(), c_mu()};
     xy(f, "origin", h.origin_x, h.origin_y);
     return h;
   }
   if (type == "rectangle") {
     RectangularPocketField h{0, 0, f.number("angle", 0), f.required("half_length"),
-                             f.required("half_width"), width, c_mu};
+                             f.required("half_width"), width(), c_mu()};
     xy(f, "centre", h.centre_x, h.centre_y);
     return h;
   }
   if (type == "circle") {
-    CircularPocketField h{0, 0, f.required("radius"), width, c_mu};
+    CircularPocketField h{0, 0, f.required("radius"), width(), c_mu()};
     xy(f, "centre", h.centre_x, h.centre_y);
     return h;
   }
@@ -196,7 +199,17 @@ void apply_setting(json& doc, const std::string& assignment) {
   const std::size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InvalidParameter("--set", assignment, "must be SECTION.KEY=VALUE, e.g. run.step=4e-5");
-  const std::string name = assignment.substr(0, eq);
+  std::string name = assignment.substr(0, eq);
+  // "section.key[i]": element i of an array the config gives (the parameter view's names).
+  std::optional<std::size_t> element;
+  if (const std::size_t open = name.find('['); open != std::string::npos) {
+    const std::string index = name.substr(open + 1, name.size() - open - 2);
+    if (name.back() != ']' || index.empty() ||
+        index.find_first_not_of("0123456789") != std::string::npos || index.size() > 9)
+      throw InvalidParameter("--set", name, "must be SECTION.KEY or SECTION.KEY[i], i a whole number");
+    element = static_cast<std::size_t>(std::stoul(index));
+    name.erase(open);
+  }
   const std::size_t dot = name.rfind('.');
   const std::string section = dot == std::string::npos ? "" : name.substr(0, dot);
   const std::string key = dot == std::string::npos ? name : name.substr(dot + 1);
@@ -218,12 +231,31 @@ void apply_setting(json& doc, const std::string& assignment) {
     node = &child;
     begin = end + 1;
   }
-  (*node)[key] = to_json(parse_config_value(*spec, assignment.substr(eq + 1)));
+  const std::string text = assignment.substr(eq + 1);
+  if (!element) {
+    (*node)[key] = to_json(parse_config_value(*spec, text));
+    return;
+  }
+  json& array = (*node)[key];
+  if (spec->type != ValueType::numbers)
+    throw InvalidParameter("--set", name + "[" + std::to_string(*element) + "]",
+                           "only an array key has elements");
+  if (!array.is_array() || *element >= array.size())
+    throw InvalidParameter("--set", name + "[" + std::to_string(*element) + "]",
+                           array.is_array() ? "is beyond the " + std::to_string(array.size()) +
+                                                  " values the config gives"
+                                            : "the config does not give " + name +
+                                                  ": set the whole array, " + name + "=...");
+  KeySpec one = *spec;  // one element: a number of the key's (component's) dimension
+  one.type = ValueType::number;
+  one.components = {};
+  array[*element] = to_json(parse_config_value(one, text));
 }
 
 }  // namespace
 
-PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set) {
+PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set,
+                               std::vector<ConfigSection::Read>* reads) {
   json doc = read_document(path, kPlanarDocument);
   if (!doc.is_object()) throw InvalidParameter("config", path, "must be a table of sections");
   for (const std::string& assignment : set) apply_setting(doc, assignment);
@@ -235,13 +267,18 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
   if (units != "si" && units != "dimensionless")
     throw InvalidParameter("units", units, "must be \"si\" or \"dimensionless\"");
   st.si = units == "si";
-  const Section sc(values, "scales", InputUnits());  // the scales are the unit system itself
+  Section sc(values, "scales", InputUnits());  // the scales are the unit system itself
+  sc.record_reads(reads);
   st.scales = with_user_names(
       kScalesNames.names,
       [&] { return Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81)); },
       "scales.");
   const InputUnits u = st.si ? InputUnits(st.scales) : InputUnits();
-  const auto section = [&](std::string name) { return Section(values, std::move(name), u); };
+  const auto section = [&](std::string name) {
+    Section s(values, std::move(name), u);
+    s.record_reads(reads);
+    return s;
+  };
   PlanarTableMotion& m = st.problem.motion;
   for (const char* axis : {"x", "y", "rotation"}) {
     const Section p = section(std::string("table.") + axis);

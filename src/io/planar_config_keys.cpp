@@ -1,7 +1,10 @@
 // The key table of the planar config: every section and key of docs/planar.md, with its type,
 // dimension (how an SI value converts to the dimensionless model) and meaning.
 
+#include <algorithm>
 #include <array>
+#include <iterator>
+#include <string>
 #include <vector>
 
 #include "selfalign/io/planar_config.hpp"
@@ -132,6 +135,19 @@ std::vector<KeySpec> make_keys() {
       {"stop", "max_periods", V::number, D::none, {}, {}, "",
        "periods before a part counts as never stopping (default 2000)"},
   });
+  // Settings: the unit L, the reported-only mass, the patch's and the grid's discretisation,
+  // the solver's and the analyses' own keys. Every other number is a model parameter (the
+  // parameter view, planar_model_parameters).
+  constexpr std::string_view kSettings[] = {
+      "scales.length", "part.mass", "part.rings", "part.sectors", "part.nx", "part.ny",
+      "part.subdivisions", "field.nx", "field.ny", "run.step", "run.theta", "run.periods",
+      "run.every", "run.transient", "run.window", "run.steady_periods", "run.tolerance"};
+  for (KeySpec& k : keys) {
+    const std::string name = qualified_key(k.section, k.name);
+    if (k.section == "field_map" || k.section == "stop" ||
+        std::find(std::begin(kSettings), std::end(kSettings), name) != std::end(kSettings))
+      k.role = KeyRole::setting;
+  }
   return keys;
 }
 

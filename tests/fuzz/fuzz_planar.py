@@ -2,7 +2,7 @@
 """Seeded fuzz of `selfalign planar` configs (standard library only): each case mutates one or
 two keys of a small valid TOML config (numbers to 0, negatives, NaN, inf, huge, tiny, wrong
 types, wrong array lengths; unknown keys; removed keys; other shapes and field types) and runs
-one of simulate/steady/field/stop with --csv and --out; some cases set keys with --set
+one of simulate/steady/field/stop/parameters with --csv and --out; some cases set keys with --set
 SECTION.KEY=VALUE instead of (or over) the file (good, bad and unknown keys, malformed
 assignments: the same key table and checks as the file's values). About 40% of the cases are
 valid-leaning instead: whole valid sections swapped in (every field type, part shape) and valid
@@ -159,7 +159,7 @@ def main():
     for case in range(a.cases):
         valid = rng.random() < 0.4
         cfg, valid_flags = valid_leaning(rng) if valid else (mutate(rng), [])
-        command = rng.choice(["simulate", "steady", "field", "stop"])
+        command = rng.choice(["simulate", "steady", "field", "stop", "parameters"])
         special = rng.choice(["aliased outputs", "output over config", "deep config"]) \
             if rng.random() < 0.08 else None
         with tempfile.TemporaryDirectory() as root:

@@ -33,6 +33,10 @@ enum class ValueType {
   rows      ///< an array of arrays of numbers (e.g. [stop] entries)
 };
 
+/// What a key is to the model: a parameter (a number the model depends on: the parameter view
+/// lists it) or a setting (a solver, output, unit or discretisation choice).
+enum class KeyRole { parameter, setting };
+
 /// One key of a config.
 struct KeySpec {
   std::string_view section;  ///< "" at the top level; "scales", "table.x", ... (dotted: nested)
@@ -48,6 +52,7 @@ struct KeySpec {
   std::string_view shape = {};  ///< the components named for messages, e.g. "[x, y, angle]"
   std::string_view unit = {};   ///< in SI runs, e.g. "[m]" (docs and help)
   std::string_view help = {};   ///< meaning, default, range
+  KeyRole role = KeyRole::parameter;  ///< number keys: parameter or setting
 };
 
 /// A config's keys and where a user reads them.
@@ -143,13 +148,25 @@ class ConfigSection {
   /// The rows (empty when unset), each element in model units.
   std::vector<std::vector<double>> rows(std::string_view k) const;
 
+  /// One number or array the section was asked for, as the config gives it (file units; the
+  /// fallback where the config does not set it): what the model read, for its parameter view.
+  struct Read {
+    const KeySpec* key;
+    std::vector<double> values;  ///< one value for a number key
+  };
+  /// Records every number(), required(), integer() and list() into `log` from now on (nullptr:
+  /// stop). `log` must outlive the reads.
+  void record_reads(std::vector<Read>* log) noexcept { reads_ = log; }
+
  private:
   const KeySpec& spec(std::string_view k, ValueType type) const;
   const ConfigValue* value(std::string_view k) const;
   std::vector<double> converted(const KeySpec& key, std::vector<double> v) const;
+  void note(const KeySpec& key, std::vector<double> values) const;
   const ConfigValues* values_;
   std::string section_;
   InputUnits units_;
+  std::vector<Read>* reads_ = nullptr;
 };
 
 }  // namespace selfalign

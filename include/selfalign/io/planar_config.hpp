@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "selfalign/io/config_reader.hpp"
+#include "selfalign/io/parameter_view.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/units.hpp"
@@ -53,7 +54,23 @@ const KeyTable& planar_config_keys();
 /// Reads and validates a .toml or .json planar configuration. `set` holds "section.key=value"
 /// assignments (the CLI's --set) applied over the file's values before they are checked, each
 /// value parsed by its key's type (parse_config_value: numbers "4e-5", arrays "0.01,0" or
-/// "[0.01, 0]", rows as JSON); InvalidParameter("--set", ...) for an unknown key.
-PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set = {});
+/// "[0.01, 0]", rows as JSON), or "section.key[i]=value" setting element i of an array the
+/// config gives; InvalidParameter("--set", ...) for an unknown key or an element out of range.
+/// `reads` (optional) receives every number and array the setup was built from, as the config
+/// gives them (file units; defaults where unset): the source of planar_model_parameters.
+PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set = {},
+                               std::vector<ConfigSection::Read>* reads = nullptr);
+
+/// The named parameter view of a planar config (issue 21 item 1; parameter_view.hpp is the 1-D
+/// one): every number the model built from this config depends on, in the order it was read,
+/// with its value as the config gives it (SI in an SI config: its file's units; the default
+/// where the config does not set it), unit, group (the section) and meaning (the key's help).
+/// A parameter is a number key whose role is KeyRole::parameter (settings: the unit L, the
+/// reported mass, discretisation, solver and analysis keys), or element i of such an array
+/// ("field.levels[2]", "run.pose[0]"), only the keys the config's kinds read (an axis field has
+/// no c_mu). Changing one is `set` (the same names: "field.c_mu=3", "field.levels[2]=1.5"),
+/// checked as the file's values are. Throws what load_planar_config throws.
+std::vector<ModelParameter> planar_model_parameters(const std::string& path,
+                                                    const std::vector<std::string>& set = {});
 
 }  // namespace selfalign
