@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "planar_profiles.hpp"
@@ -14,9 +16,11 @@
 #include "selfalign/core/state.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/planar/contact_patch.hpp"
 #include "selfalign/planar/planar_rigid.hpp"
 #include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/time_stepping.hpp"
 
 namespace selfalign {
 namespace {
@@ -25,7 +29,7 @@ using testing_support::kPaper;
 const ThreePhaseProfile kHalf({0.5, 0.02, 2.5, 1.5});  // along y; its period divides 1.0
 
 struct Start {
-  core::Body body;
+  core::RigidBody body;
   PlanarPose pose;
   PlanarTwist twist;
 };
@@ -89,7 +93,7 @@ TEST(ContactCore, BadModelsAndStatesNameTheParameter) {
   const std::vector<PlanarPose> none;
   const std::vector<PlanarTwist> no_twist;
   EXPECT_THROW(core::make_state(model, 0, none, no_twist), InvalidParameter);
-  model.bodies.push_back({{0.0, point_patch()}, {}});  // zero inertia
+  model.bodies.push_back(core::RigidBody{{0.0, point_patch()}, {}});  // zero inertia
   const std::vector<PlanarPose> one{{}};
   const std::vector<PlanarTwist> one_twist{{}};
   try {
@@ -98,11 +102,119 @@ TEST(ContactCore, BadModelsAndStatesNameTheParameter) {
   } catch (const InvalidParameter& e) {
     EXPECT_EQ(e.name(), "bodies[0].inertia");
   }
-  model.bodies[0].part.inertia = 0.01;
+  std::get<core::RigidBody>(model.bodies[0]).part.inertia = 0.01;
   EXPECT_THROW(core::make_state(model, 0, none, one_twist), InvalidParameter);  // poses
   core::State s = core::make_state(model, 0, one, one_twist);
   model.bodies.push_back(model.bodies[0]);
   EXPECT_THROW(core::step(model, s, 1), InvalidParameter);  // a state of another model
+}
+
+// The paper's 1-D part as a body of the core (SliderBody): beside rigid bodies on one table,
+// each slider moves bit for bit as it does alone in the core, and as the 1-D Moreau stepper
+// moves it (the second method: advance_time_stepping, the 1-D wing's own driver; the same step
+// function, the table's velocity read from the profile's state() instead of velocity(), which
+// for the three-phase profile are the same numbers): a two-region table, a field of ramps under
+// a uniform footprint, a uniform table under a Stribeck and viscous law, and direction-dependent
+// kinetic coefficients.
+TEST(ContactCore, TheOneDimensionalPartIsABodyOfTheCore) {
+  const FieldFriction stairs(FrictionField::ramps({0.05, 0.08, 0.1, 0.16}, {1, 1.4, 1.2, 4}),
+                             UniformFootprint{0.02});
+  const FieldFriction two = two_region_friction(0.1, 0.05, 2.5);
+  const UniformFriction uniform;
+  struct Slider {
+    core::SliderBody body;
+    double x0, v0;
+  };
+  const std::vector<Slider> sliders{
+      {{&stairs, FrictionLaw{}}, 0.0, 0.0},
+      {{&two, FrictionLaw(1.3, 1.0, 0.8)}, 0.02, 0.1},
+      {{&uniform, FrictionLaw(1.2, 1.0).with_stribeck(0.05, 1.0).with_viscous(0.1)}, -0.1, -0.2}};
+  const TimeSteppingOptions options{1.0 / 1000, 0.5};
+  PlanarTableMotion motion;
+  motion.first = &kPaper;  // along x: the 1-D table's motion
+  const long long steps = 6000;
+  const std::vector<Start> rigid = starts();
+
+  // Alone in the core, and by the 1-D stepper.
+  std::vector<core::BodyState> alone;
+  for (const Slider& s : sliders) {
+    const core::Model one{motion, UniformPlanarField{}, {s.body}, options};
+    const std::vector<PlanarPose> pose{{s.x0, 0, 0}};
+    const std::vector<PlanarTwist> twist{{s.v0, 0, 0}};
+    core::State st = core::make_state(one, 0.0, pose, twist);
+    ASSERT_EQ(core::step(one, st, steps), steps);
+    alone.push_back(st.bodies[0]);
+    TimeSteppingState ts = make_time_stepping_state(kPaper, {0.0, s.x0, s.v0});
+    advance_time_stepping(kPaper, *s.body.friction, s.body.law, options, ts, steps);
+    SCOPED_TRACE(::testing::Message() << "slider at " << s.x0);
+    EXPECT_EQ(st.bodies[0].pose.x, ts.object.x);
+    EXPECT_EQ(st.bodies[0].twist.ux, ts.object.xd);
+    EXPECT_EQ(st.bodies[0].mode == PatchMode::stick, ts.stick);
+    EXPECT_EQ(st.bodies[0].pose.y, 0.0);
+    EXPECT_NE(ts.object.x, s.x0);  // it moved
+  }
+  EXPECT_GT(alone[0].pose.x, 0.1);  // across the stairs
+
+  // Mixed with rigid bodies: [rigid, slider, rigid, slider, slider].
+  core::Model model{motion, RectangularPocketField{0.6, 0.0, 0.0, 0.2, 0.3, 0.1, 2.5}, {}, options};
+  std::vector<PlanarPose> poses;
+  std::vector<PlanarTwist> twists;
+  const auto add_rigid = [&](const Start& r) {
+    model.bodies.push_back(r.body);
+    poses.push_back(r.pose);
+    twists.push_back(r.twist);
+  };
+  const auto add_slider = [&](const Slider& s) {
+    model.bodies.push_back(s.body);
+    poses.push_back({s.x0, 0, 0});
+    twists.push_back({s.v0, 0, 0});
+  };
+  add_rigid(rigid[1]);
+  add_slider(sliders[0]);
+  add_rigid(rigid[2]);
+  add_slider(sliders[1]);
+  add_slider(sliders[2]);
+  core::State state = core::make_state(model, 0.0, poses, twists);
+  ASSERT_EQ(core::step(model, state, steps), steps);
+  ASSERT_EQ(state.status, core::StepStatus::ok);
+  const std::size_t slider_at[] = {1, 3, 4};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const core::BodyState& b = state.bodies[slider_at[k]];
+    EXPECT_EQ(b.pose.x, alone[k].pose.x) << k;
+    EXPECT_EQ(b.twist.ux, alone[k].twist.ux) << k;
+    EXPECT_EQ(b.mode, alone[k].mode) << k;
+  }
+  for (const auto& [at, r] : {std::pair{std::size_t{0}, rigid[1]}, std::pair{std::size_t{2}, rigid[2]}}) {
+    PlanarRigidState one = make_planar_rigid_state(motion, 0.0, r.pose, r.twist);
+    advance_planar_rigid(motion, model.field, r.body.law, r.body.part, options, one, steps);
+    EXPECT_EQ(state.bodies[at].pose.x, one.pose.x) << at;
+    EXPECT_EQ(state.bodies[at].pose.angle, one.pose.angle) << at;
+    EXPECT_EQ(state.bodies[at].twist.omega, one.twist.omega) << at;
+  }
+}
+
+TEST(ContactCore, AOneDimensionalPartIsRefusedWhereItHasNoMeaning) {
+  PlanarTableMotion motion;
+  motion.first = &kPaper;
+  const UniformFriction level;
+  core::Model model{motion, UniformPlanarField{}, {core::SliderBody{}}, {1.0 / 1000, 0.5}};
+  const std::vector<PlanarPose> at_rest{{0, 0, 0}};
+  const std::vector<PlanarTwist> still{{}};
+  const auto name_of = [&](const std::vector<PlanarPose>& p, const std::vector<PlanarTwist>& t) {
+    try {
+      core::make_state(model, 0, p, t);
+    } catch (const InvalidParameter& e) {
+      return e.name();
+    }
+    return std::string("no throw");
+  };
+  EXPECT_EQ(name_of(at_rest, still), "bodies[0].friction");
+  model.bodies[0] = core::SliderBody{&level, {}};
+  EXPECT_EQ(name_of(at_rest, still), "no throw");
+  EXPECT_EQ(name_of({{0, 0.1, 0}}, still), "poses[0]");
+  EXPECT_EQ(name_of(at_rest, {{0, 0, 0.5}}), "twists[0]");
+  model.motion.rotation = &kHalf;
+  EXPECT_EQ(name_of(at_rest, still), "bodies[0].motion");
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ TEST(PlanarStudies, ANonFiniteTableEndsTheRunAtItsFirstStep) {
   EXPECT_EQ(run.end.step_index, 1);
   EXPECT_EQ(run.t.size(), 2u);  // the start and the failing step
   // The core names the table (failed_body -1).
-  const core::Model model{p.motion, p.field, {core::Body{p.part, p.law}}, p.options};
+  const core::Model model{p.motion, p.field, {core::RigidBody{p.part, p.law}}, p.options};
   const PlanarPose pose{};
   const PlanarTwist twist{};
   core::State s = core::make_state(model, 0, {&pose, 1}, {&twist, 1});

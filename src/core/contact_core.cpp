@@ -2,12 +2,38 @@
 #include <string>
 
 #include "../planar/rigid_body_step.hpp"
+#include "../simulate/moreau_slider_step.hpp"
 #include "selfalign/core/model.hpp"
 #include "selfalign/core/state.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/overloaded.hpp"
 
 namespace selfalign::core {
+
+namespace {
+
+// A 1-D part's stages: its level at the step's midpoint (contacts, loads), the 1-D Moreau
+// projection with the table's velocity increment along e1 (impulse), the theta update
+// (integrate): detail::moreau_slider_step, the 1-D stepper's own step.
+void slider_step(const PlanarTableMotion& motion, const SliderBody& b, double h, double th,
+                 const PlanarTablePose& tb, const PlanarTablePose& tb1, BodyState& st) {
+  const double yd = motion.e1_x * tb.vx + motion.e1_y * tb.vy;
+  const double yd1 = motion.e1_x * tb1.vx + motion.e1_y * tb1.vy;
+  const double x = st.pose.x, v = st.twist.ux;
+  const double m = b.friction->bound(x + 0.5 * h * v);
+  const detail::SliderCoefficients c(b.law);
+  double x1;
+  const double v1 =
+      b.law.velocity_dependent()
+          ? detail::moreau_slider_step<true>(b.law, c, h, th, m, x, v, v - (yd1 - yd), x1)
+          : detail::moreau_slider_step<false>(b.law, c, h, th, m, x, v, v - (yd1 - yd), x1);
+  st.pose.x = x1;
+  st.twist.ux = v1;
+  st.mode = v1 == 0 ? PatchMode::stick : PatchMode::slip;
+}
+
+}  // namespace
 
 void validate(const Model& m) {
   if (m.bodies.empty()) throw InvalidParameter("bodies", "none", "needs at least one body");
@@ -17,8 +43,20 @@ void validate(const Model& m) {
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const std::string name = "bodies[" + std::to_string(i) + "]";
     try {
-      validate(m.bodies[i].part);
-      require_planar_law(m.bodies[i].law);
+      std::visit(Overloaded{[](const RigidBody& b) {
+                              validate(b.part);
+                              require_planar_law(b.law);
+                            },
+                            [&m](const SliderBody& b) {
+                              if (!b.friction)
+                                throw InvalidParameter("friction", "none",
+                                                       "a 1-D part needs its friction level");
+                              if (m.motion.rotation)
+                                throw InvalidParameter("motion", "turning",
+                                                       "a 1-D part needs a table that does not "
+                                                       "turn (it moves along e1)");
+                            }},
+                 m.bodies[i]);
     } catch (const InvalidParameter& e) {
       throw InvalidParameter(name + "." + e.name(), e.value(), e.allowed());
     }
@@ -47,7 +85,18 @@ State make_state(const Model& model, double t, std::span<const PlanarPose> poses
     b.pose = one.pose;
     b.twist = one.twist;
     b.mode = one.mode;
-    s.contacts[i].resize(model.bodies[i].part.patch.size());
+    if (const auto* rigid = std::get_if<RigidBody>(&model.bodies[i])) {
+      s.contacts[i].resize(rigid->part.patch.size());
+    } else {  // a 1-D part: x along e1 and x' only; at rest it starts stuck (as the 1-D stepper)
+      const std::string at = "[" + std::to_string(i) + "]";
+      if (poses[i].y != 0 || poses[i].angle != 0)
+        throw InvalidParameter("poses" + at, "y or angle set",
+                               "a 1-D part has one coordinate, x (y and angle 0)");
+      if (twists[i].uy != 0 || twists[i].omega != 0)
+        throw InvalidParameter("twists" + at, "uy or omega set",
+                               "a 1-D part has one velocity, ux (uy and omega 0)");
+      b.mode = b.twist.ux == 0 ? PatchMode::stick : PatchMode::slip;
+    }
   }
   return s;
 }
@@ -67,8 +116,14 @@ long long step(const Model& model, State& s, long long steps, StepObserver* obse
     const PlanarTablePose tb1 = table_pose(model.motion, t1);
     // the body stages, block by block
     for (std::size_t i = 0; i < n; ++i)
-      detail::rigid_body_step(model.field, model.bodies[i].law, model.bodies[i].part, h, th,
-                              s.table, tb1, s.bodies[i], s.contacts[i]);
+      std::visit(Overloaded{[&](const RigidBody& b) {
+                              detail::rigid_body_step(model.field, b.law, b.part, h, th, s.table,
+                                                      tb1, s.bodies[i], s.contacts[i]);
+                            },
+                            [&](const SliderBody& b) {
+                              slider_step(model.motion, b, h, th, s.table, tb1, s.bodies[i]);
+                            }},
+                 model.bodies[i]);
     // checks: the table's motion (a profile that returns NaN), then each body
     if (!(std::isfinite(tb1.x) && std::isfinite(tb1.y) && std::isfinite(tb1.angle) &&
           std::isfinite(tb1.vx) && std::isfinite(tb1.vy) && std::isfinite(tb1.rate))) {

@@ -54,7 +54,7 @@ void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& fi
   validate(part);
   require_planar_law(law);
   // The part as the one body of a core model, its state as the core's: one staged step.
-  const core::Model model{motion, field, {core::Body{part, law}}, o};
+  const core::Model model{motion, field, {core::RigidBody{part, law}}, o};
   core::State s;
   s.t0 = st.t0, s.t = st.t, s.step_index = st.step_index, s.table = st.table;
   s.bodies.push_back({st.pose, st.twist, st.mode, st.pivot, st.sweeps, st.newton_steps,

@@ -4,6 +4,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "moreau_slider_step.hpp"
 
 namespace selfalign {
 
@@ -33,35 +34,16 @@ void moreau_loop(const Velocity& velocity, const Bound& bound, const FrictionLaw
                  const TimeSteppingOptions& o, TimeSteppingState& state, long long steps,
                  MotionObserver* observer) {
   const double h = o.step, theta = o.theta, t0 = state.t0;
-  const double s = law.static_coefficient(), kf = law.kinetic_forward(),
-               kb = law.kinetic_backward();
+  const detail::SliderCoefficients c(law);
   double x = state.object.x, v = state.object.xd, yd = state.table_velocity;
   const long long k0 = state.step_index;
   for (long long i = 1; i <= steps; ++i) {
     const double t = t0 + static_cast<double>(k0 + i) * h;
     const double yd1 = velocity(t);
     const double m = bound(x + 0.5 * h * v);  // the level at the step's midpoint
-    const double v_free = v - (yd1 - yd);  // velocity without friction
-    // Largest friction impulses: static to hold or catch, kinetic while sliding on.
-    const bool sliding_on = (v > 0 && v_free > 0) || (v < 0 && v_free < 0);
-    double v1 = 0;
-    if constexpr (!kSpeedDependent) {
-      // The three impulse bounds, products of the level (hoisted out of the loop when the
-      // level is constant: the uniform table) and a selection between them.
-      const double h_static = h * (s * m), h_forward = h * (kf * m), h_backward = h * (kb * m);
-      const double hold = sliding_on ? (v_free > 0 ? h_forward : h_backward) : h_static;
-      if (v_free > hold) v1 = v_free - h_forward;
-      else if (v_free < -hold) v1 = v_free + h_backward;
-    } else {  // mu_sigma(|v|) and c v at the step's start (explicit), the stick set-valued
-      const int sigma = v_free > 0 ? 1 : -1;
-      const double hold = h * ((sliding_on ? law.kinetic(sigma, std::abs(v)) : s) * m);
-      const double drag = sliding_on ? h * law.viscous() * std::abs(v) : 0.0;
-      if (std::abs(v_free) > hold + drag)
-        v1 = v_free - sigma * (hold + drag);
-      else if (!sliding_on && std::abs(v_free) > hold)
-        v1 = v_free - sigma * h * law.kinetic(sigma, 0.0) * m;
-    }
-    const double x1 = x + h * ((1 - theta) * v + theta * v1);
+    double x1;
+    const double v1 = detail::moreau_slider_step<kSpeedDependent>(law, c, h, theta, m, x, v,
+                                                                  v - (yd1 - yd), x1);
     if constexpr (kObserved) {
       const auto direction = static_cast<std::int8_t>(v1 > 0 ? 1 : v1 < 0 ? -1 : 0);
       observer->on_motion({t - h, t, x, v, x1, v1, direction, ArcEnd::time_step}, nullptr);

@@ -1,17 +1,20 @@
 #pragma once
 /// \file model.hpp
-/// The contact core's model (issue 21, first slice): immutable and runtime-sized, in the
-/// spirit of MuJoCo's mjModel. Bodies on one moving table: each a rigid part (inertia, contact
-/// patch in the body frame) with the friction law of its surface pair with the table; the
-/// table's planar motion (planar_table_motion.hpp) and friction field (planar_field.hpp); the
-/// time step. The number of bodies is a runtime value. What is not here yet: the normal
-/// motion, gravity and incline (the feeder issue), part-part contacts (the several-parts
-/// issue), the parameter view, and the 1-D part as a body (the 1-D solvers stay the exact
-/// specialisations they are).
+/// The contact core's model (issue 21): immutable and runtime-sized, in the spirit of MuJoCo's
+/// mjModel. Bodies on one moving table, each of a closed set of kinds (a variant): a rigid part
+/// in the plane (inertia, contact patch in the body frame) or the paper's 1-D part (one
+/// translational coordinate and its friction level); each with the friction law of its surface
+/// pair with the table; the table's planar motion (planar_table_motion.hpp) and friction field
+/// (planar_field.hpp); the time step. The number of bodies is a runtime value. What is not here
+/// yet: the normal motion, gravity and incline (the feeder issue), part-part contacts (the
+/// several-parts issue), and the parameter view (io/parameter_view.hpp and planar_config.hpp
+/// view the configs).
 
+#include <variant>
 #include <vector>
 
 #include "selfalign/friction/friction_law.hpp"
+#include "selfalign/friction/friction_map.hpp"
 #include "selfalign/planar/planar_field.hpp"
 #include "selfalign/planar/rigid_part.hpp"
 #include "selfalign/planar/planar_table_motion.hpp"
@@ -19,11 +22,28 @@
 
 namespace selfalign::core {
 
-/// One body on the table.
-struct Body {
+/// A rigid part in the table's plane: pose (x, y, angle) and twist on the table. Its step
+/// stages read the model's field at its patch points (src/planar/rigid_body_step.hpp).
+struct RigidBody {
   RigidPart part;       ///< inertia j = I/(m L^2) [-] and contact patch (body frame)
   FrictionLaw law{};    ///< body-table law: isotropic, velocity-independent (planar solvers)
 };
+
+/// The paper's 1-D part (Sect. 3) as a body: one translational coordinate x [-] relative to the
+/// table along the table's first motion axis e1 (in its state: pose.x = x, twist.ux = x'; the
+/// other coordinates stay 0), its friction level m(x) = mu_bar(x)/mu_1 (eq. 7: the table's
+/// field averaged over its footprint, e.g. FieldFriction, two_region_friction, UniformFriction)
+/// and any FrictionLaw (static above kinetic, direction-dependent, Stribeck, viscous). Its step
+/// is the 1-D Moreau step (time_stepping.hpp), the one function the 1-D stepper runs, with the
+/// table's velocity along e1. Needs a table that does not turn. The level is the body's own
+/// (the footprint is the body's): the model's planar field is not read for it.
+struct SliderBody {
+  const FrictionMap* friction = nullptr;  ///< borrowed: it must outlive the model
+  FrictionLaw law{};
+};
+
+/// One body on the table (a closed set: each kind's stages are one visitor's alternatives).
+using Body = std::variant<RigidBody, SliderBody>;
 
 struct Model {
   PlanarTableMotion motion;                 ///< borrowed profiles: they must outlive the model
@@ -33,7 +53,8 @@ struct Model {
 };
 
 /// Throws InvalidParameter naming the first invalid part ("bodies" when there are none;
-/// "bodies[i].inertia", "bodies[i].law" for body i).
+/// "bodies[i].inertia", "bodies[i].law" for body i; "bodies[i].friction" for a slider without
+/// a level, "bodies[i].motion" for a slider on a table that turns).
 void validate(const Model& model);
 
 }  // namespace selfalign::core

@@ -20,8 +20,8 @@ namespace selfalign::core {
 enum class StepStatus { ok, non_finite };
 
 struct BodyState {
-  PlanarPose pose;                    ///< on the table [-], [rad]
-  PlanarTwist twist;                  ///< relative to the table, table axes [-]
+  PlanarPose pose;                    ///< on the table [-], [rad] (a 1-D part: x only)
+  PlanarTwist twist;                  ///< relative to the table, table axes [-] (1-D: ux = x')
   PatchMode mode = PatchMode::stick;  ///< how the last step ended
   int pivot = -1;                     ///< the pivot contact (mode pivot)
   long long sweeps = 0, newton_steps = 0;  ///< impulse-solver work so far

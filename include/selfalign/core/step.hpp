@@ -11,8 +11,11 @@
 ///                -> integrate
 ///   checks       finiteness: a body whose state is no longer finite sets status non_finite
 ///                and the run stops (no exception inside the loop)
-/// A body of an N-body model moves bit for bit as advance_planar_rigid moves it alone: both
-/// run the same body stages (src/planar/rigid_body_step.hpp).
+/// The per-body stages are a visitor over the body's kind: a rigid body's are
+/// src/planar/rigid_body_step.hpp; a 1-D part's (SliderBody) its level at the midpoint and the
+/// 1-D Moreau projection (src/simulate/moreau_slider_step.hpp). A rigid body of an N-body model
+/// moves bit for bit as advance_planar_rigid moves it alone, a 1-D part as
+/// advance_time_stepping moves it: each pair runs the same stages.
 
 #include "selfalign/core/state.hpp"
 
