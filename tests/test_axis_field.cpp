@@ -44,7 +44,7 @@ TEST(AxisField, ReadsTheOneDimensionalFieldAtTheProjection) {
   EXPECT_EQ(planar_level(along, 9.0, -4.0), 2.0);
   // Rotating the setup rotates the field: the rotated field at the rotated point.
   const double a = 0.7, c = std::cos(a), s = std::sin(a);
-  const PlanarField turned = rotated(PlanarField(along), a);
+  const PlanarField turned = rotated_field(PlanarField(along), a);
   for (double x : {0.2, 0.9, 1.3})
     for (double y : {-1.0, 0.4})
       EXPECT_NEAR(planar_level(turned, c * x - s * y, s * x + c * y), planar_level(along, x, y),

@@ -134,7 +134,7 @@ TEST(PlanarField, RotatedFieldsAreRotated) {
                                PlanarField(RectangularPocketField{0.3, -0.2, 0.2, 0.5, 0.2, 0.1, 3}),
                                PlanarField(CircularPocketField{0.1, 0.1, 0.4, 0.2, 2}),
                                PlanarField(g)}) {
-    const PlanarField r = rotated(f, a);
+    const PlanarField r = rotated_field(f, a);
     for (double x : {-0.3, 0.1, 0.35, 0.8})
       for (double y : {-0.4, 0.0, 0.25, 0.6})
         EXPECT_NEAR(planar_level(r, c * x - s * y, s * x + c * y), planar_level(f, x, y), 1e-12);

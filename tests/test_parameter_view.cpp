@@ -83,7 +83,7 @@ TEST(ParameterView, DependsOnTheModelsKinds) {
 void expect_rescaled(const SimulateConfig& base, double a, double p) {
   const auto old_profile = build_profile_model(base).profile;
   const auto new_profile =
-      build_profile_model(with(base, {{"amplitude_scale", a}, {"time_scale", p}})).profile;
+      build_profile_model(with_parameters(base, {{"amplitude_scale", a}, {"time_scale", p}})).profile;
   const double y_scale = old_profile->stroke(), a_scale = old_profile->peak_acceleration();
   EXPECT_NEAR(new_profile->period(), p * old_profile->period(),
               kScaledProfileTolerance * p * old_profile->period());
@@ -116,19 +116,19 @@ TEST(ParameterView, TheMotionFactorsRescaleEveryFamily) {
 
 TEST(ParameterView, ChangesTheLawInTheRunsCoefficients) {
   // Absolute coefficients (docs/config.md): the law is their ratio to mu.
-  const FrictionLaw law = friction_law(with({}, {{"mu", 0.2}, {"mu_static", 0.3},
+  const FrictionLaw law = friction_law(with_parameters({}, {{"mu", 0.2}, {"mu_static", 0.3},
                                                  {"mu_backward", 0.16}, {"viscous", 0.5}}));
   EXPECT_DOUBLE_EQ(law.static_coefficient(), 1.5);
   EXPECT_DOUBLE_EQ(law.kinetic_backward(), 0.8);
   EXPECT_EQ(law.viscous(), 0.5);
-  EXPECT_TRUE(friction_law(with({}, {{"stribeck_velocity", 0.01}})).velocity_dependent());
+  EXPECT_TRUE(friction_law(with_parameters({}, {{"stribeck_velocity", 0.01}})).velocity_dependent());
 }
 
 TEST(ParameterView, ChangingMuInAnSiRunChangesTheDimensionlessTable) {
   // Sect. 3.2: y''[-] = y''[m/s^2] / (mu g). The table is given in SI; mu x 2 halves it.
   const auto si = config_of({{"units", "si"}, {"a2", "30"}, {"a3", "17"}, {"stroke", "2e-4"},
                              {"period", "0.02"}, {"mu", "0.3"}, {"g", "9.81"}});
-  const ProfileModel doubled = build_profile_model(with(si, {{"mu", 0.6}}));
+  const ProfileModel doubled = build_profile_model(with_parameters(si, {{"mu", 0.6}}));
   ASSERT_TRUE(doubled.three_phase);
   EXPECT_NEAR(doubled.three_phase->a2, 30 / (0.6 * 9.81), 1e-14);
   EXPECT_NEAR(doubled.three_phase->a3, 17 / (0.6 * 9.81), 1e-14);
@@ -138,30 +138,30 @@ TEST(ParameterView, ChangingMuInAnSiRunChangesTheDimensionlessTable) {
 TEST(ParameterView, SetsArrayElementsAndLeavesTheRest) {
   const auto c = config_of({{"profile", "quadratic-sequence"}, {"durations", "0.3,0.2,0.5"},
                             {"accelerations", "1,-2.5,0.4"}});
-  const SimulateConfig changed = with(c, {{"accelerations[1]", -2.0}, {"accelerations[2]", 0.2}});
+  const SimulateConfig changed = with_parameters(c, {{"accelerations[1]", -2.0}, {"accelerations[2]", 0.2}});
   EXPECT_EQ(*changed.accelerations, (std::vector<double>{1, -2.0, 0.2}));
   EXPECT_EQ(*changed.durations, (std::vector<double>{0.3, 0.2, 0.5}));
 }
 
 TEST(ParameterView, RefusesWhatIsNotAParameterOfTheModel) {
   const auto uniform = config_of({{"friction", "uniform"}});
-  EXPECT_NE(expect_invalid([&] { with(uniform, {{"c_mu", 3}}); }, "c_mu").find("friction = uniform"),
+  EXPECT_NE(expect_invalid([&] { with_parameters(uniform, {{"c_mu", 3}}); }, "c_mu").find("friction = uniform"),
             std::string::npos);
-  EXPECT_NE(expect_invalid([&] { with({}, {{"step", 1e-3}}); }, "step").find("setting"),
+  EXPECT_NE(expect_invalid([&] { with_parameters({}, {{"step", 1e-3}}); }, "step").find("setting"),
             std::string::npos);
-  EXPECT_NE(expect_invalid([&] { with({}, {{"mu_statc", 0.4}}); }, "mu_statc").find("mu_static"),
+  EXPECT_NE(expect_invalid([&] { with_parameters({}, {{"mu_statc", 0.4}}); }, "mu_statc").find("mu_static"),
             std::string::npos);
   const auto q = config_of({{"profile", "quadratic-sequence"}, {"durations", "0.5,0.5"},
                             {"accelerations", "1,-1"}});
-  EXPECT_NE(expect_invalid([&] { with(q, {{"accelerations[2]", 1}}); }, "accelerations[2]")
+  EXPECT_NE(expect_invalid([&] { with_parameters(q, {{"accelerations[2]", 1}}); }, "accelerations[2]")
                 .find("0..1"),
             std::string::npos);
-  expect_invalid([&] { with(q, {{"accelerations", 1}}); }, "accelerations");
-  expect_invalid([&] { with({}, {{"c_mu", NAN}}); }, "c_mu");
-  expect_invalid([&] { with({}, {{"time_scale", 0}}); }, "time_scale");
-  expect_invalid([&] { with({}, {{"amplitude_scale", -1}}); }, "amplitude_scale");
+  expect_invalid([&] { with_parameters(q, {{"accelerations", 1}}); }, "accelerations");
+  expect_invalid([&] { with_parameters({}, {{"c_mu", NAN}}); }, "c_mu");
+  expect_invalid([&] { with_parameters({}, {{"time_scale", 0}}); }, "time_scale");
+  expect_invalid([&] { with_parameters({}, {{"amplitude_scale", -1}}); }, "amplitude_scale");
   // g converts SI inputs only: not a parameter of a dimensionless model.
-  EXPECT_NE(expect_invalid([&] { with({}, {{"g", 9.8}}); }, "g").find("units = dimensionless"),
+  EXPECT_NE(expect_invalid([&] { with_parameters({}, {{"g", 9.8}}); }, "g").find("units = dimensionless"),
             std::string::npos);
 }
 
@@ -244,7 +244,7 @@ TEST(ParameterView, TheFieldsLevelsAreParameters) {
   const auto n = names(c);
   EXPECT_EQ(std::count(n.begin(), n.end(), "field_levels[1]"), 1);
   EXPECT_EQ(std::count(n.begin(), n.end(), "width"), 0);  // a point footprint has none
-  const auto raised = build_friction_map(with(c, {{"field_levels[1]", 3.0},
+  const auto raised = build_friction_map(with_parameters(c, {{"field_levels[1]", 3.0},
                                                  {"field_positions[1]", 0.6}}));
   EXPECT_EQ(raised->bound(0.55), 1.0);
   EXPECT_EQ(raised->bound(0.6), 3.0);

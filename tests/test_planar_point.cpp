@@ -64,7 +64,7 @@ TEST(PlanarPoint, RotatingTheSetupRotatesTheSolution) {
   PlanarPointState pa = make_planar_point_state(a, 0, 0.01, 0.02, 0.3, -0.1);
   PlanarPointState pb = make_planar_point_state(b, 0, c * 0.01 - s * 0.02, s * 0.01 + c * 0.02,
                                                 c * 0.3 + s * 0.1, s * 0.3 - c * 0.1);
-  const PlanarField field_b = rotated(field, alpha);
+  const PlanarField field_b = rotated_field(field, alpha);
   for (int block = 0; block < 40; ++block) {
     advance_planar_point(a, field, law, o, pa, 500);
     advance_planar_point(b, field_b, law, o, pb, 500);

@@ -245,7 +245,7 @@ TEST(PlanarRigid, RotatingTheSetupRotatesTheSolution) {
   PlanarRigidState ra = make_planar_rigid_state(a, 0, {0.01, 0.02, 0.3}, {0.1, -0.2, 1.0});
   PlanarRigidState rb = make_planar_rigid_state(
       b, 0, {c * 0.01 - s * 0.02, s * 0.01 + c * 0.02, 0.3 + alpha}, {c * 0.1 + s * 0.2, s * 0.1 - c * 0.2, 1.0});
-  const PlanarField fb = rotated(field, alpha);
+  const PlanarField fb = rotated_field(field, alpha);
   for (int block = 0; block < 30; ++block) {
     advance_planar_rigid(a, field, law, part, o, ra, 200);
     advance_planar_rigid(b, fb, law, part, o, rb, 200);

@@ -223,7 +223,7 @@ TEST(MonteCarlo, IndependentOfThreadsAndChunks) {
     c.runs = first == 500 ? 100 : 250;
     parts.push_back(monte_carlo(q, p, u, c));
   }
-  const MonteCarloResult merged = merge(parts);
+  const MonteCarloResult merged = merge_monte_carlo(parts);
   for (const MonteCarloResult* r : {&two, &merged}) {
     EXPECT_EQ(r->inputs, one.inputs);
     EXPECT_EQ(r->kind, one.kind);
@@ -234,7 +234,7 @@ TEST(MonteCarlo, IndependentOfThreadsAndChunks) {
     EXPECT_EQ(r->within, one.within);
   }
   std::swap(parts[0], parts[1]);
-  EXPECT_THROW(merge(parts), InvalidParameter);
+  EXPECT_THROW(merge_monte_carlo(parts), InvalidParameter);
 }
 
 TEST(MonteCarlo, SummaryStatistics) {

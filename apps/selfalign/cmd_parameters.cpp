@@ -63,7 +63,7 @@ void run_parameters(const ConfigFlags& flags, const ParametersFlags& f) {
   if (config.out) require_output_path("out", *config.out);
   ParameterValues values;
   for (const std::string& s : f.set) values.push_back(parse_assignment(s));
-  const SimulateConfig changed = with(config, values);
+  const SimulateConfig changed = with_parameters(config, values);
   (void)build_simulate_model(changed);  // the model must exist: values out of range name their key
   const json report = parameters_json(changed);
   deliver_report(report, parameters_table(report), f.as_json, config.out);

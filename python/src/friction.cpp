@@ -281,7 +281,7 @@ and optionally speed-dependent: a Stribeck decay from static to kinetic,
 mu(v) = k + (s - k) exp(-(|v|/v_s)^delta), and a viscous force -c x' (with_stribeck,
 with_viscous). A speed-dependent law has no closed form: steady_state, simulate, floquet and
 the sweeps then use the slip integrator (Method.integrator: exact sticks, Dormand-Prince slips
-with event location). CoulombFriction is the same class.
+with event location).
 Dimensionless: every coefficient is relative to mu_1, the forward kinetic coefficient of the
 low-friction region, so FrictionLaw() = (1, 1, 1) is the paper's law. While stuck the
 object is held as long as |y''| <= static m(x); while slipping in direction sigma the force is
@@ -340,7 +340,6 @@ object is held as long as |y''| <= static m(x); while slipping in direction sigm
       field("stribeck_velocity", &FrictionLaw::stribeck_velocity),
       field("stribeck_exponent", &FrictionLaw::stribeck_exponent),
       field("viscous", &FrictionLaw::viscous));
-  m.attr("CoulombFriction") = law;
 
   py::class_<FrictionMap>(m, "FrictionMap", R"doc(
 A friction law m(x) = mu_bar(x)/mu_1 >= 0 [-] (eqs. 7-9): in the dimensionless model

@@ -146,10 +146,10 @@ values are (the same names). Raises InvalidParameter naming the key.)doc");
           const std::string name = py::str(k);
           v.emplace_back(name, number_of(name.empty() ? "values" : name, x));
         }
-        return dict_of(with(config_of(config), v));
+        return dict_of(with_parameters(config_of(config), v));
       },
       py::arg("config"), py::arg("values"), R"doc(
-The config with some parameters changed (C++ with(config, values)): `values` maps parameter
+The config with some parameters changed (C++ with_parameters(config, values)): `values` maps parameter
 names (those model_parameters lists) to numbers, applied in order; a factor (amplitude_scale,
 time_scale) rescales the profile's keys as they stand. Returns the resolved config as a dict
 (every key set). Raises InvalidParameter naming a name that is not a parameter of this model

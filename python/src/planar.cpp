@@ -409,7 +409,7 @@ InvalidParameter naming "x" or "y".)doc");
       "rotated_field",
       [](const PlanarField& f, double angle) {
         validate(f);
-        return rotated(f, require_finite("angle", angle));
+        return rotated_field(f, require_finite("angle", angle));
       },
       py::arg("field"), py::arg("angle"),
       "The field rotated by `angle` [rad] about the origin (same kind), for frame-invariance "

@@ -176,8 +176,7 @@ A periodic table profile whose acceleration is piecewise polynomial of degree <=
 (the paper's sequences of second-order polynomials, Fig. 3 style, Sect. 4.2) or linear in time
 (finite jerk) on each segment; the form the exact solver integrates. Build it with
 PiecewisePolynomialProfile.from_accelerations (constant), from_linear_accelerations or
-from_breakpoints (finite jerk). PiecewiseConstantProfile is the same class.)doc");
-  m.attr("PiecewiseConstantProfile") = cls;
+from_breakpoints (finite jerk).)doc");
   cls
       .def_static(
           "from_accelerations",

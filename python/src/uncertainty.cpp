@@ -325,7 +325,7 @@ on `threads`, and chunks (first_run, runs) merge (merge_monte_carlo) into the sa
 for bit. selfalign.monte_carlo also takes executor= (a concurrent.futures.Executor: Dask,
 mpi4py) and chunk_size= to spread the chunks. Runs without the GIL.)doc");
   m.def("merge_monte_carlo",
-        static_cast<MonteCarloResult (*)(const std::vector<MonteCarloResult>&)>(&merge), py::arg("parts"),
+        &merge_monte_carlo, py::arg("parts"),
         "Joins consecutive chunks of one study (same seed; each first_run continuing the "
         "previous) into the result of a single call.");
 }

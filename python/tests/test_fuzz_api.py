@@ -44,7 +44,7 @@ MAX_MESSAGE = 500
 PRELUDE = ("import copy, math, pickle, numpy as np, selfalign as sa; nan, inf = math.nan, math.inf; "
            "Wrong = type('Wrong', (), {}); "
            "P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3); "
-           "Q = sa.PiecewiseConstantProfile.from_accelerations([0.3, 0.4, 0.3], [0.0, -3.0, 4.0]); "
+           "Q = sa.PiecewisePolynomialProfile.from_accelerations([0.3, 0.4, 0.3], [0.0, -3.0, 4.0]); "
            "R = sa.FourierProfile(1.0, [0.04], [0.0]); "
            "F = sa.two_region_friction(0.5, 0.05, 2.5); U = sa.UniformFriction()")
 
@@ -115,7 +115,7 @@ CATALOGUE = [
     ("result = sa.ThreePhaseProfile({period}, {stroke}, {a2}, {a3}).sample({t})",
      {"period": FL("1.0"), "stroke": FL("0.084"), "a2": FL("2.3"), "a3": FL("1.3"),
       "t": (["0.25", "np.linspace(0, 2, 7)"], BAD_FLOAT + BAD_ARRAY, [])}, "finite_if_finite_inputs"),
-    ("q = sa.PiecewiseConstantProfile.from_accelerations({durations}, {accels}); "
+    ("q = sa.PiecewisePolynomialProfile.from_accelerations({durations}, {accels}); "
      "result = (q.sample({t}), q.segment_at({phase}), q.phase({t}), q.segments())",
      {"durations": AR("[0.3, 0.4, 0.3]"), "accels": AR("[0.0, -3.0, 4.0]"),
       "t": FL("0.5"), "phase": FL("0.1")}, "finite_if_finite_inputs"),

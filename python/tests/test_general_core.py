@@ -152,7 +152,7 @@ def test_field_from_csv_matches_the_factory(tmp_path):
 
 def test_stopping_on_a_field_is_the_stop_on_the_two_region_table():
     profile = sa.ThreePhaseProfile(period=1.0, stroke=0.084, a2=3.0, a3=0.9)
-    law = sa.CoulombFriction(1.2, 1.0)
+    law = sa.FrictionLaw(1.2, 1.0)
     start = sa.ObjectState(0.0, 0.3, 0.0)
     field = sa.FieldFriction(sa.FrictionField.steps([0.5], [1.0, 2.5]), 0.05)
     on_field = sa.stopping_run(profile, field, start, law=law)
@@ -168,7 +168,7 @@ def test_stopping_on_a_field_is_the_stop_on_the_two_region_table():
 
 
 def test_period_map_monodromy_by_saltation_matches_finite_differences():
-    law = sa.CoulombFriction(1.3, 1.0)
+    law = sa.FrictionLaw(1.3, 1.0)
     profile = jerk_limited(30.0)
     steady = sa.steady_state(profile, law)
     assert steady.converged
@@ -202,7 +202,7 @@ def test_period_map_keeps_its_profile_and_friction_alive():
     period_map = sa.PeriodMap(
         sa.ThreePhaseProfile(period=1.0, stroke=0.084, a2=3.0, a3=0.9),
         sa.FieldFriction(sa.FrictionField.steps([0.5], [1.0, 2.5]), 0.05),
-        sa.CoulombFriction(1.2, 1.0),
+        sa.FrictionLaw(1.2, 1.0),
     )
     gc.collect()
     before = period_map(0.3, 0.0)
@@ -237,7 +237,7 @@ def test_period_map_integrates_what_the_exact_solvers_cannot_take():
 )
 def test_two_level_steady_state_matches_the_hand_derivation(static, v_bar):
     profile = sa.PiecewisePolynomialProfile.from_accelerations(*TWO_LEVEL)
-    steady = sa.steady_state(profile, sa.CoulombFriction(static, 1.0))
+    steady = sa.steady_state(profile, sa.FrictionLaw(static, 1.0))
     assert steady.converged
     assert steady.v_bar == pytest.approx(v_bar, abs=1e-12)
 
@@ -246,7 +246,7 @@ def test_two_level_steady_state_matches_the_hand_derivation(static, v_bar):
 
 
 def test_sweeps_take_the_law_and_the_jerk():
-    law = sa.CoulombFriction(1.3, 1.0)
+    law = sa.FrictionLaw(1.3, 1.0)
     a2, a3 = [2.5, 4.0], [1.5, 2.2]
     grid = sa.sweep_accelerations(BASE["period"], BASE["stroke"], a2, a3, law=law, jerk=300.0,
                                   threads=1)
@@ -268,7 +268,7 @@ def test_sweeps_take_the_law_and_the_jerk():
 
 def test_kinetic_above_static_names_both_coefficients():
     with pytest.raises(sa.InvalidParameter) as info:
-        sa.CoulombFriction(1.0, 1.2)
+        sa.FrictionLaw(1.0, 1.2)
     assert "static" in info.value.name and "kinetic" in info.value.name
 
 

@@ -94,7 +94,7 @@ def test_sample_extends_periodically_and_keeps_shapes(case1_profile):
 
 def test_piecewise_constant_segments_reproduce_the_accelerations():
     durations, accels = [0.2, 0.3, 0.5], [1.0, -2.0, 0.8]  # 0.2 - 0.6 + 0.4 = 0
-    p = sa.PiecewiseConstantProfile.from_accelerations(durations, accels)
+    p = sa.PiecewisePolynomialProfile.from_accelerations(durations, accels)
     seg = p.segments()
     np.testing.assert_allclose(seg["begin"], [0.0, 0.2, 0.5], atol=CLOSED_FORM_TOL)
     np.testing.assert_array_equal(seg["accel"], accels)
@@ -111,7 +111,7 @@ def test_piecewise_constant_segments_reproduce_the_accelerations():
 
 def test_piecewise_constant_velocity_must_return():
     with pytest.raises(sa.InvalidParameter):
-        sa.PiecewiseConstantProfile.from_accelerations([0.5, 0.5], [1.0, -0.5])
+        sa.PiecewisePolynomialProfile.from_accelerations([0.5, 0.5], [1.0, -0.5])
 
 
 def test_fourier_profile_is_the_series_shifted_to_min_zero():
@@ -145,7 +145,7 @@ def test_sampled_profiles_from_csv(tmp_path):
     assert len(samples) == 5
 
     constant = sa.make_sampled_profile(samples)  # default: piecewise constant
-    assert isinstance(constant, sa.PiecewiseConstantProfile)
+    assert isinstance(constant, sa.PiecewisePolynomialProfile)
     assert constant.kind == "samples-constant"
     np.testing.assert_array_equal(constant.segments()["accel"], [1, 1, -1, -1])
 

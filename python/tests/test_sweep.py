@@ -146,7 +146,7 @@ def test_scaled_shape_family_members_have_the_requested_period_and_stroke():
     family = sa.ScaledShapeFamily.paper_like()
     for period, stroke in [(1.0, 0.084), (0.5, 0.2), (3.0, 0.01)]:
         member = family.make(period, stroke)
-        assert isinstance(member, sa.PiecewiseConstantProfile)
+        assert isinstance(member, sa.PiecewisePolynomialProfile)
         assert member.period == pytest.approx(period, rel=1e-12)
         assert member.stroke == pytest.approx(stroke, rel=1e-12)
         # Durations scale with Δt: fractions (0.35, 0.35, 0.30) of the period.

@@ -266,7 +266,7 @@ SimulateConfig ParameterView::with(const std::vector<double>& values) const {
   return c;
 }
 
-SimulateConfig with(const SimulateConfig& config, const ParameterValues& values) {
+SimulateConfig with_parameters(const SimulateConfig& config, const ParameterValues& values) {
   std::vector<std::string> names;
   std::vector<double> numbers;
   for (const auto& [name, value] : values) names.push_back(name), numbers.push_back(value);

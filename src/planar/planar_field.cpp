@@ -142,7 +142,7 @@ double planar_level(const PlanarField& field, double x, double y) {
                     field);
 }
 
-PlanarField rotated(const PlanarField& field, double angle) {
+PlanarField rotated_field(const PlanarField& field, double angle) {
   return std::visit(Overloaded{
                         [](const UniformPlanarField& u) { return PlanarField(u); },
                         [&](const HalfPlaneStepField& h) {

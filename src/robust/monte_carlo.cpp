@@ -93,7 +93,7 @@ MonteCarloResult monte_carlo(const DesignRequest& q, const Process& p,
   return r;
 }
 
-MonteCarloResult merge(const std::vector<MonteCarloResult>& parts) {
+MonteCarloResult merge_monte_carlo(const std::vector<MonteCarloResult>& parts) {
   if (parts.empty()) throw InvalidParameter("parts", "[]", "must hold at least one result");
   MonteCarloResult r = parts.front();
   for (std::size_t k = 1; k < parts.size(); ++k) {

@@ -1,8 +1,8 @@
 #pragma once
 /// \file parameter_view.hpp
 /// The named parameter view of a 1-D model (issue 21, item 1): which numbers the model a
-/// SimulateConfig describes depends on, by name, and `with(config, values)`, the same model
-/// with some of them changed. This is the one place where the robust analyses' uncertain
+/// SimulateConfig describes depends on, by name, and `with_parameters(config, values)`, the same
+/// model with some of them changed. This is the one place where the robust analyses' uncertain
 /// inputs (robust/process_uncertainty.hpp) and the coming friction identification change a
 /// model's parameters; `selfalign parameters` lists the view and Python's
 /// `model_parameters` / `with_parameters` mirror it.
@@ -96,6 +96,6 @@ class ParameterView {
 /// the model's kind: "c_mu is not a parameter of this model (friction = uniform)", or a setting
 /// "step is a solver setting, not a model parameter"), an index is out of range, or a value is
 /// not finite.
-SimulateConfig with(const SimulateConfig& config, const ParameterValues& values);
+SimulateConfig with_parameters(const SimulateConfig& config, const ParameterValues& values);
 
 }  // namespace selfalign

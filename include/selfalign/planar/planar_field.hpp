@@ -94,6 +94,6 @@ void validate(const PlanarField& field);
 double planar_level(const PlanarField& field, double x, double y);
 
 /// The field rotated by `angle` about the origin (frame invariance: rotating the setup).
-PlanarField rotated(const PlanarField& field, double angle);
+PlanarField rotated_field(const PlanarField& field, double angle);
 
 }  // namespace selfalign

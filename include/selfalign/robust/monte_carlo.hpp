@@ -8,7 +8,7 @@
 /// and runs the exact stopping run of run_process(); runs are spread over threads (oneTBB) and
 /// each writes its own slot. The result is therefore identical for any thread count, and the
 /// runs may be split into chunks (first_run, runs) computed anywhere (another process, a Dask
-/// worker, an MPI rank) and merged with merge() into the result of one call, bit for bit.
+/// worker, an MPI rank) and merged with merge_monte_carlo() into the result of one call, bit for bit.
 
 #include <cstdint>
 #include <string>
@@ -61,7 +61,7 @@ void summarize(MonteCarloResult& result);
 /// Concatenates consecutive chunks of one study (same seed, target, tolerance; each chunk's
 /// first_run continuing the previous one) into the result of a single call. Throws
 /// InvalidParameter("parts", ...) otherwise.
-MonteCarloResult merge(const std::vector<MonteCarloResult>& parts);
+MonteCarloResult merge_monte_carlo(const std::vector<MonteCarloResult>& parts);
 
 /// The q-quantile (q in (0, 1]) of the process time over all runs, a run that did not stop
 /// counting as +inf: the smallest t with at least a fraction q of the runs done by t
