@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -238,6 +239,43 @@ TEST(CliPlanar, ParametersListsTheModelsNumbersAsTheFileGivesThem) {
   expect_clean_failure(bad, bad.run({"planar", "parameters", "--config", bad_cfg, "--set",
                                      "run.pose[0]=1", "--csv", "p.csv"}),
                        {"--set", "run.pose"});
+}
+
+// examples/planar_axis.toml: a measured friction profile along the track (an axis field of
+// ramps through (20, 1), (22, 1.6), (24, 2.3), (26, 2.8) mm). By hand: the 8 x 4 mm part's patch
+// points (4 x 2 cells, equal loads) lie at x +- 1 and +- 3 mm; held in pure translation (the
+// field and the patch are symmetric across the track) while s mean(m) >= peak/(mu_1 g), i.e.
+// mean(m) >= (4.5/1.962)/1.2 = 1.911. The straight entry must stop where that first holds:
+// holding at its end, not holding 1 mm before it (it stops within a millimetre of the spot).
+TEST(CliPlanar, TheAxisFieldExampleStopsWhereThePatchIsFirstHeld) {
+  CliSandbox box;
+  const auto r = box.run({"planar", "stop", "--config",
+                          std::string(SELFALIGN_SOURCE_DIR) + "/examples/planar_axis.toml",
+                          "--csv", "runs.csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = lines(read_text(box.work_file("runs.csv")));
+  ASSERT_EQ(rows.size(), 4u);  // header and the three entries
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    EXPECT_NE(rows[i].find(",true,"), std::string::npos) << rows[i];  // stopped
+  std::vector<std::string> cells;  // the straight entry's row: entry x, y, angle, stopped, end_x_m
+  std::stringstream row(rows[1]);
+  for (std::string c; std::getline(row, c, ',');) cells.push_back(c);
+  ASSERT_GT(cells.size(), 4u);
+  const double end_x = std::stod(cells[4]);
+  const auto level = [](double x_mm) {  // the ramps of the example, by hand
+    const double p[] = {20, 22, 24, 26}, m[] = {1, 1.6, 2.3, 2.8};
+    if (x_mm <= p[0]) return m[0];
+    for (int k = 0; k < 3; ++k)
+      if (x_mm <= p[k + 1]) return m[k] + (m[k + 1] - m[k]) * (x_mm - p[k]) / (p[k + 1] - p[k]);
+    return m[3];
+  };
+  const auto mean_under = [&](double centre_mm) {
+    return (level(centre_mm - 3) + level(centre_mm - 1) + level(centre_mm + 1) +
+            level(centre_mm + 3)) / 4;
+  };
+  const double needed = (4.5 / (0.2 * 9.81)) / (0.24 / 0.2);
+  EXPECT_GE(mean_under(end_x * 1e3), needed) << end_x;
+  EXPECT_LT(mean_under(end_x * 1e3 - 1), needed) << end_x;
 }
 
 // planar steady is the fixed point of the period map (issue 21), and reports a part that walks
