@@ -376,9 +376,21 @@ TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
   EXPECT_NEAR(af["x_d"].get<double>() - 0.3,
               at["x_d"].get<double>() - at["x_mu"].get<double>(), 1e-9);
   EXPECT_EQ(af["accumulates"], at["accumulates"]);
-  // accumulation is written for the two-region table (eq. 59): a field is refused by name,
-  // not replaced; a field key beside another friction map is refused too.
-  expect_clean_failure(box, box.run({"accumulation", "--field-file", field}), {"friction"});
+  // accumulation is written for the two-region table (eq. 59): this field is that table (one
+  // step from 1 to c_mu = 3 under the footprint w = 0.05), so its report is the two-region
+  // flags' (second method) but for the field's own description; a field of two steps is
+  // refused by name, not replaced; a field key beside another friction map is refused too.
+  const CliResult acc_f = box.run({"accumulation", "--field-file", field, "--json"});
+  const CliResult acc_t = box.run({"accumulation", "--x-mu", "0.3", "--c-mu", "3", "--json"});
+  ASSERT_EQ(acc_f.exit_code, 0) << acc_f.err;
+  ASSERT_EQ(acc_t.exit_code, 0) << acc_t.err;
+  json from_field = json::parse(acc_f.out), from_flags = json::parse(acc_t.out);
+  EXPECT_EQ(from_field["friction"]["kind"], "field");
+  from_field.erase("friction");
+  EXPECT_EQ(from_field, from_flags);
+  const std::string stairs = box.file("stairs.csv");
+  std::ofstream(stairs) << "0,1\n0.3,3\n0.4,4\n";
+  expect_clean_failure(box, box.run({"accumulation", "--field-file", stairs}), {"friction"});
   expect_clean_failure(
       box, box.run({"simulate", "--friction", "two-region", "--field-file", field, "--periods", "1"}),
       {"field_file"});

@@ -168,6 +168,29 @@ TEST(FieldFriction, TwoRegionTableIsEquationNineAsAStepFieldUnderAUniformFootpri
   }
 }
 
+// The paper's table a map is, where it is one (accumulation's eq. 59 needs it): by name, or a
+// field of one step from 1 to c_mu > 1 under a uniform footprint (the same level, eq. 9).
+TEST(FieldFriction, AOneStepFieldUnderAUniformFootprintIsThePapersTable) {
+  const auto named = as_two_region_table(two_region_friction(0.3, 0.05, 2.5));
+  ASSERT_TRUE(named.has_value());
+  EXPECT_EQ(*named, TwoRegionTable(0.3, 0.05, 2.5));
+  const auto read = as_two_region_table(
+      FieldFriction(FrictionField::steps({0.3}, {1, 2.5}), UniformFootprint{0.05}));
+  ASSERT_TRUE(read.has_value());
+  EXPECT_EQ(*read, TwoRegionTable(0.3, 0.05, 2.5));
+  const FrictionField step = FrictionField::steps({0.3}, {1, 2.5});
+  EXPECT_FALSE(as_two_region_table(FieldFriction(step, PointFootprint{})));
+  EXPECT_FALSE(as_two_region_table(
+      FieldFriction(FrictionField::steps({0.3, 0.4}, {1, 2, 3}), UniformFootprint{0.05})));
+  EXPECT_FALSE(as_two_region_table(
+      FieldFriction(FrictionField::steps({0.3}, {1.5, 2.5}), UniformFootprint{0.05})));
+  EXPECT_FALSE(as_two_region_table(
+      FieldFriction(FrictionField::steps({0.3}, {1, 0.5}), UniformFootprint{0.05})));
+  EXPECT_FALSE(as_two_region_table(
+      FieldFriction(FrictionField::ramps({0.3, 0.35}, {1, 2.5}), UniformFootprint{0.05})));
+  EXPECT_FALSE(as_two_region_table(UniformFriction(2.0)));
+}
+
 TEST(FieldFriction, PointFootprintOnRampsIsTheFieldItself) {
   const FieldFriction f(FrictionField::ramps({0, 1, 3}, {1, 2, 0.5}), PointFootprint{});
   EXPECT_EQ(f.bound(-1), 1.0);

@@ -6,6 +6,7 @@
 // from x1.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,11 +76,16 @@ json iterates_json(const StickPositionMap& map, const TwoRegionTable& f, double 
   return j;
 }
 
-json accumulation_json(const SimulateModel& model, const StickPositionMap& map, double x1) {
+json accumulation_json(const SimulateModel& model, const TwoRegionTable& f,
+                       const StickPositionMap& map, double x1) {
   const OutputUnits u = model.output_units();
-  const TwoRegionTable& f = two_region(model);
   const double x_stick_min = stick_position_min(f, model.profile->peak_acceleration());
   json j = stopping_context_json(model, true);
+  // A field that is the paper's table (one step from 1 to c_mu under a uniform footprint): its
+  // table's parameters, as for the two-region flags.
+  j["x_mu"] = u.length(f.x_mu());
+  j["width"] = u.length(f.width());
+  j["c_mu"] = f.c_mu();
   j["fixed_point"] = u.length(map.fixed_point());           // eq. (60)
   j["x_stick_min"] = length_or_null(u, x_stick_min);       // eq. (41)
   j["fixed_point_minus_x_stick_min"] = length_or_null(u, map.fixed_point() - x_stick_min);
@@ -153,7 +159,15 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
                            "only (static = kinetic, no Stribeck or viscous term): leave out "
                            "mu_static, mu_backward, stribeck_velocity, viscous; stop and accuracy "
                            "take any law");
-  const TwoRegionTable& friction = two_region(model);
+  // Eq. (59) is the two-region table's: the named table, or a field that is it (one step from
+  // 1 to c_mu under a uniform footprint); any other field is refused by name.
+  const std::optional<TwoRegionTable> table = as_two_region_table(*model.friction);
+  if (!table)
+    throw InvalidParameter("friction", "field",
+                           "accumulation's stick-position map (eq. 59) is the two-region table's: "
+                           "a field must be one step from level 1 to c_mu > 1 under a uniform "
+                           "footprint (this one is not); `stop` and `accuracy` take any field");
+  const TwoRegionTable& friction = *table;
   const StickPositionMap map(three_phase_profile(model), friction);
   const OutputUnits u = model.output_units();
   const double x_mu = friction.x_mu();
@@ -165,7 +179,7 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
   const double to = f.to_option->count() > 0 ? require_moderate("to", f.to)
                                              : u.length(x_mu + friction.width());
   const std::vector<double> grid = linear_grid(from, to, f.n);
-  const json report = accumulation_json(model, map, x1);
+  const json report = accumulation_json(model, friction, map, x1);
   deliver_csv_and_report(paths, paths.csv ? map_csv(model, map, grid) : "", report,
                          accumulation_table(report, model.units));
 }

@@ -91,7 +91,7 @@ std::string accuracy_table(const json& j, UnitSystem units) {
 void run_accuracy(const ConfigFlags& flags, const AccuracyFlags& f) {
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
-  const SimulateModel model = stopping_model(config, "accuracy", true);
+  const SimulateModel model = stopping_model(config, "accuracy");
   PositioningOptions options;
   options.entries = f.entries;
   options.stopping.max_periods = f.max_periods;

@@ -113,7 +113,7 @@ std::string stop_table(const json& j, UnitSystem units) {
 void run_stop(const ConfigFlags& flags, const StopFlags& f) {
   const SimulateConfig config = read_config(flags);
   const ReportPaths paths = resolve_report_paths(config, f.as_json);
-  const SimulateModel model = stopping_model(config, "stop", true);
+  const SimulateModel model = stopping_model(config, "stop");
   const FrictionMap& friction = *model.friction;  // two-region, or the config's field
   StoppingOptions options;
   options.max_periods = f.max_periods;

@@ -25,29 +25,16 @@ void add_max_periods_option(CLI::App& command, int& max_periods) {
       ->group("Solver");
 }
 
-SimulateModel stopping_model(const SimulateConfig& config, const std::string& command,
-                             bool field_allowed) {
+SimulateModel stopping_model(const SimulateConfig& config, const std::string& command) {
   SimulateConfig c = config;
   // friction as the config resolves it (a field_file alone implies field: simulate_config.cpp)
   const bool field = *resolve_simulate_config(config).friction == "field";
-  if (field && !field_allowed)
-    throw InvalidParameter("friction", "field",
-                           command + " needs the two-region table (eq. 59: --x-mu, --width, "
-                                     "--c-mu); `stop` and `accuracy` take a field");
   if (config.friction && *config.friction == "uniform")
     throw InvalidParameter("friction", "uniform",
-                           command + " needs a rise of friction: two-region" +
-                               (field_allowed ? " or field" : ""));
+                           command + " needs a rise of friction: two-region or field");
   if (!field) c.friction = "two-region";
   c.method = "exact";
   return build_simulate_model(c);
-}
-
-const TwoRegionTable& two_region(const SimulateModel& model) {
-  const TwoRegionTable* two = model.friction->two_region();
-  if (!two)  // stopping_model() builds the two-region table; anything else is a caller's error
-    throw InvalidParameter("friction", "not two-region", "this analysis needs the two-region table");
-  return *two;
 }
 
 nlohmann::json stopping_context_json(const SimulateModel& model, bool with_x_mu) {

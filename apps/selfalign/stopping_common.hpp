@@ -26,17 +26,12 @@ std::shared_ptr<ConfigFlags> add_stopping_config_flags(CLI::App& command,
 void add_max_periods_option(CLI::App& command, int& max_periods);
 
 /// The run's model on the two-region table, or on the config's friction field where the
-/// command takes one (`field_allowed`: stop, accuracy) and the config names it (friction =
-/// field, or a field_file, which implies it); method exact. A field given to a command without
-/// `field_allowed` (accumulation: eq. 59 is written for the two-region table) and friction =
-/// uniform (no rise: nothing stops) are refused naming "friction", never replaced by the
-/// default table. Validated by build_simulate_model: x_mu, width, c_mu, t0, x0,
-/// v0 and output_step in [-], errors restated in SI for SI runs; a case-0 request is an error.
-SimulateModel stopping_model(const SimulateConfig& config, const std::string& command,
-                             bool field_allowed = false);
-
-/// The model's friction map, which stopping_model made two-region (commands without a field).
-const TwoRegionTable& two_region(const SimulateModel& model);
+/// config names it (friction = field, or a field_file, which implies it); method exact
+/// (accumulation then needs the field to be the paper's table: as_two_region_table).
+/// friction = uniform (no rise: nothing stops) is refused naming "friction", never replaced by
+/// the default table. Validated by build_simulate_model: x_mu, width, c_mu, t0, x0, v0 and
+/// output_step in [-], errors restated in SI for SI runs; a case-0 request is an error.
+SimulateModel stopping_model(const SimulateConfig& config, const std::string& command);
 
 /// The unit system and the table's friction parameters of a report: "units", "profile",
 /// "x_mu" (omitted when `with_x_mu` is false), "width", "c_mu"; lengths in the run's units.

@@ -119,6 +119,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     sweep_period,
     sweep_stroke,
     two_region_friction,
+    as_two_region_table,
     velocity_convergence,
     # robust design under uncertainty (docs/robust-design.md)
     Known,

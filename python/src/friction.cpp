@@ -1,6 +1,7 @@
 // Friction laws and maps m(x) = mu_bar(x)/mu_1 (eqs. 7-9): uniform, two-region, and a
 // friction field averaged over a footprint (docs/friction-field.md).
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -269,6 +270,16 @@ mu_2 = c_mu mu_1 beyond x_mu + w, in between the width-averaged transition of eq
   m(x) = 1 + (c_mu - 1)/w * z,   z = min(max(x - x_mu, 0), w)
 x the object's leading edge [-], w its dimensionless width. Its .two_region is the
 TwoRegionTable(x_mu, width, c_mu). Raises InvalidParameter as TwoRegionTable does.)doc");
+  m.def(
+      "as_two_region_table",
+      [](const FrictionMap& friction) -> py::object {
+        const std::optional<TwoRegionTable> t = as_two_region_table(friction);
+        return t ? py::cast(*t) : py::none();
+      },
+      py::arg("friction"), R"doc(
+The paper's table that `friction` is (a TwoRegionTable), where it is one: a map built by
+two_region_friction, or a field of one step from level 1 to c_mu > 1 under a uniform footprint
+(e.g. read from a file: eq. 7 of it is eq. 9); None otherwise.)doc");
 }
 
 }  // namespace

@@ -68,3 +68,13 @@ def test_pieces_cover_the_line_and_reproduce_the_map():
     k = np.searchsorted(p["begin"], mid, side="right") - 1
     assert p["bound_at_begin"][k] + p["slope"][k] * (mid - p["begin"][k]) == pytest.approx(
         f.bound(mid), rel=CLOSED_FORM_TOL)
+
+
+def test_a_one_step_field_is_the_papers_table_by_value():
+    table = sa.TwoRegionTable(0.3, 0.05, 2.5)
+    assert sa.as_two_region_table(sa.two_region_friction(0.3, 0.05, 2.5)) == table
+    read = sa.FieldFriction(sa.FrictionField.steps([0.3], [1.0, 2.5]), 0.05)
+    assert sa.as_two_region_table(read) == table
+    assert sa.as_two_region_table(sa.FieldFriction(sa.FrictionField.steps([0.3, 0.4], [1.0, 2.0, 3.0]), 0.05)) is None
+    assert sa.as_two_region_table(sa.FieldFriction(sa.FrictionField.steps([0.3], [1.0, 2.5]), sa.PointFootprint())) is None
+    assert sa.as_two_region_table(sa.UniformFriction()) is None

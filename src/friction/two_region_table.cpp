@@ -58,4 +58,17 @@ FieldFriction two_region_friction(double x_mu, double width, double c_mu) {
   return FieldFriction(TwoRegionTable(x_mu, width, c_mu));
 }
 
+std::optional<TwoRegionTable> as_two_region_table(const FrictionMap& friction) {
+  if (const TwoRegionTable* named = friction.two_region()) return *named;
+  const FieldFriction* field = friction.field_friction();
+  if (!field) return std::nullopt;
+  const auto* footprint = std::get_if<UniformFootprint>(&field->footprint());
+  const auto nodes = field->field().nodes();
+  if (!footprint || nodes.size() != 1 || nodes[0].left != 1.0 || !(nodes[0].right > 1.0))
+    return std::nullopt;
+  // The field passed the same resolvability checks as the table (friction_field.cpp), so the
+  // table accepts its values.
+  return TwoRegionTable(nodes[0].position, footprint->width, nodes[0].right);
+}
+
 }  // namespace selfalign

@@ -191,4 +191,10 @@ class FieldFriction final : public FrictionMap {
 /// Throws InvalidParameter as TwoRegionTable's constructor does.
 FieldFriction two_region_friction(double x_mu, double width, double c_mu);
 
+/// The paper's table that `friction` is, where it is one: its named table (two_region()), or a
+/// field of one step from level 1 to c_mu > 1 under a uniform footprint (eq. 7 of that field is
+/// eq. 9: the same level), e.g. read from a file. nullopt otherwise (several steps, ramps, a
+/// point footprint, a level other than 1 before the step, a uniform level).
+std::optional<TwoRegionTable> as_two_region_table(const FrictionMap& friction);
+
 }  // namespace selfalign
