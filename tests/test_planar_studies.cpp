@@ -74,6 +74,31 @@ TEST(PlanarStudies, EachDriftSampleIsItsRunAloneOnAnyThreadCount) {
   EXPECT_EQ(one[2].drift_x, 0.0);
 }
 
+// T_p of a stopping run is when the final stick began, to the step (the 1-D definition), not
+// the start of the whole period of stick that proves the stop. Second method: the same run
+// recorded step by step by the run driver (simulate_planar), its last step that did not end in
+// stick read off the trajectory.
+TEST(PlanarStudies, TheProcessTimeIsWhenTheFinalStickBegan) {
+  const PlanarProblem p = rough_region_problem();
+  const std::vector<PlanarPose> entries{{0.1, 0.0, 0.0}, {0.2, 0.01, 0.4}};
+  const PlanarStopSummary stop = planar_stop(p, entries, 200, {}, 1);
+  ASSERT_EQ(stop.stopped, 2);
+  const double period = planar_period(p.motion);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const PlanarStopRun& run = stop.runs[i];
+    const long long steps = run.periods * steps_per_period(p);
+    const PlanarTrajectory tr = simulate_planar(p, entries[i], {}, steps, 1);
+    double last_moving = 0;
+    for (std::size_t k = 1; k < tr.size(); ++k)
+      if (tr.mode[k] != PatchMode::stick) last_moving = tr.t[k];
+    EXPECT_EQ(run.process_time, last_moving) << i;
+    EXPECT_GT(run.process_time, 0.0) << i;  // it moved before it stopped
+    // within the period before the proving one, or earlier: not a period boundary in general
+    EXPECT_LE(run.process_time, static_cast<double>(run.periods - 1) * period) << i;
+    EXPECT_EQ(run.end.x, tr.x.back()) << i;
+  }
+}
+
 TEST(PlanarStudies, AFailedSampleIsKeptAndTheStudyGoesOn) {
   const NotANumber nan_motion;
   PlanarProblem p = rough_region_problem();

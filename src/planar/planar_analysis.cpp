@@ -18,6 +18,7 @@ using detail::CensusSink;
 using detail::compact;
 using detail::LevelSink;
 using detail::require_finite;
+using detail::StickStartSink;
 
 void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
                  core::StepObserver* sink = nullptr) {
@@ -169,21 +170,21 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
     sum.runs[i].entry = entries[i];
     sum.runs[i].end = {NAN, NAN, NAN};
   }
-  const double period = planar_period(p.motion);
   detail::parallel_cells(
       entries.size(), cells_options(progress, threads),
       [&](std::size_t i) {
         PlanarStopRun& run = sum.runs[i];
         PlanarRigidState s = make_planar_rigid_state(p.motion, 0, entries[i], {});
+        StickStartSink steps(0.0);
         for (long long k = 1; k <= max_periods; ++k) {
-          CensusSink census;
-          run_periods(p, s, 1, &census);
+          steps.census = {};
+          run_periods(p, s, 1, &steps);
           require_finite(s);
           run.periods = k;
-          if (census.census.stick == census.census.total()) {
+          if (steps.census.stick == steps.census.total()) {  // stuck for a whole period
             run.stopped = true;
             run.end = s.pose;
-            run.process_time = static_cast<double>(k - 1) * period;
+            run.process_time = steps.stick_start;  // the final stick's start, to the step
             break;
           }
         }

@@ -105,7 +105,9 @@ struct PlanarStopRun {
   PlanarPose entry;
   bool stopped = false;
   PlanarPose end;               ///< NaN when it did not stop
-  double process_time = NAN;    ///< T_p: start of the first whole period of stick [-]
+  /// T_p: when the final stick began, to the step h: the end of the last step that did not end
+  /// in stick (0 for a part that never moved) [-]; NaN when it did not stop.
+  double process_time = NAN;
   long long periods = 0;        ///< periods simulated
   /// Empty when the run was computed; otherwise why it could not be (then stopped is false).
   std::string failure;
