@@ -249,7 +249,11 @@ void apply_setting(json& doc, const std::string& assignment) {
   KeySpec one = *spec;  // one element: a number of the key's (component's) dimension
   one.type = ValueType::number;
   one.components = {};
-  array[*element] = to_json(parse_config_value(one, text));
+  try {
+    array[*element] = to_json(parse_config_value(one, text));
+  } catch (const InvalidParameter& e) {  // name the element as given
+    throw InvalidParameter(e.name() + "[" + std::to_string(*element) + "]", e.value(), e.allowed());
+  }
 }
 
 }  // namespace

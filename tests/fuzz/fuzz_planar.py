@@ -96,7 +96,8 @@ def set_flags(rng):
             continue
         section = rng.choice([k for k, v in BASE.items() if isinstance(v, dict)] + ["run", "bogus"])
         keys = list(BASE.get(section, {})) + list(EXTRA.get(section, {})) + ["colour"]
-        flags += ["--set", f"{section}.{rng.choice(keys)}={rng.choice(SET_VALUES)}"]
+        element = rng.choice(["", "", "", "[0]", "[2]", "[9]", "[x]", "[-1]", "["])
+        flags += ["--set", f"{section}.{rng.choice(keys)}{element}={rng.choice(SET_VALUES)}"]
     return flags
 
 
