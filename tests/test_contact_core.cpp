@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -109,43 +111,44 @@ TEST(ContactCore, BadModelsAndStatesNameTheParameter) {
   EXPECT_THROW(core::step(model, s, 1), InvalidParameter);  // a state of another model
 }
 
-// The paper's 1-D part as a body of the core (SliderBody): beside rigid bodies on one table,
-// each slider moves bit for bit as it does alone in the core, and as the 1-D Moreau stepper
-// moves it (the second method: advance_time_stepping, the 1-D wing's own driver; the same step
-// function, the table's velocity read from the profile's state() instead of velocity(), which
-// for the three-phase profile are the same numbers): a two-region table, a field of ramps under
-// a uniform footprint, a uniform table under a Stribeck and viscous law, and direction-dependent
-// kinetic coefficients.
+// The paper's 1-D part as a body of the core (SliderBody): its level is the model's field
+// (here an AxisField along x) averaged over its footprint. Beside rigid bodies on the same
+// table and field, each slider moves bit for bit as it does alone in the core, and as the 1-D
+// Moreau stepper moves it on FieldFriction(field, footprint) (the second method: the 1-D wing's
+// own driver and its own footprint average; the same step function, the table's velocity read
+// from the profile's state() instead of velocity(), the same numbers for the three-phase
+// profile): ramps under uniform footprints of two widths and a point, the paper's law,
+// direction-dependent kinetic coefficients, a Stribeck and viscous law.
 TEST(ContactCore, TheOneDimensionalPartIsABodyOfTheCore) {
-  const FieldFriction stairs(FrictionField::ramps({0.05, 0.08, 0.1, 0.16}, {1, 1.4, 1.2, 4}),
-                             UniformFootprint{0.02});
-  const FieldFriction two = two_region_friction(0.1, 0.05, 2.5);
-  const UniformFriction uniform;
+  const FrictionField ramps = FrictionField::ramps({0.05, 0.08, 0.1, 0.16}, {1, 1.4, 1.2, 4});
   struct Slider {
     core::SliderBody body;
     double x0, v0;
   };
   const std::vector<Slider> sliders{
-      {{&stairs, FrictionLaw{}}, 0.0, 0.0},
-      {{&two, FrictionLaw(1.3, 1.0, 0.8)}, 0.02, 0.1},
-      {{&uniform, FrictionLaw(1.2, 1.0).with_stribeck(0.05, 1.0).with_viscous(0.1)}, -0.1, -0.2}};
+      {{UniformFootprint{0.02}, FrictionLaw{}}, 0.0, 0.0},
+      {{PointFootprint{}, FrictionLaw(1.3, 1.0, 0.8)}, 0.02, 0.1},
+      {{UniformFootprint{0.05}, FrictionLaw(1.2, 1.0).with_stribeck(0.05, 1.0).with_viscous(0.1)},
+       -0.1, -0.2}};
   const TimeSteppingOptions options{1.0 / 1000, 0.5};
   PlanarTableMotion motion;
   motion.first = &kPaper;  // along x: the 1-D table's motion
+  const PlanarField field = AxisField{ramps, 0, 0, 0};
   const long long steps = 6000;
   const std::vector<Start> rigid = starts();
 
   // Alone in the core, and by the 1-D stepper.
   std::vector<core::BodyState> alone;
   for (const Slider& s : sliders) {
-    const core::Model one{motion, UniformPlanarField{}, {s.body}, options};
+    const core::Model one{motion, field, {s.body}, options};
     const std::vector<PlanarPose> pose{{s.x0, 0, 0}};
     const std::vector<PlanarTwist> twist{{s.v0, 0, 0}};
     core::State st = core::make_state(one, 0.0, pose, twist);
     ASSERT_EQ(core::step(one, st, steps), steps);
     alone.push_back(st.bodies[0]);
     TimeSteppingState ts = make_time_stepping_state(kPaper, {0.0, s.x0, s.v0});
-    advance_time_stepping(kPaper, *s.body.friction, s.body.law, options, ts, steps);
+    advance_time_stepping(kPaper, FieldFriction(ramps, s.body.footprint), s.body.law, options,
+                          ts, steps);
     SCOPED_TRACE(::testing::Message() << "slider at " << s.x0);
     EXPECT_EQ(st.bodies[0].pose.x, ts.object.x);
     EXPECT_EQ(st.bodies[0].twist.ux, ts.object.xd);
@@ -153,10 +156,10 @@ TEST(ContactCore, TheOneDimensionalPartIsABodyOfTheCore) {
     EXPECT_EQ(st.bodies[0].pose.y, 0.0);
     EXPECT_NE(ts.object.x, s.x0);  // it moved
   }
-  EXPECT_GT(alone[0].pose.x, 0.1);  // across the stairs
+  EXPECT_GT(alone[0].pose.x, 0.1);  // onto the ramps
 
-  // Mixed with rigid bodies: [rigid, slider, rigid, slider, slider].
-  core::Model model{motion, RectangularPocketField{0.6, 0.0, 0.0, 0.2, 0.3, 0.1, 2.5}, {}, options};
+  // Mixed with rigid bodies on the same field: [rigid, slider, rigid, slider, slider].
+  core::Model model{motion, field, {}, options};
   std::vector<PlanarPose> poses;
   std::vector<PlanarTwist> twists;
   const auto add_rigid = [&](const Start& r) {
@@ -193,11 +196,28 @@ TEST(ContactCore, TheOneDimensionalPartIsABodyOfTheCore) {
   }
 }
 
+// A slider's level along e1: an axis field turned by 60 degrees from e1 is read at
+// d = cos(60) x (and a footprint of width w covers d in [cos(60) (x - w), cos(60) x]); another
+// field is read at the point x e1 (by hand: a half-plane step rising at x = 0.3 with band 0.1).
+TEST(ContactCore, ASlidersLevelIsTheFieldAlongItsAxis) {
+  PlanarTableMotion motion;
+  motion.first = &kPaper;
+  const double c = std::cos(std::numbers::pi / 3);
+  core::Model model{motion, AxisField{FrictionField::ramps({0, 1}, {1, 3}), 0, 0, std::numbers::pi / 3},
+                    {}, {1.0 / 1000, 0.5}};
+  EXPECT_NEAR(core::slider_level(model, core::SliderBody{}, 1.0), 1 + 2 * c, 1e-15);
+  // uniform footprint w = 0.4 at x = 1: the ramp's mean over d in [0.6 c, c], its midpoint 0.8 c
+  EXPECT_NEAR(core::slider_level(model, core::SliderBody{UniformFootprint{0.4}, {}}, 1.0),
+              1 + 2 * 0.8 * c, 1e-15);
+  model.field = HalfPlaneStepField{0.3, 0.0, 0.0, 0.1, 2.0};
+  EXPECT_NEAR(core::slider_level(model, core::SliderBody{}, 0.35), 1.5, 1e-15);
+}
+
 TEST(ContactCore, AOneDimensionalPartIsRefusedWhereItHasNoMeaning) {
   PlanarTableMotion motion;
   motion.first = &kPaper;
-  const UniformFriction level;
-  core::Model model{motion, UniformPlanarField{}, {core::SliderBody{}}, {1.0 / 1000, 0.5}};
+  core::Model model{motion, HalfPlaneStepField{}, {core::SliderBody{UniformFootprint{0.05}, {}}},
+                    {1.0 / 1000, 0.5}};
   const std::vector<PlanarPose> at_rest{{0, 0, 0}};
   const std::vector<PlanarTwist> still{{}};
   const auto name_of = [&](const std::vector<PlanarPose>& p, const std::vector<PlanarTwist>& t) {
@@ -208,8 +228,11 @@ TEST(ContactCore, AOneDimensionalPartIsRefusedWhereItHasNoMeaning) {
     }
     return std::string("no throw");
   };
-  EXPECT_EQ(name_of(at_rest, still), "bodies[0].friction");
-  model.bodies[0] = core::SliderBody{&level, {}};
+  EXPECT_EQ(name_of(at_rest, still), "bodies[0].footprint");  // a band field: point only
+  model.bodies[0] = core::SliderBody{UniformFootprint{0.0}, {}};
+  model.field = UniformPlanarField{};
+  EXPECT_EQ(name_of(at_rest, still), "bodies[0].footprint");  // width 0
+  model.bodies[0] = core::SliderBody{PointFootprint{}, {}};
   EXPECT_EQ(name_of(at_rest, still), "no throw");
   EXPECT_EQ(name_of({{0, 0.1, 0}}, still), "poses[0]");
   EXPECT_EQ(name_of(at_rest, {{0, 0, 0.5}}), "twists[0]");

@@ -1,5 +1,7 @@
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 
 #include "../planar/rigid_body_step.hpp"
 #include "../simulate/moreau_slider_step.hpp"
@@ -16,12 +18,13 @@ namespace {
 // A 1-D part's stages: its level at the step's midpoint (contacts, loads), the 1-D Moreau
 // projection with the table's velocity increment along e1 (impulse), the theta update
 // (integrate): detail::moreau_slider_step, the 1-D stepper's own step.
-void slider_step(const PlanarTableMotion& motion, const SliderBody& b, double h, double th,
+void slider_step(const Model& model, const SliderBody& b, double h, double th,
                  const PlanarTablePose& tb, const PlanarTablePose& tb1, BodyState& st) {
+  const PlanarTableMotion& motion = model.motion;
   const double yd = motion.e1_x * tb.vx + motion.e1_y * tb.vy;
   const double yd1 = motion.e1_x * tb1.vx + motion.e1_y * tb1.vy;
   const double x = st.pose.x, v = st.twist.ux;
-  const double m = b.friction->bound(x + 0.5 * h * v);
+  const double m = slider_level(model, b, x + 0.5 * h * v);
   const detail::SliderCoefficients c(b.law);
   double x1;
   const double v1 =
@@ -34,6 +37,30 @@ void slider_step(const PlanarTableMotion& motion, const SliderBody& b, double h,
 }
 
 }  // namespace
+
+double slider_level(const Model& model, const SliderBody& b, double x) {
+  const double ex = model.motion.e1_x, ey = model.motion.e1_y;
+  const double w = std::holds_alternative<UniformFootprint>(b.footprint)
+                       ? std::get<UniformFootprint>(b.footprint).width
+                       : 0.0;
+  return std::visit(
+      Overloaded{
+          [](const UniformPlanarField& u) { return u.level; },
+          [&](const AxisField& a) {
+            // The axis position of the point x e1: d(x) = c x - n . origin, c = n . e1; the
+            // footprint's window [x - w, x] maps to [d(x - w), d(x)] (eq. 7: the average).
+            const double nx = std::cos(a.angle), ny = std::sin(a.angle);
+            const double c = nx * ex + ny * ey, offset = nx * a.origin_x + ny * a.origin_y;
+            const double d = c * x - offset;
+            if (w == 0.0 || c == 0.0) return a.field(d);
+            const double d0 = c * (x - w) - offset;
+            return std::max(0.0, a.field.integral(std::min(d0, d), std::max(d0, d)) /
+                                     (std::abs(c) * w));
+          },
+          [&](const auto&) { return planar_level(model.field, x * ex, x * ey); },  // a point
+      },
+      model.field);
+}
 
 void validate(const Model& m) {
   if (m.bodies.empty()) throw InvalidParameter("bodies", "none", "needs at least one body");
@@ -48,9 +75,15 @@ void validate(const Model& m) {
                               require_planar_law(b.law);
                             },
                             [&m](const SliderBody& b) {
-                              if (!b.friction)
-                                throw InvalidParameter("friction", "none",
-                                                       "a 1-D part needs its friction level");
+                              if (const auto* u = std::get_if<UniformFootprint>(&b.footprint)) {
+                                require_positive_moderate("footprint", u->width);
+                                if (!std::holds_alternative<UniformPlanarField>(m.field) &&
+                                    !std::holds_alternative<AxisField>(m.field))
+                                  throw InvalidParameter(
+                                      "footprint", "uniform",
+                                      "a 1-D part's uniform footprint averages a uniform or "
+                                      "axis field (give it a point footprint on this field)");
+                              }
                               if (m.motion.rotation)
                                 throw InvalidParameter("motion", "turning",
                                                        "a 1-D part needs a table that does not "
@@ -121,7 +154,7 @@ long long step(const Model& model, State& s, long long steps, StepObserver* obse
                                                       tb1, s.bodies[i], s.contacts[i]);
                             },
                             [&](const SliderBody& b) {
-                              slider_step(model.motion, b, h, th, s.table, tb1, s.bodies[i]);
+                              slider_step(model, b, h, th, s.table, tb1, s.bodies[i]);
                             }},
                  model.bodies[i]);
     // checks: the table's motion (a profile that returns NaN), then each body

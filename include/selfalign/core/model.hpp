@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "selfalign/friction/friction_law.hpp"
-#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/planar/planar_field.hpp"
 #include "selfalign/planar/rigid_part.hpp"
 #include "selfalign/planar/planar_table_motion.hpp"
@@ -31,14 +31,15 @@ struct RigidBody {
 
 /// The paper's 1-D part (Sect. 3) as a body: one translational coordinate x [-] relative to the
 /// table along the table's first motion axis e1 (in its state: pose.x = x, twist.ux = x'; the
-/// other coordinates stay 0), its friction level m(x) = mu_bar(x)/mu_1 (eq. 7: the table's
-/// field averaged over its footprint, e.g. FieldFriction, two_region_friction, UniformFriction)
-/// and any FrictionLaw (static above kinetic, direction-dependent, Stribeck, viscous). Its step
-/// is the 1-D Moreau step (time_stepping.hpp), the one function the 1-D stepper runs, with the
-/// table's velocity along e1. Needs a table that does not turn. The level is the body's own
-/// (the footprint is the body's): the model's planar field is not read for it.
+/// other coordinates stay 0; its leading edge at x e1 on the table), its contact footprint and
+/// any FrictionLaw (static above kinetic, direction-dependent, Stribeck, viscous). Its level is
+/// the model's field read along e1 and averaged over the footprint [x - w, x] (eq. 7): exactly,
+/// for a uniform field or an AxisField (the 1-D FrictionField's window integral), and at the
+/// point x e1 for the other fields, which take a point footprint only. Its step is the 1-D
+/// Moreau step (time_stepping.hpp), the one function the 1-D stepper runs, with the table's
+/// velocity along e1. Needs a table that does not turn.
 struct SliderBody {
-  const FrictionMap* friction = nullptr;  ///< borrowed: it must outlive the model
+  Footprint footprint = PointFootprint{};  ///< along e1 (friction_field.hpp)
   FrictionLaw law{};
 };
 
@@ -53,8 +54,13 @@ struct Model {
 };
 
 /// Throws InvalidParameter naming the first invalid part ("bodies" when there are none;
-/// "bodies[i].inertia", "bodies[i].law" for body i; "bodies[i].friction" for a slider without
-/// a level, "bodies[i].motion" for a slider on a table that turns).
+/// "bodies[i].inertia", "bodies[i].law" for body i; for a slider "bodies[i].footprint" (a width
+/// outside [1e-50, 1e50], or a uniform footprint on a field other than uniform or axis) and
+/// "bodies[i].motion" (a table that turns)).
 void validate(const Model& model);
+
+/// The level m(x) of slider `body` of `model` at x along e1 (SliderBody: the field along e1,
+/// averaged over the footprint) [-].
+double slider_level(const Model& model, const SliderBody& body, double x);
 
 }  // namespace selfalign::core
