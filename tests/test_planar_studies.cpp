@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "planar_profiles.hpp"
+#include "selfalign/analysis/stopping.hpp"
 #include "selfalign/core/step.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
 #include "selfalign/planar/planar_run.hpp"
 #include "selfalign/planar/planar_steady_state.hpp"
@@ -97,6 +99,39 @@ TEST(PlanarStudies, TheProcessTimeIsWhenTheFinalStickBegan) {
     EXPECT_LE(run.process_time, static_cast<double>(run.periods - 1) * period) << i;
     EXPECT_EQ(run.end.x, tr.x.back()) << i;
   }
+}
+
+// The never-stops proof (as the 1-D StoppingRun's): the paper's motion (peak |y''| = 3.0 per
+// unit mu_1 g) on a table whose largest level 2.5 with s = 1 cannot hold a part at rest in the
+// step of the largest velocity change. Second methods: the same runs simulated for 60 periods
+// by simulate_planar never stick for a whole period; the 1-D stopping run of a point on the
+// same levels along x (the two-region table 1 -> 2.5) proves never_stops too; and with
+// s = 1.25 (capacity 3.125 > 3) the proof does not apply and the parts stop.
+TEST(PlanarStudies, NoPartIsHeldWhereTheTableOutrunsTheLargestFriction) {
+  PlanarProblem p = rough_region_problem();
+  p.field = HalfPlaneStepField{0.3, 0.0, 0.0, 0.05, 2.5};
+  const std::vector<PlanarPose> entries{{0.0, 0.0, 0.0}, {0.4, 0.01, 0.3}};
+  const PlanarStopSummary never = planar_stop(p, entries, 200, {}, 1);
+  EXPECT_TRUE(never.never_stops);
+  EXPECT_EQ(never.stopped, 0);
+  for (const PlanarStopRun& run : never.runs) EXPECT_EQ(run.periods, 0);
+  const long long n = steps_per_period(p);
+  for (const PlanarPose& e : entries) {
+    const PlanarTrajectory tr = simulate_planar(p, e, {}, 60 * n, 1);
+    for (long long k = 0; k < 60; ++k) {
+      bool all_stick = true;
+      for (long long j = 1; j <= n; ++j)
+        all_stick = all_stick && tr.mode[static_cast<std::size_t>(k * n + j)] == PatchMode::stick;
+      EXPECT_FALSE(all_stick) << "period " << k;
+    }
+  }
+  const StoppingRun one_d =
+      stopping_run(kPaper, two_region_friction(0.3, 0.05, 2.5), {0.0, 0.0, 0.0});
+  EXPECT_TRUE(one_d.never_stops);
+  p.law = FrictionLaw(1.25, 1.0);
+  const PlanarStopSummary held = planar_stop(p, entries, 400, {}, 1);
+  EXPECT_FALSE(held.never_stops);
+  EXPECT_EQ(held.stopped, 2);
 }
 
 TEST(PlanarStudies, AFailedSampleIsKeptAndTheStudyGoesOn) {

@@ -268,9 +268,13 @@ void run_stop(const PlanarFlags& f) {
                      {"radius", number_or_null(si.length(sum.radius))}};
   r["orientation_error_rad"] = number_or_null(sum.angle_range);
   r["max_process_time"] = number_or_null(si.time(sum.max_process_time));
+  r["never_stops"] = sum.never_stops;
   TextTable t;
   t.row("stopped", std::to_string(sum.stopped) + " of " + std::to_string(sum.runs.size()) + " (" +
                        std::to_string(sum.failed) + " failed)");
+  if (sum.never_stops)
+    t.row("never stops", "proven: the table's velocity change in some step of every period "
+                         "exceeds the most friction can give (h s max m); nothing simulated");
   t.row("mean end x, y [" + si.u("m", "-") + "]", table_text(r["mean_end"]["x"]) + ", " + table_text(r["mean_end"]["y"]));
   t.row("end region radius [" + si.u("m", "-") + "]", table_text(r["end_region"]["radius"]));
   t.row("orientation error [rad]", table_text(r["orientation_error_rad"]));

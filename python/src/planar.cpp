@@ -567,7 +567,9 @@ A twist of the part relative to the table, in table axes: the centre of mass's v
       .def_readonly("stopped", &RUN::stopped, "whether it stuck for a whole table period")
       .def_readonly("end", &RUN::end, "the PlanarPose where it stopped; NaN when not stopped")
       .def_readonly("process_time", &RUN::process_time,
-                    "T_p: start of the first whole period of stick [-]; NaN when not stopped")
+                    "T_p: when the final stick began, to the step (the end of the last step "
+                    "that did not end in stick; 0 for a part that never moved) [-]; NaN when "
+                    "not stopped")
       .def_readonly("periods", &RUN::periods, "table periods simulated")
       .def_readonly("failure", &RUN::failure,
                     "'' when computed; otherwise why the run could not be (stopped is then "
@@ -593,6 +595,10 @@ The outcome of planar_stop(): every run, and over the stopped ones the positioni
       .def_readonly("stopped", &SUM::stopped, "runs that stopped")
       .def_readonly("failed", &SUM::failed,
                     "runs that could not be computed (each run's failure says why)")
+      .def_readonly("never_stops", &SUM::never_stops,
+                    "proven that no part is ever stuck for a whole period (a table that does "
+                    "not turn whose velocity changes in some step by more than h s max m); the "
+                    "runs are then not simulated")
       .def_readonly("mean_x", &SUM::mean_x, "mean end x [-]")
       .def_readonly("mean_y", &SUM::mean_y, "mean end y [-]")
       .def_readonly("mean_angle", &SUM::mean_angle, "mean end angle [rad]")
@@ -617,7 +623,8 @@ The outcome of planar_stop(): every run, and over the stopped ones the positioni
              field("max_x", &SUM::max_x), field("min_y", &SUM::min_y),
              field("max_y", &SUM::max_y), field("radius", &SUM::radius),
              field("angle_range", &SUM::angle_range),
-             field("max_process_time", &SUM::max_process_time));
+             field("max_process_time", &SUM::max_process_time),
+             field("failed", &SUM::failed), field("never_stops", &SUM::never_stops));
 }
 
 // ---- runs ------------------------------------------------------------------------------------

@@ -155,6 +155,28 @@ std::vector<PlanarDriftSample> planar_drift_field(const PlanarProblem& p,
   return out;
 }
 
+namespace {
+
+// Whether no part can ever be stuck for a whole period (PlanarStopSummary::never_stops): the
+// table does not turn, and at some step of a period (the steps repeat every period: h divides
+// it) the table's velocity change exceeds the largest friction impulse of a patch at rest,
+// h s max m, by more than the rounding of the velocities.
+bool never_held(const PlanarProblem& p) {
+  if (p.motion.rotation) return false;
+  const double h = p.options.step;
+  const double capacity = h * p.law.static_coefficient() * max_planar_level(p.field);
+  const long long n = steps_per_period(p);
+  PlanarTablePose a = table_pose(p.motion, 0.0);
+  for (long long k = 1; k <= n; ++k) {
+    const PlanarTablePose b = table_pose(p.motion, static_cast<double>(k) * h);
+    if (std::hypot(b.vx - a.vx, b.vy - a.vy) > capacity * (1 + 1e-9) + 1e-15) return true;
+    a = b;
+  }
+  return false;
+}
+
+}  // namespace
+
 PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPose>& entries,
                               int max_periods, const ProgressCallback& progress, int threads) {
   validate(p);
@@ -169,6 +191,11 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
   for (std::size_t i = 0; i < entries.size(); ++i) {
     sum.runs[i].entry = entries[i];
     sum.runs[i].end = {NAN, NAN, NAN};
+  }
+  sum.never_stops = never_held(p);
+  if (sum.never_stops) {
+    if (progress) progress(entries.size(), entries.size());
+    return sum;
   }
   detail::parallel_cells(
       entries.size(), cells_options(progress, threads),

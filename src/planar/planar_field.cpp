@@ -142,6 +142,21 @@ double planar_level(const PlanarField& field, double x, double y) {
                     field);
 }
 
+double max_planar_level(const PlanarField& field) {
+  return std::visit(Overloaded{
+                        [](const UniformPlanarField& u) { return u.level; },
+                        [](const HalfPlaneStepField& f) { return std::max(1.0, f.c_mu); },
+                        [](const StripField& f) { return std::max(1.0, f.c_mu); },
+                        [](const RectangularPocketField& f) { return std::max(1.0, f.c_mu); },
+                        [](const CircularPocketField& f) { return std::max(1.0, f.c_mu); },
+                        [](const GridField& f) {
+                          return *std::max_element(f.levels.begin(), f.levels.end());
+                        },
+                        [](const AxisField& f) { return f.field.max_level(); },
+                    },
+                    field);
+}
+
 PlanarField rotated_field(const PlanarField& field, double angle) {
   return std::visit(Overloaded{
                         [](const UniformPlanarField& u) { return PlanarField(u); },

@@ -124,11 +124,18 @@ struct PlanarStopSummary {
   double radius = NAN;           ///< max |end - mean| [-]
   double angle_range = NAN;      ///< max - min end angle [rad]
   double max_process_time = NAN; ///< over the stopped runs [-]; NaN when none stopped
+  /// Proven that no part is ever stuck for a whole period (as the 1-D StoppingRun's
+  /// never_stops): on a table that does not turn, a part at rest on it needs a friction impulse
+  /// equal to the table's velocity change over each step, and its patch gives at most
+  /// h s max m (the loads sum to 1); some step of the period asks more. The runs are then not
+  /// simulated (not stopped, 0 periods).
+  bool never_stops = false;
 };
 
 /// From rest at each entry pose, runs until the part sticks for a whole period (stopped) or
-/// max_periods pass; the entries in parallel as planar_drift_field's samples (a failed run kept
-/// with its failure). `progress` (optional) gets (entries done, entries).
+/// max_periods pass, unless no part can ever be held (never_stops); the entries in parallel as
+/// planar_drift_field's samples (a failed run kept with its failure). `progress` (optional)
+/// gets (entries done, entries).
 PlanarStopSummary planar_stop(const PlanarProblem& problem, const std::vector<PlanarPose>& entries,
                               int max_periods, const ProgressCallback& progress = {},
                               int threads = 0);

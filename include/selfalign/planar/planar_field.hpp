@@ -93,6 +93,10 @@ void validate(const PlanarField& field);
 /// The level at (x, y) [-].
 double planar_level(const PlanarField& field, double x, double y);
 
+/// The largest level anywhere on the table [-]: the uniform level, c_mu of a rough region (>= 1
+/// outside it), the largest grid value (bilinear stays below it), an axis field's max_level.
+double max_planar_level(const PlanarField& field);
+
 /// The field rotated by `angle` about the origin (frame invariance: rotating the setup).
 PlanarField rotated_field(const PlanarField& field, double angle);
 
