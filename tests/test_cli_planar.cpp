@@ -278,6 +278,23 @@ TEST(CliPlanar, TheAxisFieldExampleStopsWhereThePatchIsFirstHeld) {
   EXPECT_LT(mean_under(end_x * 1e3 - 1), needed) << end_x;
 }
 
+// A key the config's kinds do not read is said to have no effect, in one warning line after the
+// output (exit 0); the run is the one without the key.
+TEST(CliPlanar, AKeyNothingReadsIsWarnedAbout) {
+  CliSandbox box;
+  const std::string field = "[field]\ntype = \"axis\"\npositions = [0.2, 0.4]\nlevels = [1, 3]\n";
+  const std::string with_key = write_config(box, "p.toml", kBase + kPart + field + "c_mu = 3\n");
+  const std::string without = write_config(box, "q.toml", kBase + kPart + field);
+  const auto r = box.run({"planar", "simulate", "--config", with_key, "--csv", "p.csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "selfalign: warning: planar: field.c_mu is not used by this config (its kinds "
+                   "do not read it): it has no effect\n");
+  const auto q = box.run({"planar", "simulate", "--config", without, "--csv", "q.csv"});
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_TRUE(q.err.empty()) << q.err;
+  EXPECT_EQ(read_text(box.work_file("p.csv")), read_text(box.work_file("q.csv")));
+}
+
 // planar steady is the fixed point of the period map (issue 21), and reports a part that walks
 // into another region of the field instead of a drift. examples/planar.toml's pocket (a
 // rectangle centred at x = 30 mm, half-length 8 mm, its band rising inward from x = 22 mm) with

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <fstream>
@@ -332,6 +333,22 @@ TEST(PlanarConfig, TheParameterViewListsWhatTheModelReadAsTheFileGivesIt) {
   EXPECT_EQ(d.at("table.x.a2").unit, "[-]");
   EXPECT_EQ(d.at("part.inertia").unit, "[-]");
   EXPECT_EQ(d.count("field.level"), 1u);  // the default uniform field's level
+}
+
+// Keys a config gives that its kinds do not read are listed (the CLI warns): an axis field has
+// no band (width, c_mu), a three-phase motion no Fourier coefficients, a point part no radius.
+TEST(PlanarConfig, KeysNothingReadsAreListed) {
+  TempDir dir;
+  write_text(dir.file("a.toml"),
+             std::string(kPlanar) + "[field]\ntype = \"axis\"\npositions = [0.003]\nlevels = [1]\n"
+                                    "c_mu = 3\nwidth = 0.001\n");
+  const PlanarSetup a = load_planar_config(dir.file("a.toml"), {"table.x.cos=1", "part.radius=0.01"});
+  std::vector<std::string> unused = a.unused_keys;
+  std::sort(unused.begin(), unused.end());
+  EXPECT_EQ(unused, (std::vector<std::string>{"field.c_mu", "field.width", "part.radius",
+                                              "table.x.cos"}));
+  write_text(dir.file("b.toml"), kPlanar);
+  EXPECT_TRUE(load_planar_config(dir.file("b.toml")).unused_keys.empty());
 }
 
 // Every key of the planar key table is documented in docs/planar.md (as `key`).

@@ -57,9 +57,18 @@ json pose_json(const PlanarPose& p, const Si& si) {
           {"angle_rad", number_or_null(p.angle)}};
 }
 
+// A key the config gives that nothing read has no effect: say so (after the output).
+void warn_unused_keys(const PlanarSetup& s) {
+  for (const std::string& key : s.unused_keys)
+    warn("planar: " + key + " is not used by this config (its kinds do not read it): it has no "
+         "effect");
+}
+
 PlanarSetup load(const PlanarFlags& f) {
   require_report_paths(f.out, ExtraFile{"csv", f.csv});
-  return load_planar_config(f.config, f.set);
+  PlanarSetup s = load_planar_config(f.config, f.set);
+  warn_unused_keys(s);
+  return s;
 }
 
 json header(const PlanarSetup& s) {
@@ -219,6 +228,7 @@ void run_parameters(const PlanarFlags& f) {
   require_report_paths(f.out, ExtraFile{"csv", f.csv});
   const std::vector<ModelParameter> view = planar_model_parameters(f.config, f.set);
   const PlanarSetup s = load_planar_config(f.config, f.set);
+  warn_unused_keys(s);
   json r = {{"config", s.path}, {"units", s.si ? "si" : "dimensionless"}};
   r["parameters"] = json::array();
   TextTable t;

@@ -302,7 +302,7 @@ int ConfigSection::integer(std::string_view k, int fallback, int lo, int hi) con
 }
 
 std::string ConfigSection::text(std::string_view k, const std::string& fallback) const {
-  spec(k, ValueType::text);
+  note(spec(k, ValueType::text), {});
   const ConfigValue* v = value(k);
   return v ? std::get<std::string>(*v) : fallback;
 }
@@ -318,6 +318,7 @@ std::vector<double> ConfigSection::list(std::string_view k, std::vector<double> 
 std::vector<std::vector<double>> ConfigSection::rows(std::string_view k) const {
   const KeySpec& key = spec(k, ValueType::rows);
   const ConfigValue* v = value(k);
+  note(key, {});
   std::vector<std::vector<double>> out;
   if (v)
     for (const auto& row : std::get<std::vector<std::vector<double>>>(*v))

@@ -259,14 +259,17 @@ void apply_setting(json& doc, const std::string& assignment) {
 }  // namespace
 
 PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set,
-                               std::vector<ConfigSection::Read>* reads) {
+                               std::vector<ConfigSection::Read>* caller_reads) {
+  std::vector<ConfigSection::Read> log;  // every key read: the caller's view, and unused keys
+  std::vector<ConfigSection::Read>* reads = &log;
   json doc = read_document(path, kPlanarDocument);
   if (!doc.is_object()) throw InvalidParameter("config", path, "must be a table of sections");
   for (const std::string& assignment : set) apply_setting(doc, assignment);
   const ConfigValues values = read_config_values(doc, planar_config_keys(), path);
   PlanarSetup st;
   st.path = path;
-  const Section top(values, "", InputUnits());
+  Section top(values, "", InputUnits());
+  top.record_reads(reads);
   const std::string units = top.text("units", "si");
   if (units != "si" && units != "dimensionless")
     throw InvalidParameter("units", units, "must be \"si\" or \"dimensionless\"");
@@ -363,6 +366,11 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
     st.entries.push_back(st.pose);
   }
   with_user_names(kRunNames.names, [&] { validate(st.problem); });
+  for (const ConfigValues::Entry& e : values.entries())
+    if (std::none_of(log.begin(), log.end(),
+                     [&](const ConfigSection::Read& r) { return r.key == e.key; }))
+      st.unused_keys.push_back(qualified_key(e.key->section, e.key->name));
+  if (caller_reads) *caller_reads = std::move(log);
   return st;
 }
 

@@ -148,14 +148,15 @@ class ConfigSection {
   /// The rows (empty when unset), each element in model units.
   std::vector<std::vector<double>> rows(std::string_view k) const;
 
-  /// One number or array the section was asked for, as the config gives it (file units; the
-  /// fallback where the config does not set it): what the model read, for its parameter view.
+  /// One key the section was asked for, with its numbers as the config gives them (file units;
+  /// the fallback where the config does not set it): what the model read, for its parameter
+  /// view and for the keys a config gives but nothing reads.
   struct Read {
     const KeySpec* key;
-    std::vector<double> values;  ///< one value for a number key
+    std::vector<double> values;  ///< one value for a number key; none for text and rows
   };
-  /// Records every number(), required(), integer() and list() into `log` from now on (nullptr:
-  /// stop). `log` must outlive the reads.
+  /// Records every access (number(), required(), integer(), list(), text(), rows()) into `log`
+  /// from now on (nullptr: stop). `log` must outlive the reads.
   void record_reads(std::vector<Read>* log) noexcept { reads_ = log; }
 
  private:

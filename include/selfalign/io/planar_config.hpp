@@ -46,6 +46,10 @@ struct PlanarSetup {
   std::vector<PlanarPose> entries;
   int max_periods = 2000;
   std::string path;  ///< the file read
+  /// Keys the config (and --set) gives that building this setup did not read, as
+  /// "section.key": they have no effect (e.g. c_mu for an axis field, cos for a three-phase
+  /// motion). The CLI warns about each.
+  std::vector<std::string> unused_keys;
 };
 
 /// Every section and key of a planar config: type, dimension, unit, meaning (docs/planar.md).
