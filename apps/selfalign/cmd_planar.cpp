@@ -64,9 +64,9 @@ void warn_unused_keys(const PlanarSetup& s) {
          "effect");
 }
 
-PlanarSetup load(const PlanarFlags& f) {
+PlanarSetup load(const PlanarFlags& f, std::vector<ConfigSection::Read>* reads = nullptr) {
   require_report_paths(f.out, ExtraFile{"csv", f.csv});
-  PlanarSetup s = load_planar_config(f.config, f.set);
+  PlanarSetup s = load_planar_config(f.config, f.set, reads);
   warn_unused_keys(s);
   return s;
 }
@@ -225,10 +225,9 @@ void run_field(const PlanarFlags& f) {
 // The parameter view (planar_model_parameters): each number the model depends on, as the
 // config gives it (after --set), with unit, section and meaning.
 void run_parameters(const PlanarFlags& f) {
-  require_report_paths(f.out, ExtraFile{"csv", f.csv});
-  const std::vector<ModelParameter> view = planar_model_parameters(f.config, f.set);
-  const PlanarSetup s = load_planar_config(f.config, f.set);
-  warn_unused_keys(s);
+  std::vector<ConfigSection::Read> reads;
+  const PlanarSetup s = load(f, &reads);
+  const std::vector<ModelParameter> view = planar_model_parameters(reads, s.si);
   json r = {{"config", s.path}, {"units", s.si ? "si" : "dimensionless"}};
   r["parameters"] = json::array();
   TextTable t;

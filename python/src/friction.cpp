@@ -229,10 +229,11 @@ on a step field; a uniform footprint on a field with ramps gives a piecewise-qua
     return FieldFriction(field, footprint_from(footprint));
   };
   // Pickle state: the field, the footprint and the table it was named as (None for data).
-  const auto restore_field_friction = [](const FrictionField& field, const py::object& footprint,
-                                         const py::object& table) {
+  const auto restore_field_friction = [make_field_friction](const FrictionField& field,
+                                                             const py::object& footprint,
+                                                             const py::object& table) {
     if (!table.is_none()) return FieldFriction(table.cast<TwoRegionTable>());
-    return FieldFriction(field, footprint_from(footprint));
+    return make_field_friction(field, footprint);
   };
   const auto two_region = [](const FieldFriction& f) -> py::object {
     return f.two_region() ? py::cast(*f.two_region()) : py::none();

@@ -19,10 +19,6 @@ namespace selfalign {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-// Resolvability, as TwoRegionTable (src/friction/two_region_table.cpp): slopes of m at most
-// 1e12, sloped stretches at least 1e-9 |position| wide.
-constexpr double kMaxSlope = 1e12;
-constexpr double kMinRelativePieceWidth = 1e-9;
 // Breakpoints of the averaged map closer than this many ulps are merged.
 constexpr double kMergeUlps = 4.0;
 
@@ -267,16 +263,16 @@ FieldFriction::FieldFriction(FrictionField field, Footprint footprint)
         slope = (b.left - a.right) / len;
         const std::string ramp = "[" + format_number(a.position) + ", " +
                                  format_number(b.position) + "]";
-        if (!(std::abs(slope) <= kMaxSlope))
+        if (!(std::abs(slope) <= kMaxFrictionSlope))
           throw InvalidParameter("friction field ramp", ramp,
                                  "its slope " + format_number(slope) +
                                      " must be <= 1e12 in magnitude for the friction to be "
                                      "resolvable under a point footprint");
         const double scale = std::max(std::abs(a.position), std::abs(b.position));
-        if (len < kMinRelativePieceWidth * scale)
+        if (len < kMinRelativeStretch * scale)
           throw InvalidParameter("friction field ramp", ramp,
                                  "must be >= 1e-9 |position| = " +
-                                     format_number(kMinRelativePieceWidth * scale) +
+                                     format_number(kMinRelativeStretch * scale) +
                                      " wide to be resolvable");
       }
       push_piece(pieces, {a.position, b.position, a.right, slope});
@@ -290,10 +286,10 @@ FieldFriction::FieldFriction(FrictionField field, Footprint footprint)
       require_positive_moderate("footprint width", std::get<UniformFootprint>(footprint_).width);
   width_ = w;
   const double reach = std::max(std::abs(nodes.front().position), std::abs(nodes.back().position));
-  if (w < kMinRelativePieceWidth * reach)
+  if (w < kMinRelativeStretch * reach)
     throw InvalidParameter("footprint width", w,
                            "must be >= 1e-9 max |position| = " +
-                               format_number(kMinRelativePieceWidth * reach) +
+                               format_number(kMinRelativeStretch * reach) +
                                " for the friction transitions to be resolvable");
   std::vector<double> positions(n), ends(n);
   for (std::size_t k = 0; k < n; ++k) {
@@ -316,7 +312,7 @@ FieldFriction::FieldFriction(FrictionField field, Footprint footprint)
       const double q1 = breaks[j] + 0.25 * len, q3 = breaks[j] + 0.75 * len;
       const double d1 = diff(q1), d3 = diff(q3);
       const double worst = std::max(std::abs(d1 - 0.5 * (d3 - d1)), std::abs(d3 + 0.5 * (d3 - d1)));
-      if (!(worst / w <= kMaxSlope)) throw_too_steep(w, worst / w, breaks[j]);
+      if (!(worst / w <= kMaxFrictionSlope)) throw_too_steep(w, worst / w, breaks[j]);
     }
     return;
   }
@@ -348,7 +344,7 @@ FieldFriction::FieldFriction(FrictionField field, Footprint footprint)
                                  positions.begin());  // one past the last p_k <= b
     double slope = 0.0;
     if (lo < hi_end) slope = (nodes[hi_end - 1].right - nodes[lo].left) / w;
-    if (!(std::abs(slope) <= kMaxSlope)) throw_too_steep(w, slope, b);
+    if (!(std::abs(slope) <= kMaxFrictionSlope)) throw_too_steep(w, slope, b);
     if (std::isinf(end)) slope = 0.0;  // (it is: every step is fully under the window)
     push_piece(pieces, {b, end, window_average_of_steps(b), slope});
   }

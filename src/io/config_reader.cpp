@@ -21,14 +21,17 @@ constexpr std::size_t kKeysListed = 7;  // an unknown-key message names a sectio
 
 std::string where(const std::string& file) { return file.empty() ? "" : " (in " + file + ")"; }
 
+// Whether table `sub` lies under `section` ("table.x" under "table"; every table under "").
+bool is_under(std::string_view sub, std::string_view section) {
+  if (section.empty()) return !sub.empty();
+  return sub.size() > section.size() && sub.starts_with(section) && sub[section.size()] == '.';
+}
+
 }  // namespace
 
 bool KeyTable::has_section(std::string_view section) const {
   for (const KeySpec& k : keys)
-    if (k.section == section ||
-        (k.section.size() > section.size() && k.section.starts_with(section) &&
-         k.section[section.size()] == '.'))
-      return true;
+    if (k.section == section || is_under(k.section, section)) return true;
   return false;
 }
 
@@ -43,13 +46,9 @@ std::vector<std::string> names_in(const KeyTable& table, std::string_view sectio
   for (const KeySpec& k : table.keys)
     if (k.section == section) add(std::string(k.name));
   for (const KeySpec& k : table.keys) {
-    std::string_view rest = k.section;
-    if (!section.empty()) {
-      if (!(rest.size() > section.size() && rest.starts_with(section) && rest[section.size()] == '.'))
-        continue;
-      rest.remove_prefix(section.size() + 1);
-    }
-    if (!rest.empty()) add(std::string(rest.substr(0, rest.find('.'))));
+    if (!is_under(k.section, section)) continue;
+    const std::string_view rest = k.section.substr(section.empty() ? 0 : section.size() + 1);
+    add(std::string(rest.substr(0, rest.find('.'))));
   }
   return names;
 }

@@ -261,7 +261,6 @@ void apply_setting(json& doc, const std::string& assignment) {
 PlanarSetup load_planar_config(const std::string& path, const std::vector<std::string>& set,
                                std::vector<ConfigSection::Read>* caller_reads) {
   std::vector<ConfigSection::Read> log;  // every key read: the caller's view, and unused keys
-  std::vector<ConfigSection::Read>* reads = &log;
   json doc = read_document(path, kPlanarDocument);
   if (!doc.is_object()) throw InvalidParameter("config", path, "must be a table of sections");
   for (const std::string& assignment : set) apply_setting(doc, assignment);
@@ -269,13 +268,13 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
   PlanarSetup st;
   st.path = path;
   Section top(values, "", InputUnits());
-  top.record_reads(reads);
+  top.record_reads(&log);
   const std::string units = top.text("units", "si");
   if (units != "si" && units != "dimensionless")
     throw InvalidParameter("units", units, "must be \"si\" or \"dimensionless\"");
   st.si = units == "si";
   Section sc(values, "scales", InputUnits());  // the scales are the unit system itself
-  sc.record_reads(reads);
+  sc.record_reads(&log);
   st.scales = with_user_names(
       kScalesNames.names,
       [&] { return Scales(sc.number("length", 0.01), sc.number("mu", 0.2), sc.number("g", 9.81)); },
@@ -283,7 +282,7 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
   const InputUnits u = st.si ? InputUnits(st.scales) : InputUnits();
   const auto section = [&](std::string name) {
     Section s(values, std::move(name), u);
-    s.record_reads(reads);
+    s.record_reads(&log);
     return s;
   };
   PlanarTableMotion& m = st.problem.motion;

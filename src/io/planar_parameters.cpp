@@ -39,6 +39,11 @@ std::vector<ModelParameter> planar_model_parameters(const std::string& path,
                                                     const std::vector<std::string>& set) {
   std::vector<ConfigSection::Read> reads;
   const PlanarSetup setup = load_planar_config(path, set, &reads);
+  return planar_model_parameters(reads, setup.si);
+}
+
+std::vector<ModelParameter> planar_model_parameters(const std::vector<ConfigSection::Read>& reads,
+                                                    bool si) {
   std::vector<ModelParameter> out;
   std::vector<const KeySpec*> listed;  // a key read twice is listed once
   for (const ConfigSection::Read& r : reads) {
@@ -52,7 +57,7 @@ std::vector<ModelParameter> planar_model_parameters(const std::string& path,
     for (std::size_t i = 0; i < r.values.size(); ++i) {
       const Dimension d = key.components.empty() ? key.dimension : key.components[i];
       out.push_back({array ? name + "[" + std::to_string(i) + "]" : name, r.values[i], d,
-                     element_unit(key, i, setup.si), std::string(key.section),
+                     element_unit(key, i, si), std::string(key.section),
                      std::string(key.help)});
     }
   }

@@ -21,12 +21,11 @@ struct CensusSink : core::StepObserver {
 
 // The modes of a stopping run's steps: this period's census, and when the final stick began
 // (the end of the last step that did not end in stick; the run's start when none did).
-struct StickStartSink : core::StepObserver {
-  PlanarCensus census;
+struct StickStartSink : CensusSink {
   double stick_start = 0;
   explicit StickStartSink(double t0) : stick_start(t0) {}
   void on_step(const core::State& s) override {
-    census.add(s.bodies[0].mode);
+    CensusSink::on_step(s);
     if (s.bodies[0].mode != PatchMode::stick) stick_start = s.t;
   }
 };

@@ -21,6 +21,16 @@
 
 namespace selfalign {
 
+/// Resolvability of a friction level in double precision (FieldFriction and TwoRegionTable check
+/// the same bounds). A steeper or narrower transition leaves the exact solver's harmonic arcs
+/// (frequency sqrt(slope), amplitude ~ y''/slope) below the rounding of t and x, and the object
+/// chatters through ~1e8 zero-progress arcs a period (issue 9, D09, D12):
+///  - slopes of m at most kMaxFrictionSlope [1/-]: arcs last >= 1e-6 periods and their amplitude
+///    is >= 1e-12 (for |y''| ~ 1), four orders above the rounding of positions of order 1;
+///  - sloped stretches at least kMinRelativeStretch |position| wide (>= 4e6 ulps).
+inline constexpr double kMaxFrictionSlope = 1e12;
+inline constexpr double kMinRelativeStretch = 1e-9;
+
 /// One node of a piecewise-linear friction field: at `position` the field jumps from `left`
 /// (its limit from the left) to `right` (its value at and just after the node; the field is
 /// right-continuous). left == right on a continuous (ramp) node.

@@ -76,5 +76,9 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
 /// checked as the file's values are. Throws what load_planar_config throws.
 std::vector<ModelParameter> planar_model_parameters(const std::string& path,
                                                     const std::vector<std::string>& set = {});
+/// The same view from the reads of a load_planar_config already done (`si`: the setup's unit
+/// system), for a caller that needs the setup too (the config is read once).
+std::vector<ModelParameter> planar_model_parameters(const std::vector<ConfigSection::Read>& reads,
+                                                    bool si);
 
 }  // namespace selfalign
