@@ -175,6 +175,12 @@ FrictionField FrictionField::samples(const std::vector<double>& positions,
   return steps(std::vector<double>(positions.begin() + 1, positions.end()), levels);
 }
 
+FrictionField FrictionField::in_units_of(double length) const {
+  std::vector<FieldNode> nodes = nodes_;
+  for (FieldNode& n : nodes) n.position /= length;  // as Scales::length_from_si
+  return FrictionField(std::move(nodes));
+}
+
 double FrictionField::operator()(double xi) const noexcept {
   if (!(xi >= nodes_.front().position)) return nodes_.front().left;
   const auto it = std::upper_bound(nodes_.begin(), nodes_.end(), xi,

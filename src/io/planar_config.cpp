@@ -78,9 +78,7 @@ FrictionField axis_profile(const Section& f, const InputUnits& u) {
         throw InvalidParameter(f.key("file") + where, e.value(), e.allowed());
       }
     }();
-    std::vector<FieldNode> nodes(read.nodes().begin(), read.nodes().end());
-    for (FieldNode& n : nodes) n.position = u(Dimension::length, n.position);
-    return FrictionField(std::move(nodes));
+    return u.si() ? read.in_units_of(u.scales().length()) : read;
   }
   if (!f.has("positions") || !f.has("levels"))
     throw InvalidParameter(f.key(f.has("positions") ? "levels" : "positions"), "missing",

@@ -114,10 +114,7 @@ FrictionField load_field(const SimulateConfig& c, UnitSystem units, const Scales
   const FieldInterpolation interpolation = with_user_names(
       kFieldNames, [&] { return parse_field_interpolation(*c.field_interpolation); });
   const FrictionField field = FrictionField::from_csv(*c.field_file, interpolation);
-  if (units == UnitSystem::dimensionless) return field;
-  std::vector<FieldNode> nodes(field.nodes().begin(), field.nodes().end());
-  for (FieldNode& n : nodes) n.position = scales.length_from_si(n.position);
-  return FrictionField(std::move(nodes));
+  return units == UnitSystem::dimensionless ? field : field.in_units_of(scales.length());
 }
 
 Footprint make_footprint(const SimulateConfig& c) {

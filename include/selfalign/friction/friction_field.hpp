@@ -83,6 +83,9 @@ class FrictionField {
   static FrictionField from_csv(const std::string& path, const std::string& interpolation);
 
   std::span<const FieldNode> nodes() const noexcept { return nodes_; }
+  /// The same field with every position divided by `length` > 0: positions in metres to the
+  /// model's x/L (Sect. 3.2; Scales::length_from_si), levels unchanged.
+  FrictionField in_units_of(double length) const;
   /// mu(xi)/mu_1 (right-continuous at jumps). O(log n).
   double operator()(double xi) const noexcept;
   /// The integral of the field over [a, b] (a <= b; 0 for a >= b). O(log n + nodes inside).
