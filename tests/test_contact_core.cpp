@@ -16,6 +16,7 @@
 #include "planar_profiles.hpp"
 #include "selfalign/core/model.hpp"
 #include "selfalign/core/state.hpp"
+#include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_field.hpp"
@@ -193,6 +194,91 @@ TEST(ContactCore, TheOneDimensionalPartIsABodyOfTheCore) {
     EXPECT_EQ(state.bodies[at].pose.x, one.pose.x) << at;
     EXPECT_EQ(state.bodies[at].pose.angle, one.pose.angle) << at;
     EXPECT_EQ(state.bodies[at].twist.omega, one.twist.omega) << at;
+  }
+}
+
+// The one observer interface: the core hands each slider's step to MotionObserver::on_motion as
+// the piece the 1-D time-stepping stepper reports for the same step (second method: that
+// stepper, observed by the same recorder), `body` its index in the model, and every state to
+// on_step; a 1-D observer (MotionCensus) watches a body of the core as it watches the stepper.
+struct PieceRecorder final : MotionObserver {
+  std::vector<MotionInterval> pieces;
+  std::vector<double> step_times;
+  std::vector<std::size_t> bodies_seen;
+  void on_motion(const MotionInterval& piece, const Arc* arc) override {
+    EXPECT_EQ(arc, nullptr);
+    pieces.push_back(piece);
+  }
+  void on_step(const core::State& s) override {
+    step_times.push_back(s.t);
+    bodies_seen.push_back(s.bodies.size());
+  }
+};
+
+TEST(ContactCore, OneObserverSeesTheOneDimensionalPiecesAndTheCoresSteps) {
+  const FrictionField ramps = FrictionField::ramps({0.05, 0.08, 0.1, 0.16}, {1, 1.4, 1.2, 4});
+  const TimeSteppingOptions options{1.0 / 1000, 0.5};
+  PlanarTableMotion motion;
+  motion.first = &kPaper;
+  const PlanarField field = AxisField{ramps, 0, 0, 0};
+  const core::SliderBody a{UniformFootprint{0.02}, FrictionLaw{}};
+  const core::SliderBody b{PointFootprint{}, FrictionLaw(1.3, 1.0, 0.8)};
+  const std::vector<Start> rigid = starts();
+  const core::Model model{motion, field, {a, rigid[1].body, b}, options};
+  const std::vector<PlanarPose> poses{{0.0, 0, 0}, rigid[1].pose, {0.02, 0, 0}};
+  const std::vector<PlanarTwist> twists{{}, rigid[1].twist, {0.1, 0, 0}};
+  const long long steps = 2500;
+  core::State state = core::make_state(model, 0.0, poses, twists);
+  PieceRecorder seen;
+  ASSERT_EQ(core::step(model, state, steps, &seen), steps);
+  ASSERT_EQ(seen.step_times.size(), static_cast<std::size_t>(steps));
+  EXPECT_EQ(seen.step_times.back(), state.t);
+  for (std::size_t n : seen.bodies_seen) EXPECT_EQ(n, 3u);
+  ASSERT_EQ(seen.pieces.size(), static_cast<std::size_t>(2 * steps));  // two sliders per step
+
+  const std::pair<int, core::SliderBody> sliders[] = {{0, a}, {2, b}};
+  for (const auto& [index, body] : sliders) {
+    SCOPED_TRACE(::testing::Message() << "body " << index);
+    std::vector<MotionInterval> mine;
+    for (const MotionInterval& p : seen.pieces)
+      if (p.body == index) mine.push_back(p);
+    PieceRecorder stepper;
+    MotionCensus census_1d;
+    TimeSteppingState ts = make_time_stepping_state(
+        kPaper, {0.0, poses[static_cast<std::size_t>(index)].x,
+                 twists[static_cast<std::size_t>(index)].ux});
+    advance_time_stepping(kPaper, FieldFriction(ramps, body.footprint), body.law, options, ts,
+                          steps, &stepper);
+    ASSERT_EQ(mine.size(), stepper.pieces.size());
+    int moving = 0;
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+      const MotionInterval &p = mine[k], &q = stepper.pieces[k];
+      ASSERT_EQ(p.t0, q.t0) << k;
+      ASSERT_EQ(p.t1, q.t1) << k;
+      ASSERT_EQ(p.x0, q.x0) << k;
+      ASSERT_EQ(p.xd0, q.xd0) << k;
+      ASSERT_EQ(p.x1, q.x1) << k;
+      ASSERT_EQ(p.xd1, q.xd1) << k;
+      ASSERT_EQ(p.direction, q.direction) << k;
+      ASSERT_EQ(p.end, ArcEnd::time_step);
+      EXPECT_EQ(q.body, 0);
+      moving += p.direction != 0;
+    }
+    EXPECT_GT(moving, 100);  // it slid
+    // A 1-D observer on the core's run: the census of the body's pieces as of the stepper's.
+    struct OneBody final : MotionObserver {
+      int body;
+      MotionCensus census;
+      explicit OneBody(int i) : body(i) {}
+      void on_motion(const MotionInterval& p, const Arc* arc) override {
+        if (p.body == body) census.on_motion(p, arc);
+      }
+    } on_core(index);
+    core::State again = core::make_state(model, 0.0, poses, twists);
+    core::step(model, again, steps, &on_core);
+    for (const MotionInterval& q : stepper.pieces) census_1d.on_motion(q, nullptr);
+    EXPECT_EQ(on_core.census.pattern(), census_1d.pattern());
+    EXPECT_EQ(on_core.census.motion_case(), census_1d.motion_case());
   }
 }
 

@@ -189,7 +189,7 @@ TEST(PlanarRigid, ASymmetricPatchOnATableAlongXIsTheOneDimensionalScheme) {
   EXPECT_GT(std::abs(ref.object.x), 0.01);
 }
 
-struct EnergyCheck : core::StepObserver {
+struct EnergyCheck : MotionObserver {
   // On a translating table the table's twist is a uniform velocity T': the kinetic energy
   // relative to T'_{k+1} after the step, |V_{k+1} - T'_{k+1}|^2 + j omega^2, never exceeds the
   // free one, |V_k - T'_{k+1}|^2 + j omega_k^2 (the friction impulse only removes energy).
@@ -277,7 +277,7 @@ TEST(PlanarRigid, AStickingPartTurnsWithTheTable) {
   EXPECT_EQ(r.mode, PatchMode::stick);
 }
 
-struct StopTimes : core::StepObserver {
+struct StopTimes : MotionObserver {
   double t_slide = NAN, t_spin = NAN;
   void on_step(const core::State& s) override {
     const PlanarTwist& u = s.bodies[0].twist;

@@ -133,6 +133,29 @@ TEST(Stopping, EndPositionsOfExactAndTimeSteppingAgreeWithinOrderH) {
   }
 }
 
+// The stopping run on Moreau's scheme (StoppingOptions::method): its stop is the exact run's at
+// O(h), and its process time T_p too (docs/time-stepping.md: first order); C = 10 as above.
+TEST(Stopping, ATimeSteppedStoppingRunIsTheExactOneAtOrderH) {
+  const ThreePhaseProfile profile({1.0, 0.084, 1.8, 1.1});
+  const FieldFriction friction = two_region_friction(0.1, 0.05, 2.5);
+  const StoppingRun exact = stopping_run(profile, friction, {0, 0, 0});
+  ASSERT_EQ(exact.kind, StopKind::permanent_stick);
+  StoppingOptions o;
+  o.method = Method::time_stepping;
+  o.steps_per_period = 20000;
+  const StoppingRun stepped = stopping_run(profile, friction, FrictionLaw{}, {0, 0, 0}, o);
+  ASSERT_EQ(stepped.kind, StopKind::permanent_stick);
+  EXPECT_EQ(stepped.method, Method::time_stepping);
+  const double h = profile.period() / o.steps_per_period;
+  EXPECT_NEAR(stepped.end_position, exact.end_position, 10 * h);
+  EXPECT_NEAR(stepped.process_time, exact.process_time, 10 * h);
+  EXPECT_NEAR(stepped.entry_time, exact.entry_time, 10 * h);
+  // eq. (40) of the scheme holds where it stopped; the stick positions are its rests
+  EXPECT_GE(friction.bound(stepped.end_position), profile.peak_acceleration() * (1 - 1e-6));
+  ASSERT_FALSE(stepped.stick_positions.empty());
+  EXPECT_EQ(stepped.stick_positions.back(), stepped.end_position);
+}
+
 TEST(Positioning, SectionSevenTwoSettingsAgainstBruteForce) {
   // Δx_d of eq. (39) for the Fig. 16 settings, over 20 steady entries, against Moreau
   // time-stepping (h = 2e-5, 40 periods) over the same entries. Accumulation is reached only

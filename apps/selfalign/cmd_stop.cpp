@@ -58,7 +58,7 @@ json stop_json(const SimulateModel& model, const StoppingOptions& o, const Stopp
   j["accumulation_proven"] = r.kind == StopKind::accumulation && r.accumulation_proven;
   j["law"] = law_json(model.law, model.output_units(), model.scales.mu());
   // The solver of the run: the exact one, or the slip integrator for a Stribeck/viscous law.
-  j["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
+  j["method"] = to_string(r.method);
   j["end_position"] = stopped ? json(u.length(r.end_position)) : json(nullptr);
   j["process_time"] = stopped ? number_or_null(u.time(r.process_time)) : json(nullptr);
   j["entry_time"] = number_or_null(u.time(r.entry_time));

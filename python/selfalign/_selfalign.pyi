@@ -944,18 +944,24 @@ class StoppingOptions:
     max_periods: int
     fractions: FloatArray
     integrator: IntegratorOptions
+    steps_per_period: int
+    method: Optional[Method]
     def __init__(
         self,
         *,
         max_periods: int = 10000,
         fractions: ArrayLike = ...,
         integrator: IntegratorOptions = ...,
+        steps_per_period: int = 4000,
+        method: Union[Method, str, None] = None,
     ) -> None: ...
     def to_dict(self) -> dict[str, Any]: ...
 
 class StoppingRun:
     @property
     def kind(self) -> StopKind: ...
+    @property
+    def method(self) -> Method: ...
     @property
     def end_position(self) -> float: ...
     @property

@@ -109,16 +109,27 @@ void bind_stopping_run(py::module_& m) {
   py::class_<StoppingOptions> options(m, "StoppingOptions", "Options of stopping_run().");
   options
       .def(py::init([](int max_periods, const py::object& fractions,
-                       const IntegratorOptions& integrator) {
+                       const IntegratorOptions& integrator, int steps_per_period,
+                       std::optional<Method> method) {
              StoppingOptions o;
              o.max_periods = max_periods;
              o.integrator = integrator;
              o.fractions = to_vector(fractions, "fractions");
+             o.steps_per_period = steps_per_period;
+             o.method = method;
              return o;
            }),
            py::kw_only(), py::arg("max_periods") = d.max_periods,
            py::arg("fractions") = to_array(std::vector(d.fractions)),
-           py::arg("integrator") = d.integrator)
+           py::arg("integrator") = d.integrator,
+           py::arg("steps_per_period") = d.steps_per_period, py::arg("method") = py::none())
+      .def_readwrite("method", &StoppingOptions::method,
+                     "the stepper asked for (a Method or its name); None (the default): the "
+                     "best the problem allows (exact, smooth exact, integrator, then "
+                     "time-stepping)")
+      .def_readwrite("steps_per_period", &StoppingOptions::steps_per_period,
+                     "time-stepping (a profile or level no closed-form solver takes): h = "
+                     "period / steps_per_period, >= 1")
       .def_readwrite("integrator", &StoppingOptions::integrator,
                      "IntegratorOptions: tolerances of the slip integrator (Stribeck, viscous "
                      "laws), which locates the entry and the targets as events")
@@ -135,15 +146,20 @@ void bind_stopping_run(py::module_& m) {
         for (double p : o.fractions)
           fractions += (fractions.empty() ? "" : ", ") + format_number(p);
         return Repr("StoppingOptions")("max_periods", o.max_periods)
-            .raw("fractions", "[" + fractions + "]")
+            .raw("fractions", "[" + fractions + "]")("steps_per_period", o.steps_per_period)
             .str();
       });
   def_record(options, field("max_periods", &StoppingOptions::max_periods),
              field("fractions", &StoppingOptions::fractions),
-             field("integrator", &StoppingOptions::integrator));
+             field("integrator", &StoppingOptions::integrator),
+             field("steps_per_period", &StoppingOptions::steps_per_period),
+             field("method", &StoppingOptions::method));
 
   py::class_<StoppingRun> run(m, "StoppingRun", "The outcome of stopping_run().");
   run.def_readonly("kind", &StoppingRun::kind, "how the run ended")
+      .def_readonly("method", &StoppingRun::method,
+                    "the stepper that ran (Method.exact: the exact or smooth exact solver; "
+                    "Method.integrator; Method.time_stepping)")
       .def_readonly("end_position", &StoppingRun::end_position,
                     "where the object stops [-]; NaN when it did not stop (not_stopped)")
       .def_readonly("process_time", &StoppingRun::process_time,
@@ -175,7 +191,8 @@ void bind_stopping_run(py::module_& m) {
         .str();
   });
   using R = StoppingRun;
-  def_record(run, field("kind", &R::kind), field("end_position", &R::end_position),
+  def_record(run, field("kind", &R::kind), field("method", &R::method),
+             field("end_position", &R::end_position),
              field("process_time", &R::process_time), field("entry_time", &R::entry_time),
              field("x_stick_min", &R::x_stick_min),
              field("accumulation_proven", &R::accumulation_proven),
@@ -193,12 +210,17 @@ void bind_stopping_run(py::module_& m) {
       py::arg("profile"), py::arg("friction"), py::arg("start"),
       py::arg("options") = StoppingOptions{}, py::kw_only(), py::arg("law") = FrictionLaw{},
       py::call_guard<py::gil_scoped_release>(), R"doc(
-Runs the exact solver from `start` until the object provably stops for good (Sect. 7): a
-permanent stick (eq. 40: static m(x) >= max|y''|), or, for three-phase profiles on the
-two-region table under the paper's law, stick positions that the map of eq. (59) drives to
-its fixed point x_stick,min (accumulation, Sect. 7.3). Any piecewise-affine friction level
-and FrictionLaw law; the profile must be piecewise constant or piecewise linear in
-acceleration. Raises InvalidParameter otherwise. Runs without the GIL.)doc");
+Runs the object from `start` until it provably stops for good (Sect. 7): a permanent stick
+(eq. 40: static m(x) >= max|y''|; or, where no closed form proves it, at rest through a whole
+table period, the one stopping criterion of every stepper and of planar_stop), or, for
+three-phase profiles on the two-region table under the paper's law, stick positions that the
+map of eq. (59) drives to its fixed point x_stick,min (accumulation, Sect. 7.3). Any
+piecewise-affine friction level, FrictionLaw law and profile: the exact solver for piecewise
+constant or linear accelerations, the smooth exact one for Fourier profiles on piecewise
+constant levels, the slip integrator for velocity-dependent laws, Moreau's time-stepping
+(options.steps_per_period) otherwise; run.method says which. T_p is when the final stick began
+(to the step for a time-stepped run). Raises InvalidParameter for a level that is not piecewise
+affine or bad options. Runs without the GIL.)doc");
 }
 
 }  // namespace

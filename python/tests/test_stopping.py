@@ -172,3 +172,29 @@ def test_a_run_that_never_stops_has_no_end_position():
     assert run.kind == sa.StopKind.not_stopped
     assert np.isnan(run.end_position) and np.isnan(run.process_time)
 
+
+
+def test_one_stopping_criterion_for_the_time_stepped_run_and_the_planar_stop():
+    # Issue 21: stuck for a whole period decides both; on a smooth motion onto a level 2.7 below
+    # its peak |y''| = 2.78 the continuous motion never stops, while Moreau's step of h = 1/20
+    # holds the part (2.7 >= max |Δy'| / h): the 1-D run and the planar stop of a point on the
+    # same level along x stop at the same step and place (tests/test_final_stick.cpp by hand).
+    wave = sa.FourierProfile(1.0, [0.04, 0.0], [0.0, 0.01])
+    level = sa.FrictionField.ramps([0.05, 0.0500001], [1.0, 2.7])
+    friction = sa.FieldFriction(level, sa.PointFootprint())
+    exact = sa.stopping_run(wave, friction, sa.ObjectState())
+    assert exact.method == sa.Method.exact and exact.never_stops
+    options = sa.StoppingOptions(method="time-stepping", steps_per_period=20, max_periods=500)
+    assert options.to_dict()["steps_per_period"] == 20
+    one = sa.stopping_run(wave, friction, sa.ObjectState(), options)
+    assert one.method == sa.Method.time_stepping
+    assert one.kind == sa.StopKind.permanent_stick
+    problem = sa.PlanarProblem(wave, field=sa.AxisField(level),
+                               part=sa.RigidPart(0.01, sa.point_patch()), step=1.0 / 20)
+    run = sa.planar_stop(problem, entries=[sa.PlanarPose(0, 0, 0)], max_periods=500,
+                         threads=1).runs[0]
+    assert run.stopped
+    assert run.end.x == pytest.approx(one.end_position, abs=1e-12)
+    assert run.process_time == one.process_time
+    with pytest.raises(sa.InvalidParameter, match="steps_per_period"):
+        sa.stopping_run(wave, friction, sa.ObjectState(), sa.StoppingOptions(steps_per_period=0))

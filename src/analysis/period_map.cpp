@@ -44,6 +44,7 @@ StepperRequest map_request(const PeriodMapOptions& o) {
   r.integrator = o.integrator;
   r.stepping = {0.0, o.theta};
   r.steps_per_period = o.steps_per_period;
+  r.method = o.method;
   return r;
 }
 }  // namespace

@@ -6,8 +6,10 @@
 #include <limits>
 #include <memory>
 
+#include "selfalign/analysis/final_stick.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/planar/planar_table_motion.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/analysis/period_map.hpp"
@@ -30,14 +32,15 @@ namespace {
 // from which x stays at or beyond it (reset whenever an arc ends below it). It takes the exact
 // solver's arcs (crossings by bisection on their closed form) and the slip integrator's
 // intervals (crossings located by the integrator as events on its dense output: watch()).
+// The final stick's start is the one stopping criterion's (FinalStick, final_stick.hpp).
 struct StopWatch final : MotionObserver {
   double x_mu;
   std::vector<double> targets;  // positions to time
   StoppingRun& run;
-  double last_stop_time = 0;
+  FinalStick stick;
   std::vector<std::pair<double, double>> crossed;  // (position, time) in the open interval
-  StopWatch(double x_mu_, std::vector<double> targets_, StoppingRun& r)
-      : x_mu(x_mu_), targets(std::move(targets_)), run(r) {}
+  StopWatch(double x_mu_, std::vector<double> targets_, StoppingRun& r, double t0)
+      : x_mu(x_mu_), targets(std::move(targets_)), run(r), stick(t0) {}
 
   // The positions whose crossings the integrator should report, sorted.
   std::vector<double> watch() const {
@@ -59,10 +62,11 @@ struct StopWatch final : MotionObserver {
     return hi;
   }
 
-  // One arc or interval from x0 to x1 (x monotone on it), ending at t1 with `end`; crossing(X)
-  // is the first time at which x >= X on it, called only when x0 < X <= x1.
+  // One arc, interval or time step from x0 to x1 (x monotone on it), ending at t1 at rest
+  // after moving (`stops`); crossing(X) is the first time at which x >= X on it, called only
+  // when x0 < X <= x1.
   template <class Crossing>
-  void record(double x0, double x1, double t1, ArcEnd end, Crossing crossing) {
+  void record(double x0, double x1, bool stops, Crossing crossing) {
     const double x_hi = std::max(x0, x1);
     if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(x_mu);
     for (std::size_t k = 0; k < targets.size(); ++k) {
@@ -73,21 +77,25 @@ struct StopWatch final : MotionObserver {
         t = crossing(targets[k]);
       }
     }
-    if (end == ArcEnd::velocity_zero) {
-      last_stop_time = t1;
-      if (x1 >= x_mu) run.stick_positions.push_back(x1);
-    }
+    if (stops && x1 >= x_mu) run.stick_positions.push_back(x1);
+  }
+  // A piece ends at rest after moving: a slip ending at a velocity zero, or a time step that
+  // ends at x' = 0 from x' != 0.
+  static bool stops(const MotionInterval& i) {
+    return i.end == ArcEnd::velocity_zero ||
+           (i.end == ArcEnd::time_step && i.direction == 0 && i.xd0 != 0);
   }
 
   void on_crossing(double position, double time, int direction) override {
     if (direction > 0) crossed.emplace_back(position, time);
   }
   void on_motion(const MotionInterval& i, const Arc* arc) override {
+    stick.on_motion(i, arc);
     if (arc) {
-      record(i.x0, i.x1, i.t1, i.end, [&](double X) { return crossing(*arc, X); });
+      record(i.x0, i.x1, stops(i), [&](double X) { return crossing(*arc, X); });
       return;
     }
-    record(i.x0, i.x1, i.t1, i.end, [&](double X) {
+    record(i.x0, i.x1, stops(i), [&](double X) {
       if (i.x0 >= X) return i.t0;
       for (const auto& [position, time] : crossed)
         if (position == X) return time;
@@ -119,8 +127,9 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const FrictionLaw& law, const ObjectState& start,
                          const StoppingOptions& o) {
-  const PiecewisePolynomialProfile& pwc = require_exact_profile(profile, "a stopping run");
   if (o.max_periods < 1) throw InvalidParameter("max_periods", o.max_periods, "must be >= 1");
+  if (o.steps_per_period < 1)
+    throw InvalidParameter("steps_per_period", o.steps_per_period, "must be >= 1");
   for (double p : o.fractions)
     if (!(p >= 0 && p <= 1)) throw InvalidParameter("fraction p", p, "must be in [0, 1]");
 
@@ -128,13 +137,30 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   if (!pieces)
     throw InvalidParameter("friction", "not piecewise affine",
                            "a stopping run needs a piecewise-affine friction level (exact solver)");
-  const double peak = profile.peak_acceleration(), P = profile.period();
+  const double P = profile.period();
+  PeriodMapOptions map_options;
+  map_options.integrator = o.integrator;
+  map_options.steps_per_period = o.steps_per_period;
+  map_options.method = o.method;
+  const PeriodMap period_map(profile, friction, law, map_options);
+  // The largest |y''| a part at rest must resist: the profile's peak for the continuous motion
+  // (eq. 40); for Moreau's scheme the largest velocity change of a step over h (the step holds
+  // a part at rest at x exactly when h s m(x) bounds it: eq. 40 of the scheme, as the planar
+  // stop's never-stops proof), on the run's own grid t0 + k h.
+  const bool stepped = period_map.method() == Method::time_stepping;
+  const double peak =
+      stepped ? largest_step_velocity_change(PlanarTableMotion{&profile}, start.t,
+                                             period_map.step(), o.steps_per_period) /
+                    period_map.step()
+              : profile.peak_acceleration();
   // The paper's table under the paper's law: eqs. (41), (59), (60) as written; otherwise their
-  // general forms (the rise of the level, s m(x) >= peak), and no accumulation proof.
+  // general forms (the rise of the level, s m(x) >= peak), and no accumulation proof (nor for a
+  // time-stepped run: eqs. 59, 60 are of the continuous motion).
   const TwoRegionTable* two = friction.two_region();
   const bool paper = two && law.is_unit();
   const double x_mu = friction_rise(friction);
   StoppingRun r;
+  r.method = period_map.method();
   r.x_stick_min = paper ? stick_position_min(*two, peak) : stick_position_min(*pieces, law, peak);
   r.entry_time = kNaN;
   r.end_position = r.process_time = kNaN;  // absent until a proof of the stop is found
@@ -152,27 +178,26 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   // durations' sum, which may differ from the profile's nominal period by rounding), so that
   // it lands on the switch itself, not an ulp past it (where the slip under -y2'' has begun).
   const ThreePhaseProfile* three_phase = profile.three_phase();
+  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
   std::unique_ptr<StickPositionMap> map;
-  if (three_phase && paper) map = std::make_unique<StickPositionMap>(*three_phase, *two);
+  if (three_phase && paper && !stepped)
+    map = std::make_unique<StickPositionMap>(*three_phase, *two);
   double phase = 0;
-  if (three_phase)
-    for (const AccelerationSegment& seg : pwc.segments())
+  if (three_phase && pwc)
+    for (const AccelerationSegment& seg : pwc->segments())
       if (seg.accel < 0) {  // the -y2'' segment begins at t1
         phase = seg.begin;
         break;
       }
 
-  PeriodMapOptions map_options;
-  map_options.integrator = o.integrator;
-  const PeriodMap period_map(profile, friction, law, map_options);
   PeriodMap::Run run = period_map.start(start);
-  StopWatch watch(x_mu, targets, r);
-  watch.last_stop_time = start.t;  // an object already at rest has been stopped since t0
-  const double P_segments = pwc.period();
+  StopWatch watch(x_mu, targets, r, start.t);  // at rest at t0: stopped since t0
+  const double P_segments = pwc ? pwc->period() : P;
   const bool integrated = period_map.method() == Method::integrator;
   const std::vector<double> watched = integrated ? watch.watch() : std::vector<double>{};
-  long long n_first = integrated ? static_cast<long long>(std::floor(start.t / P_segments))
-                                 : run.exact_state().period_index;
+  long long n_first = period_map.method() == Method::exact && pwc
+                          ? run.exact_state().period_index
+                          : static_cast<long long>(std::floor(start.t / P_segments));
   if (static_cast<double>(n_first) * P_segments + phase <= start.t) ++n_first;
   ObjectState previous{0, std::numeric_limits<double>::quiet_NaN(), 0};
   long long look = n_first;
@@ -180,9 +205,21 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
     const double t_look = static_cast<double>(look++) * P_segments + phase;
     run.advance_to(t_look, &watch, watched);
   };
+  double last_look = std::numeric_limits<double>::quiet_NaN();  // a period before this look
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
     advance_to_look();
     const ObjectState& obj = run.state();
+    const double window_start = last_look;
+    last_look = obj.t;
+    // The one stopping criterion (final_stick.hpp): at rest through the whole period since the
+    // last look. The closed forms below prove it sooner where they apply (eq. 40 at the first
+    // rest); this catches the others (a time-stepped run's stick).
+    if (obj.xd == 0 && obj.x >= x_mu && watch.stick.stuck_since(window_start)) {
+      r.kind = StopKind::permanent_stick;
+      r.end_position = obj.x;
+      r.process_time = watch.stick.since();
+      break;
+    }
     if (obj.x == previous.x && obj.xd == previous.xd) break;  // periodic orbit, not a stop
     // No position holds the object (eq. 41 gives +inf): it can never stop for good. Once its
     // entry is known there is nothing left to find.
@@ -195,7 +232,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
     if (sticks_permanently(friction, law, peak, obj.x)) {  // eq. (40)
       r.kind = StopKind::permanent_stick;
       r.end_position = obj.x;
-      r.process_time = watch.last_stop_time;
+      r.process_time = watch.stick.since();
     } else if (map && map->proves_accumulation_from(obj.x)) {  // eqs. (59), (60)
       r.kind = StopKind::accumulation;
       r.accumulation_proven = true;

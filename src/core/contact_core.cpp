@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <variant>
 
@@ -17,9 +18,11 @@ namespace {
 
 // A 1-D part's stages: its level at the step's midpoint (contacts, loads), the 1-D Moreau
 // projection with the table's velocity increment along e1 (impulse), the theta update
-// (integrate): detail::moreau_slider_step, the 1-D stepper's own step.
+// (integrate): detail::moreau_slider_step, the 1-D stepper's own step. The step as the 1-D
+// stepper's piece (t0 = t1 - h, as that stepper forms it) goes to the observer, if any.
 void slider_step(const Model& model, const SliderBody& b, double h, double th,
-                 const PlanarTablePose& tb, const PlanarTablePose& tb1, BodyState& st) {
+                 const PlanarTablePose& tb, const PlanarTablePose& tb1, double t1, int index,
+                 BodyState& st, MotionObserver* observer) {
   const PlanarTableMotion& motion = model.motion;
   const double yd = motion.e1_x * tb.vx + motion.e1_y * tb.vy;
   const double yd1 = motion.e1_x * tb1.vx + motion.e1_y * tb1.vy;
@@ -34,6 +37,11 @@ void slider_step(const Model& model, const SliderBody& b, double h, double th,
   st.pose.x = x1;
   st.twist.ux = v1;
   st.mode = v1 == 0 ? PatchMode::stick : PatchMode::slip;
+  if (observer) {
+    const auto direction = static_cast<std::int8_t>(v1 > 0 ? 1 : v1 < 0 ? -1 : 0);
+    observer->on_motion({t1 - h, t1, x, v, x1, v1, direction, ArcEnd::time_step, index},
+                        nullptr);
+  }
 }
 
 }  // namespace
@@ -134,7 +142,7 @@ State make_state(const Model& model, double t, std::span<const PlanarPose> poses
   return s;
 }
 
-long long step(const Model& model, State& s, long long steps, StepObserver* observer) {
+long long step(const Model& model, State& s, long long steps, MotionObserver* observer) {
   validate(model);
   const std::size_t n = model.bodies.size();
   if (s.bodies.size() != n || s.contacts.size() != n)
@@ -154,7 +162,8 @@ long long step(const Model& model, State& s, long long steps, StepObserver* obse
                                                       tb1, s.bodies[i], s.contacts[i]);
                             },
                             [&](const SliderBody& b) {
-                              slider_step(model, b, h, th, s.table, tb1, s.bodies[i]);
+                              slider_step(model, b, h, th, s.table, tb1, t1,
+                                          static_cast<int>(i), s.bodies[i], observer);
                             }},
                  model.bodies[i]);
     // checks: the table's motion (a profile that returns NaN), then each body

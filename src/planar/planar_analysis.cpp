@@ -7,6 +7,7 @@
 #include <string>
 
 #include "../analysis/parallel_cells.hpp"
+#include "selfalign/analysis/final_stick.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps
 #include "step_sinks.hpp"
@@ -18,10 +19,9 @@ using detail::CensusSink;
 using detail::compact;
 using detail::LevelSink;
 using detail::require_finite;
-using detail::StickStartSink;
 
 void run_periods(const PlanarProblem& p, PlanarRigidState& s, long long periods,
-                 core::StepObserver* sink = nullptr) {
+                 MotionObserver* sink = nullptr) {
   advance_planar_rigid(p.motion, p.field, p.law, p.part, p.options, s,
                        periods * steps_per_period(p), sink);
 }
@@ -165,14 +165,8 @@ bool never_held(const PlanarProblem& p) {
   if (p.motion.rotation) return false;
   const double h = p.options.step;
   const double capacity = h * p.law.static_coefficient() * max_planar_level(p.field);
-  const long long n = steps_per_period(p);
-  PlanarTablePose a = table_pose(p.motion, 0.0);
-  for (long long k = 1; k <= n; ++k) {
-    const PlanarTablePose b = table_pose(p.motion, static_cast<double>(k) * h);
-    if (std::hypot(b.vx - a.vx, b.vy - a.vy) > capacity * (1 + 1e-9) + 1e-15) return true;
-    a = b;
-  }
-  return false;
+  return largest_step_velocity_change(p.motion, 0.0, h, steps_per_period(p)) >
+         capacity * (1 + 1e-9) + 1e-15;
 }
 
 }  // namespace
@@ -202,16 +196,16 @@ PlanarStopSummary planar_stop(const PlanarProblem& p, const std::vector<PlanarPo
       [&](std::size_t i) {
         PlanarStopRun& run = sum.runs[i];
         PlanarRigidState s = make_planar_rigid_state(p.motion, 0, entries[i], {});
-        StickStartSink steps(0.0);
+        FinalStick stick(0.0);  // the one stopping criterion (analysis/final_stick.hpp)
         for (long long k = 1; k <= max_periods; ++k) {
-          steps.census = {};
-          run_periods(p, s, 1, &steps);
+          const double period_start = s.t;
+          run_periods(p, s, 1, &stick);
           require_finite(s);
           run.periods = k;
-          if (steps.census.stick == steps.census.total()) {  // stuck for a whole period
+          if (stick.stuck_since(period_start)) {  // stuck for a whole period
             run.stopped = true;
             run.end = s.pose;
-            run.process_time = steps.stick_start;  // the final stick's start, to the step
+            run.process_time = stick.since();  // the final stick's start, to the step
             break;
           }
         }

@@ -46,7 +46,7 @@ PlanarTwist world_twist(const PlanarRigidState& s) { return world_twist(s.table,
 void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& field,
                           const FrictionLaw& law, const RigidPart& part,
                           const TimeSteppingOptions& o, PlanarRigidState& st, long long steps,
-                          core::StepObserver* observer) {
+                          MotionObserver* observer) {
   // Checked here too, so that errors name the part's own parameters (the core's name the body).
   validate(o);
   validate(motion);

@@ -11,7 +11,7 @@ namespace selfalign {
 namespace {
 
 // Records the state every `every` steps, and counts every step's mode.
-struct Recorder final : core::StepObserver {
+struct Recorder final : MotionObserver {
   PlanarTrajectory& out;
   long long every;
   long long last = -1;  // step index of the last sample

@@ -68,4 +68,17 @@ void table_velocity(const PlanarTableMotion& m, double t, double& vx, double& vy
   }
 }
 
+double largest_step_velocity_change(const PlanarTableMotion& m, double t0, double h,
+                                    long long steps) {
+  double largest = 0, vx0, vy0;
+  table_velocity(m, t0, vx0, vy0);
+  for (long long k = 1; k <= steps; ++k) {
+    double vx, vy;
+    table_velocity(m, t0 + static_cast<double>(k) * h, vx, vy);
+    largest = std::max(largest, std::hypot(vx - vx0, vy - vy0));
+    vx0 = vx, vy0 = vy;
+  }
+  return largest;
+}
+
 }  // namespace selfalign

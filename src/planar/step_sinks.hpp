@@ -14,23 +14,12 @@
 namespace selfalign::detail {
 
 // The analyses run one body (advance_planar_rigid): bodies[0] of the core's state.
-struct CensusSink : core::StepObserver {
+struct CensusSink : MotionObserver {
   PlanarCensus census;
   void on_step(const core::State& s) override { census.add(s.bodies[0].mode); }
 };
 
-// The modes of a stopping run's steps: this period's census, and when the final stick began
-// (the end of the last step that did not end in stick; the run's start when none did).
-struct StickStartSink : CensusSink {
-  double stick_start = 0;
-  explicit StickStartSink(double t0) : stick_start(t0) {}
-  void on_step(const core::State& s) override {
-    CensusSink::on_step(s);
-    if (s.bodies[0].mode != PatchMode::stick) stick_start = s.t;
-  }
-};
-
-struct LevelSink : core::StepObserver {
+struct LevelSink : MotionObserver {
   const PlanarField& field;
   const ContactPatch& patch;
   CensusSink* census = nullptr;  // also counts the steps' modes when given

@@ -18,6 +18,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <span>
 #include <string>
@@ -41,6 +42,9 @@ struct PeriodMapOptions {
   int steps_per_period = 4000;
   double theta = 0.5;  ///< time-stepping theta, in [0, 1]
   IntegratorOptions integrator{};  ///< tolerances of the slip integrator (velocity-dependent laws)
+  /// The stepper asked for (StepperRequest::method); nullopt (the default): the best the
+  /// problem allows.
+  std::optional<Method> method{};
 };
 
 class PeriodMap {

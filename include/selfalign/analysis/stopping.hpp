@@ -2,23 +2,31 @@
 /// \file stopping.hpp
 /// A stopping run (Sect. 7): the object walks into the friction transition region and stops.
 ///
-/// The end position is where the object sticks for good, established by proof, not by
-/// waiting N periods:
+/// The end position is where the object sticks for good, established by proof:
 ///  - permanent stick: at rest at x with m(x) >= max |y''| (eq. 40), nothing can move it again;
+///    or, where no closed form proves it at the first rest (a time-stepped run), at rest through
+///    a whole table period: the one stopping criterion of every stepper (final_stick.hpp), which
+///    the planar stop uses too;
 ///  - accumulation: for three-phase profiles, at rest at x_n at phase t1 (the end of the rest
 ///    through [t0, t1]) where the stick positions provably rise to the fixed point
 ///    x_stick,min of eq. (59)/(60) (StickPositionMap::proves_accumulation_from: the stops of
 ///    eq. (59) hold and rise, or the slides back after them contract, as on the diagonal
 ///    y3'' = y2''); the end position is that limit, reached only as t -> infinity (Sect. 7.3).
 /// The run looks at the object once per period: at phase t1 for three-phase profiles, at
-/// phase 0 otherwise.
+/// phase 0 otherwise. Any profile: the stepper is the period map's (PeriodMap: the exact solver
+/// for piecewise-polynomial profiles, the smooth exact one for Fourier profiles on
+/// piecewise-constant levels, the slip integrator for velocity-dependent laws, Moreau's
+/// time-stepping otherwise). T_p is the final stick's start (FinalStick::since): to the step h
+/// for a time-stepped run.
 
+#include <optional>
 #include <vector>
 
 #include "selfalign/simulate/slip_integrator.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/method.hpp"
 #include "selfalign/simulate/object_state.hpp"
 
 namespace selfalign {
@@ -48,10 +56,16 @@ struct StoppingOptions {
   /// Slip integrator tolerances (a Stribeck or viscous law); its events then time the entry
   /// and the targets (docs/slip-integrator.md).
   IntegratorOptions integrator{};
+  /// Time-stepping (profiles or levels no closed-form solver takes, or asked for by method):
+  /// h = Δt / steps_per_period.
+  int steps_per_period = 4000;
+  /// The stepper (StepperRequest::method); nullopt (the default): the best the problem allows.
+  std::optional<Method> method{};
 };
 
 struct StoppingRun {
   StopKind kind = StopKind::not_stopped;
+  Method method = Method::exact;  ///< the stepper that ran (the period map's choice)
   double end_position = 0;   ///< where the object stops [-]; NaN when not_stopped
   /// T_p: time the final stick starts [-]; +inf for accumulation; NaN when not_stopped.
   double process_time = 0;
@@ -86,8 +100,9 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
 /// (40) becomes s m(x) >= peak and eq. (41) its smallest such x from which the level stays
 /// high enough (stick_position_min of the pieces); the accumulation proof (eqs. 59, 60) is the
 /// paper's and applies to the two-region table with a three-phase profile under the paper's
-/// law only (elsewhere an accumulating run ends not_stopped). Throws InvalidParameter for a
-/// level that is not piecewise affine. A velocity-dependent law (Stribeck, viscous) runs on the
+/// law only (elsewhere an accumulating run ends not_stopped, or, time-stepped, stops where its
+/// discrete scheme sticks for a whole period). Throws InvalidParameter for a level that is not
+/// piecewise affine, or steps_per_period < 1. A velocity-dependent law (Stribeck, viscous) runs on the
 /// slip integrator, which locates the entry and the targets' crossings as events.
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const FrictionLaw& law, const ObjectState& start,

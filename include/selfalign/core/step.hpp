@@ -11,6 +11,9 @@
 ///                -> integrate
 ///   checks       finiteness: a body whose state is no longer finite sets status non_finite
 ///                and the run stops (no exception inside the loop)
+///   observe      the step to the one observer interface (simulate/motion_observer.hpp): each
+///                1-D part's step as a piece (on_motion, `body` its index), then the state
+///                (on_step)
 /// The per-body stages are a visitor over the body's kind: a rigid body's are
 /// src/planar/rigid_body_step.hpp; a 1-D part's (SliderBody) its level at the midpoint and the
 /// 1-D Moreau projection (src/simulate/moreau_slider_step.hpp). A rigid body of an N-body model
@@ -18,20 +21,16 @@
 /// advance_time_stepping moves it: each pair runs the same stages.
 
 #include "selfalign/core/state.hpp"
+#include "selfalign/simulate/motion_observer.hpp"
 
 namespace selfalign::core {
 
-/// Observer of the core's steps: on_step(state) after each step, every body's state in it.
-class StepObserver {
- public:
-  virtual ~StepObserver() = default;
-  virtual void on_step(const State& state) = 0;
-};
-
-/// Advances up to `steps` steps (fewer when a check fails: see state.status), calling
-/// observer->on_step (if any) after each. Returns the steps taken. Validates the model and
+/// Advances up to `steps` steps (fewer when a check fails: see state.status). After each step
+/// the observer (if any) is handed every SliderBody's step as a piece (on_motion: t0, t1, x
+/// and x' before and after, direction of x' at its end, ArcEnd::time_step, `body` its index;
+/// no closed form), then the state (on_step). Returns the steps taken. Validates the model and
 /// that the state has one entry per body.
 long long step(const Model& model, State& state, long long steps,
-               StepObserver* observer = nullptr);
+               MotionObserver* observer = nullptr);
 
 }  // namespace selfalign::core

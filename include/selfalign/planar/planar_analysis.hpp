@@ -127,13 +127,15 @@ struct PlanarStopSummary {
   /// Proven that no part is ever stuck for a whole period (as the 1-D StoppingRun's
   /// never_stops): on a table that does not turn, a part at rest on it needs a friction impulse
   /// equal to the table's velocity change over each step, and its patch gives at most
-  /// h s max m (the loads sum to 1); some step of the period asks more. The runs are then not
+  /// h s max m (the loads sum to 1); some step of the period asks more
+/// (largest_step_velocity_change, as the time-stepped 1-D run's). The runs are then not
   /// simulated (not stopped, 0 periods).
   bool never_stops = false;
 };
 
-/// From rest at each entry pose, runs until the part sticks for a whole period (stopped) or
-/// max_periods pass, unless no part can ever be held (never_stops); the entries in parallel as
+/// From rest at each entry pose, runs until the part sticks for a whole period (stopped: the
+/// one stopping criterion, analysis/final_stick.hpp, as the 1-D stopping run's) or max_periods
+/// pass, unless no part can ever be held (never_stops); the entries in parallel as
 /// planar_drift_field's samples (a failed run kept with its failure). `progress` (optional)
 /// gets (entries done, entries).
 PlanarStopSummary planar_stop(const PlanarProblem& problem, const std::vector<PlanarPose>& entries,

@@ -75,6 +75,6 @@ PlanarTwist world_twist(const PlanarRigidState& state);
 void advance_planar_rigid(const PlanarTableMotion& motion, const PlanarField& field,
                           const FrictionLaw& law, const RigidPart& part,
                           const TimeSteppingOptions& options, PlanarRigidState& state,
-                          long long steps, core::StepObserver* observer = nullptr);
+                          long long steps, MotionObserver* observer = nullptr);
 
 }  // namespace selfalign

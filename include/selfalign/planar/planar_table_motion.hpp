@@ -43,4 +43,14 @@ void require_planar_law(const FrictionLaw& law);
 /// The table velocity Y'(t) [-].
 void table_velocity(const PlanarTableMotion& motion, double t, double& vx, double& vy);
 
+/// The largest change of the table's velocity over one of Moreau's steps,
+/// max_k |Y'(t0 + k h) - Y'(t0 + (k - 1) h)| for k = 1 .. steps [-] (the times formed as the
+/// steppers form them). A part at rest on the table is held through step k exactly when the
+/// step's largest friction impulse h s m bounds that change, so with steps covering a period:
+/// no part is ever held for a whole period where h s max m falls below it (planar_stop's
+/// never-stops proof), and a part at rest where h s m(x) reaches it is held for good (the 1-D
+/// time-stepped stopping run's eq. 40). The rotation is not read.
+double largest_step_velocity_change(const PlanarTableMotion& motion, double t0, double h,
+                                    long long steps);
+
 }  // namespace selfalign

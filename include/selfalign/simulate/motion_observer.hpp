@@ -1,6 +1,7 @@
 #pragma once
 /// \file motion_observer.hpp
-/// The one observer of a 1-D motion, whatever solver computes it.
+/// The one observer interface of every stepper (issue 21): the 1-D steppers and the contact
+/// core's staged step (core/step.hpp) alike.
 ///
 /// Every 1-D stepper (simulate/stepper.hpp) hands the motion it computes to a MotionObserver,
 /// one piece at a time and in time order:
@@ -12,6 +13,12 @@
 /// An observer that needs the closed form (saltation matrices, arc lists) reads `arc` and is
 /// given to the closed-form steppers only (PeriodMap::arcs() checks); every other observer
 /// (census, stopping, positioning, convergence, reach) works with any stepper.
+///
+/// The contact core's step (core::step) hands the same observer each 1-D part's time step as a
+/// piece (its `body` the part's index in the model; a SliderBody moves as the 1-D time-stepping
+/// stepper moves the part, piece for piece), then the whole state after the step (on_step:
+/// every body's pose, twist and contact mode, the table's pose): what the planar analyses and
+/// run driver observe. An observer overrides what it reads; the rest do nothing.
 
 #include <algorithm>
 #include <cstdint>
@@ -20,6 +27,9 @@
 namespace selfalign {
 
 struct Arc;
+namespace core {
+struct State;
+}
 
 /// What ended a piece of the motion.
 enum class ArcEnd : std::uint8_t {
@@ -40,20 +50,28 @@ struct MotionInterval {
   /// end (0: the step ended at rest).
   std::int8_t direction = 0;
   ArcEnd end = ArcEnd::horizon;
+  /// The body the piece moves: its index in a contact-core model (core::step); 0 for the 1-D
+  /// steppers' one part.
+  std::int32_t body = 0;
 };
 
-/// The one observer interface of the 1-D steppers.
+/// The one observer interface of the steppers (1-D and the contact core).
 class MotionObserver {
  public:
   virtual ~MotionObserver() = default;
-  /// The next piece of the motion. `arc` is its closed form when the stepper has one (exact and
-  /// smooth-exact solvers: then `piece` is `*arc`), nullptr otherwise.
-  virtual void on_motion(const MotionInterval& piece, const Arc* arc) = 0;
+  /// The next piece of a 1-D motion. `arc` is its closed form when the stepper has one (exact
+  /// and smooth-exact solvers: then `piece` is `*arc`), nullptr otherwise.
+  virtual void on_motion(const MotionInterval& piece, const Arc* arc) {
+    (void)piece, (void)arc;
+  }
   /// A watched position crossed at `time` by the slip in `direction` (+1, -1) that the next
   /// on_motion call closes (slip integrator, asked to watch positions).
   virtual void on_crossing(double position, double time, int direction) {
     (void)position, (void)time, (void)direction;
   }
+  /// A step of the contact core ended (core::step): `state` holds every body after it (after
+  /// the on_motion calls of its 1-D parts' pieces for the step).
+  virtual void on_step(const core::State& state) { (void)state; }
 };
 
 /// The farthest forward the motion reached: x is monotone on every piece (each ends at every
