@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <variant>
 
@@ -20,20 +21,24 @@ namespace {
 // projection with the table's velocity increment along e1 (impulse), the theta update
 // (integrate): detail::moreau_slider_step, the 1-D stepper's own step. The step as the 1-D
 // stepper's piece (t0 = t1 - h, as that stepper forms it) goes to the observer, if any.
+// Gravity's impulse along the incline enters along e1 only (the part is guided along e1).
 void slider_step(const Model& model, const SliderBody& b, double h, double th,
-                 const PlanarTablePose& tb, const PlanarTablePose& tb1, double t1, int index,
-                 BodyState& st, MotionObserver* observer) {
+                 const PlanarTablePose& tb, const PlanarTablePose& tb1,
+                 const detail::StepLoads& loads, double t1, int index, BodyState& st,
+                 MotionObserver* observer) {
   const PlanarTableMotion& motion = model.motion;
   const double yd = motion.e1_x * tb.vx + motion.e1_y * tb.vy;
   const double yd1 = motion.e1_x * tb1.vx + motion.e1_y * tb1.vy;
   const double x = st.pose.x, v = st.twist.ux;
   const double m = slider_level(model, b, x + 0.5 * h * v);
   const detail::SliderCoefficients c(b.law);
+  double v_free = v - (yd1 - yd);
+  if (loads.pulled) v_free += motion.e1_x * loads.gx + motion.e1_y * loads.gy;
   double x1;
   const double v1 =
       b.law.velocity_dependent()
-          ? detail::moreau_slider_step<true>(b.law, c, h, th, m, x, v, v - (yd1 - yd), x1)
-          : detail::moreau_slider_step<false>(b.law, c, h, th, m, x, v, v - (yd1 - yd), x1);
+          ? detail::moreau_slider_step<true>(b.law, c, h, th, m, x, v, v_free, x1, loads.load)
+          : detail::moreau_slider_step<false>(b.law, c, h, th, m, x, v, v_free, x1, loads.load);
   st.pose.x = x1;
   st.twist.ux = v1;
   st.mode = v1 == 0 ? PatchMode::stick : PatchMode::slip;
@@ -73,6 +78,19 @@ double slider_level(const Model& model, const SliderBody& b, double x) {
 void validate(const Model& m) {
   if (m.bodies.empty()) throw InvalidParameter("bodies", "none", "needs at least one body");
   validate(m.motion);
+  if (m.gravity) {
+    const Gravity& g = *m.gravity;
+    if (!(g.g > 0 && g.g <= 1e50)) throw InvalidParameter("gravity.g", g.g, "must be in (0, 1e50]");
+    if (!(g.incline >= 0 && g.incline < std::numbers::pi / 2))
+      throw InvalidParameter("gravity.incline", g.incline, "must be in [0, pi/2) rad");
+    if (!(std::abs(std::hypot(g.downhill_x, g.downhill_y) - 1) <= 1e-12))
+      throw InvalidParameter("gravity.downhill", std::hypot(g.downhill_x, g.downhill_y),
+                             "must be a unit vector (|d| = 1)");
+  } else if (m.motion.normal) {
+    throw InvalidParameter("motion.normal", m.motion.normal->kind(),
+                           "the table's normal motion changes the normal load: give the model "
+                           "gravity (Model::gravity)");
+  }
   validate(m.field);
   validate(m.options);
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
@@ -150,19 +168,41 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
                            "must be made by make_state for this model (" + std::to_string(n) +
                                " bodies)");
   const double h = model.options.step, th = model.options.theta;
+  // loads: the paper's constant normal load (impulse h per unit weight), or gravity on the
+  // incline with the table's normal motion (Gravity): the part of the stage fixed over the run
+  detail::StepLoads loads{h};
+  double g = 0, pressing = 0;
+  if (model.gravity) {
+    const Gravity& gr = *model.gravity;
+    g = gr.g;
+    pressing = h * std::cos(gr.incline);
+    const double pull = h * gr.g * std::sin(gr.incline);
+    loads.gx = pull * gr.downhill_x, loads.gy = pull * gr.downhill_y;
+    loads.pulled = true;
+  }
   long long taken = 0;
   for (; taken < steps && s.status == StepStatus::ok; ++taken) {
     // kinematics, once for every body
     const double t1 = s.t0 + static_cast<double>(s.step_index + 1) * h;
     const PlanarTablePose tb1 = table_pose(model.motion, t1);
+    // loads: the step's normal impulse per unit weight; negative: the table falls away faster
+    // than gravity, the bodies lift off (no flight phase yet: the run stops before this step)
+    if (model.gravity) {
+      loads.load = pressing + (tb1.vz - s.table.vz) / g;
+      if (loads.load < 0) {
+        s.status = StepStatus::lift_off;
+        s.failed_body = -1;
+        break;
+      }
+    }
     // the body stages, block by block
     for (std::size_t i = 0; i < n; ++i)
       std::visit(Overloaded{[&](const RigidBody& b) {
                               detail::rigid_body_step(model.field, b.law, b.part, h, th, s.table,
-                                                      tb1, s.bodies[i], s.contacts[i]);
+                                                      tb1, loads, s.bodies[i], s.contacts[i]);
                             },
                             [&](const SliderBody& b) {
-                              slider_step(model, b, h, th, s.table, tb1, t1,
+                              slider_step(model, b, h, th, s.table, tb1, loads, t1,
                                           static_cast<int>(i), s.bodies[i], observer);
                             }},
                  model.bodies[i]);

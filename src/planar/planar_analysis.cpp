@@ -61,6 +61,7 @@ void PlanarCensus::add(PatchMode mode) noexcept {
 
 void validate(const PlanarProblem& p) {
   validate(p.motion);
+  require_no_normal_motion(p.motion, "a planar problem");
   validate(p.field);
   require_planar_law(p.law);
   validate(p.part);

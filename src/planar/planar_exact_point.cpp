@@ -65,6 +65,7 @@ long long advance_planar_exact_point(const PlanarTableMotion& motion,
   if (motion.rotation)
     throw InvalidParameter("rotation", motion.rotation->kind(),
                            "the exact point solver needs a translating table");
+  require_no_normal_motion(motion, "the exact point solver");
   validate(PlanarField(field));
   require_planar_law(law);
   if (!std::isfinite(t_end) || t_end < st.t)

@@ -80,6 +80,7 @@ void advance_planar_point(const PlanarTableMotion& motion, const PlanarField& fi
   if (motion.rotation)
     throw InvalidParameter("rotation", motion.rotation->kind(),
                            "a point contact needs a translating table (use the rigid part)");
+  require_no_normal_motion(motion, "the point stepper");
   require_planar_law(law);
   const double h = o.step, theta = o.theta;
   const double s = law.static_coefficient(), kin = law.kinetic_forward();

@@ -17,6 +17,14 @@ void validate(const PlanarTableMotion& m) {
   if (m.second) unit("e2", m.e2_x, m.e2_y);
 }
 
+void require_no_normal_motion(const PlanarTableMotion& m, const char* solver) {
+  if (m.normal)
+    throw InvalidParameter("normal", m.normal->kind(),
+                           std::string(solver) +
+                               " has no normal load: the table's normal motion needs the contact "
+                               "core's model with gravity (core::Model::gravity)");
+}
+
 void require_planar_law(const FrictionLaw& law) {
   if (law.kinetic_forward() != law.kinetic_backward() || law.velocity_dependent())
     throw InvalidParameter("law", law.describe(),
@@ -38,15 +46,19 @@ PlanarTablePose table_pose(const PlanarTableMotion& m, double t) {
     const TableState s = m.rotation->state(t);
     p.angle = s.y, p.rate = s.yd;
   }
+  if (m.normal) {
+    const TableState s = m.normal->state(t);
+    p.z = s.y, p.vz = s.yd;
+  }
   return p;
 }
 
 double planar_period(const PlanarTableMotion& m) {
   double period = 0;
-  for (const TableProfile* p : {m.first, m.second, m.rotation})
+  for (const TableProfile* p : {m.first, m.second, m.rotation, m.normal})
     if (p) period = std::max(period, p->period());
   if (period == 0) throw InvalidParameter("motion", "no profile", "needs at least one profile");
-  for (const TableProfile* p : {m.first, m.second, m.rotation})
+  for (const TableProfile* p : {m.first, m.second, m.rotation, m.normal})
     if (p) {
       const double ratio = period / p->period();
       if (!(std::abs(ratio - std::round(ratio)) <= 1e-9 * ratio))

@@ -2,8 +2,9 @@
 // Internal: one Moreau step of one rigid body on the table, the stages after the table's
 // kinematics (planar_rigid.hpp for the scheme):
 //   contacts    the patch's points at the midpoint pose, their field level read on the table
-//   loads       each point's normal load: its load fraction (constant here; the stage the
-//               feeder issue's normal vibration changes)
+//   loads       each point's normal impulse: its load fraction of the step's normal impulse
+//               (StepLoads: h for the paper's constant load; with core::Gravity
+//               h cos(incline) + Δz'/g), and gravity's impulse along the incline
 //   impulse     the friction impulse of the patch (PatchImpulseSolver, exact stick)
 //   integrate   pose and twist at t_{k+1}
 // The body stages of the contact core's step (src/core/contact_core.cpp, N bodies on one
@@ -21,12 +22,22 @@
 
 namespace selfalign::detail {
 
+// The loads stage's result for one step, the same for every body (core::Gravity): the normal
+// impulse per unit weight (h: the paper's constant normal load), and gravity's impulse per
+// unit mass in the table's plane, world axes (applied only when `pulled`: the paper's model
+// adds nothing, not even a zero).
+struct StepLoads {
+  double load = 0;
+  double gx = 0, gy = 0;
+  bool pulled = false;
+};
+
 // BodyState has pose, twist, mode, pivot, sweeps, newton_steps and solver as PlanarRigidState.
 // `tb` is the table at t_k, `tb1` at t_{k+1}; `contacts` a workspace of patch.size() entries.
 template <class BodyState>
 void rigid_body_step(const PlanarField& field, const FrictionLaw& law, const RigidPart& part,
                      double h, double th, const PlanarTablePose& tb, const PlanarTablePose& tb1,
-                     BodyState& st, std::span<PatchContact> contacts) {
+                     const StepLoads& loads, BodyState& st, std::span<PatchContact> contacts) {
   const double j = part.inertia;
   const double s = law.static_coefficient(), k = law.kinetic_forward();
   const std::size_t n = part.patch.size();
@@ -34,8 +45,9 @@ void rigid_body_step(const PlanarField& field, const FrictionLaw& law, const Rig
   // the body's world twist at t_k (world_twist of planar_rigid.hpp)
   const double c_t = std::cos(tb.angle), s_t = std::sin(tb.angle);
   const double rx = c_t * st.pose.x - s_t * st.pose.y, ry = s_t * st.pose.x + c_t * st.pose.y;
-  const PlanarTwist v{tb.vx - tb.rate * ry + c_t * u.ux - s_t * u.uy,
-                      tb.vy + tb.rate * rx + s_t * u.ux + c_t * u.uy, tb.rate + u.omega};
+  PlanarTwist v{tb.vx - tb.rate * ry + c_t * u.ux - s_t * u.uy,
+                tb.vy + tb.rate * rx + s_t * u.ux + c_t * u.uy, tb.rate + u.omega};
+  if (loads.pulled) v.ux += loads.gx, v.uy += loads.gy;  // gravity's impulse: the free twist
   // contacts: midpoint poses on the table, of the table, in the world
   const double xi = st.pose.x + 0.5 * h * u.ux, eta = st.pose.y + 0.5 * h * u.uy;
   const double phi = st.pose.angle + 0.5 * h * u.omega;
@@ -48,9 +60,9 @@ void rigid_body_step(const PlanarField& field, const FrictionLaw& law, const Rig
   for (std::size_t i = 0; i < n; ++i) {
     const ContactPoint& r = part.patch[i];
     const double level = planar_level(field, xi + cf * r.x - sf * r.y, eta + sf * r.x + cf * r.y);
-    // loads: the point's load fraction of the (constant) normal load
-    contacts[i] = {ca * r.x - sa * r.y, sa * r.x + ca * r.y, h * s * level * r.load,
-                   h * k * level * r.load};
+    // loads: the point's load fraction of the step's normal impulse
+    contacts[i] = {ca * r.x - sa * r.y, sa * r.x + ca * r.y, loads.load * s * level * r.load,
+                   loads.load * k * level * r.load};
   }
   // impulse: the table's twist at t_{k+1} about X_M, the free relative twist
   const double tvx = tb1.vx - tb1.rate * (ym - tb1.y), tvy = tb1.vy + tb1.rate * (xm - tb1.x);

@@ -43,7 +43,7 @@ void moreau_loop(const Velocity& velocity, const Bound& bound, const FrictionLaw
     const double m = bound(x + 0.5 * h * v);  // the level at the step's midpoint
     double x1;
     const double v1 = detail::moreau_slider_step<kSpeedDependent>(law, c, h, theta, m, x, v,
-                                                                  v - (yd1 - yd), x1);
+                                                                  v - (yd1 - yd), x1, h);
     if constexpr (kObserved) {
       const auto direction = static_cast<std::int8_t>(v1 > 0 ? 1 : v1 < 0 ? -1 : 0);
       observer->on_motion({t - h, t, x, v, x1, v1, direction, ArcEnd::time_step}, nullptr);

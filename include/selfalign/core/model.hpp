@@ -5,11 +5,13 @@
 /// in the plane (inertia, contact patch in the body frame) or the paper's 1-D part (one
 /// translational coordinate and its friction level); each with the friction law of its surface
 /// pair with the table; the table's planar motion (planar_table_motion.hpp) and friction field
-/// (planar_field.hpp); the time step. The number of bodies is a runtime value. What is not here
-/// yet: the normal motion, gravity and incline (the feeder issue), part-part contacts (the
-/// several-parts issue), and the parameter view (io/parameter_view.hpp and planar_config.hpp
+/// (planar_field.hpp), its normal motion with gravity and the incline (Gravity); the time step.
+/// The number of bodies is a runtime value. What is not here yet: part-part contacts (the
+/// several-parts issue), flight phases after a lift-off (the feeder issue: the step reports
+/// lift_off and stops), and the parameter view (io/parameter_view.hpp and planar_config.hpp
 /// view the configs).
 
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -46,14 +48,37 @@ struct SliderBody {
 /// One body on the table (a closed set: each kind's stages are one visitor's alternatives).
 using Body = std::variant<RigidBody, SliderBody>;
 
+/// Gravity on a table whose plane is inclined, and which may move along its normal (the loads
+/// stage of core/step.hpp). Without it (Model::gravity empty: the paper's model) each body
+/// presses on the table with its weight, the unit of the friction levels, and nothing pulls it
+/// along the plane. With it, over a step from t_k to t_{k+1} each body receives, per unit mass,
+///   the normal impulse   h g cos(incline) + (z'(t_{k+1}) - z'(t_k))   (the table pushes it
+///                        up with the table's normal velocity change; z from motion.normal),
+///   gravity's impulse    h g sin(incline) along `downhill`, in the table's plane,
+/// and its friction impulses are bounded by s m (resp. k m) times the normal impulse over g:
+/// the paper's h s m at incline 0 without normal motion. A step whose normal impulse is
+/// negative lifts the bodies off (the table falls away faster than gravity): the step sets
+/// status lift_off and the run stops there (flight phases are the feeder issue's).
+struct Gravity {
+  /// g in the model's acceleration unit [-] (> 0): in the paper's dimensionless units, where
+  /// accelerations are in units of mu_1 g, g = 1 / mu_1.
+  double g = 1;
+  double incline = 0;                      ///< the plane's angle to the horizontal, [0, pi/2) [rad]
+  double downhill_x = 1, downhill_y = 0;   ///< the plane's steepest descent, unit, world axes
+};
+
 struct Model {
   PlanarTableMotion motion;                 ///< borrowed profiles: they must outlive the model
   PlanarField field = UniformPlanarField{};
   std::vector<Body> bodies;                 ///< N >= 1, a runtime value
   TimeSteppingOptions options;              ///< Moreau's step h [-] and theta
+  /// Gravity, incline and the normal load (empty: the paper's model, a constant normal load;
+  /// a motion with a normal profile needs it).
+  std::optional<Gravity> gravity{};
 };
 
-/// Throws InvalidParameter naming the first invalid part ("bodies" when there are none;
+/// Throws InvalidParameter naming the first invalid part ("gravity.g", "gravity.incline",
+/// "gravity.downhill" (not a unit vector), "motion.normal" without gravity; "bodies" when there are none;
 /// "bodies[i].inertia", "bodies[i].law" for body i; for a slider "bodies[i].footprint" (a width
 /// outside [1e-50, 1e50], or a uniform footprint on a field other than uniform or axis) and
 /// "bodies[i].motion" (a table that turns)).

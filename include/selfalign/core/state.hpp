@@ -15,9 +15,12 @@
 
 namespace selfalign::core {
 
-/// How the last step ended: ok, or the table's motion or a body's state left the finite numbers
-/// (the run stops there; `failed_body` is the body, -1 for the table's motion).
-enum class StepStatus { ok, non_finite };
+/// How the last step ended: ok; the table's motion or a body's state left the finite numbers
+/// (non_finite: the run stops there; `failed_body` is the body, -1 for the table's motion); or
+/// the table's normal motion lifts the bodies off in the next step (lift_off: its normal
+/// impulse is negative, Model::gravity; the run stops before that step, whose flight the core
+/// does not integrate yet).
+enum class StepStatus { ok, non_finite, lift_off };
 
 struct BodyState {
   PlanarPose pose;                    ///< on the table [-], [rad] (a 1-D part: x only)

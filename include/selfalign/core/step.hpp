@@ -3,8 +3,12 @@
 /// The contact core's one staged step (issue 21, first slice), Moreau's scheme of
 /// planar_rigid.hpp for N bodies on one table:
 ///   kinematics   the table's pose and twist at t_{k+1}, once for every body
+///   loads        the step's normal impulse per unit weight: h (the paper's constant load) or,
+///                with Model::gravity, h cos(incline) + (z'(t_{k+1}) - z'(t_k)) / g, and
+///                gravity's impulse h g sin(incline) downhill; a negative normal impulse lifts
+///                the bodies off (status lift_off, the run stops before the step)
 ///   per body     contacts (patch points at the midpoint pose, the field read on the table)
-///                -> normal loads (each point's load fraction; constant for now)
+///                -> normal loads (each point's load fraction of the step's normal impulse)
 ///                -> friction impulse (PatchImpulseSolver: exact stick; the mass matrix is
 ///                   block diagonal over bodies while bodies do not touch, so each block is
 ///                   solved on its own)

@@ -1,7 +1,8 @@
 #pragma once
 /// \file planar_table_motion.hpp
-/// The table's motion in its plane: translation along two directions and an in-plane rotation,
-/// each any table profile (profiles/), with its pose, twist and common period. Every planar
+/// The table's motion: translation along two directions in its plane and along its normal, and
+/// an in-plane rotation, each any table profile (profiles/), with its pose, twist and common
+/// period. Every planar
 /// solver (the point steppers, the exact point solver, the rigid part) and analysis takes it;
 /// it does not belong to any one of them. Also the planar solvers' common friction-law check.
 
@@ -15,17 +16,22 @@ namespace selfalign {
 /// psi(t) = rotation(t) [rad] about the table's origin (which moves with T). A null profile
 /// does not move the table along its direction. The point-contact solvers (planar_point.hpp
 /// and planar_exact_point.hpp) refuse a rotating table; the rigid part (planar_rigid.hpp) takes it.
+/// `normal` moves the table along its normal by z(t): it changes the bodies' normal load, so
+/// only the contact core's model with gravity (core::Model::gravity, its loads stage) takes it;
+/// every other solver refuses it (require_no_normal_motion).
 struct PlanarTableMotion {
   const TableProfile* first = nullptr;
   double e1_x = 1, e1_y = 0;
   const TableProfile* second = nullptr;
   double e2_x = 0, e2_y = 1;
   const TableProfile* rotation = nullptr;
+  const TableProfile* normal = nullptr;  ///< z(t) along the table's normal [-] (null: none)
 };
 
-/// The table's pose and twist at one time: T, T', psi, psi'.
+/// The table's pose and twist at one time: T, T', psi, psi', and z, z' along its normal.
 struct PlanarTablePose {
   double x = 0, y = 0, vx = 0, vy = 0, angle = 0, rate = 0;
+  double z = 0, vz = 0;
 };
 PlanarTablePose table_pose(const PlanarTableMotion& motion, double t);
 
@@ -35,6 +41,10 @@ double planar_period(const PlanarTableMotion& motion);
 
 /// Throws InvalidParameter unless each direction given is a unit vector (to 1e-12).
 void validate(const PlanarTableMotion& motion);
+
+/// Throws InvalidParameter naming "normal" when the motion moves the table along its normal:
+/// `solver` has no normal-load stage (only the contact core with gravity has).
+void require_no_normal_motion(const PlanarTableMotion& motion, const char* solver);
 
 /// Throws InvalidParameter naming "law" unless isotropic (kinetic_forward = kinetic_backward)
 /// and velocity-independent: the planar solvers' friction law.
