@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_sandbox.hpp"
+#include "sanitized.hpp"
 
 #ifdef SELFALIGN_CLI_PATH
 namespace selfalign {
@@ -249,9 +250,13 @@ TEST(CliPlanar, ParametersListsTheModelsNumbersAsTheFileGivesThem) {
 // holding at its end, not holding 1 mm before it (it stops within a millimetre of the spot).
 TEST(CliPlanar, TheAxisFieldExampleStopsWhereThePatchIsFirstHeld) {
   CliSandbox box;
-  const auto r = box.run({"planar", "stop", "--config",
-                          std::string(SELFALIGN_SOURCE_DIR) + "/examples/planar_axis.toml",
-                          "--csv", "runs.csv"});
+  std::vector<std::string> args{"planar", "stop", "--config",
+                                std::string(SELFALIGN_SOURCE_DIR) + "/examples/planar_axis.toml",
+                                "--csv", "runs.csv"};
+  // The sanitizer build (a Debug build, ~100x slower here) takes 100 steps a period instead of
+  // 500: where the patch is first held moves by 0.01 mm, far inside the 1 mm checked below.
+  if (testing_support::kSanitized) args.insert(args.end(), {"--set", "run.step=2e-4"});
+  const auto r = box.run(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto rows = lines(read_text(box.work_file("runs.csv")));
   ASSERT_EQ(rows.size(), 4u);  // header and the three entries
