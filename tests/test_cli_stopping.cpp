@@ -376,10 +376,10 @@ TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
   EXPECT_NEAR(af["x_d"].get<double>() - 0.3,
               at["x_d"].get<double>() - at["x_mu"].get<double>(), 1e-9);
   EXPECT_EQ(af["accumulates"], at["accumulates"]);
-  // accumulation is written for the two-region table (eq. 59): this field is that table (one
+  // accumulation's closed form is the two-region table's (eq. 59): this field is that table (one
   // step from 1 to c_mu = 3 under the footprint w = 0.05), so its report is the two-region
-  // flags' (second method) but for the field's own description; a field of two steps is
-  // refused by name, not replaced; a field key beside another friction map is refused too.
+  // flags' (second method) but for the field's own description; a field of two steps takes the
+  // exact solver's map (below); a field key beside another friction map is refused.
   const CliResult acc_f = box.run({"accumulation", "--field-file", field, "--json"});
   const CliResult acc_t = box.run({"accumulation", "--x-mu", "0.3", "--c-mu", "3", "--json"});
   ASSERT_EQ(acc_f.exit_code, 0) << acc_f.err;
@@ -388,9 +388,35 @@ TEST(CliStop, TakesAFieldAndEndsWhereTheEquivalentTwoRegionTableDoes) {
   EXPECT_EQ(from_field["friction"]["kind"], "field");
   from_field.erase("friction");
   EXPECT_EQ(from_field, from_flags);
-  const std::string stairs = box.file("stairs.csv");
-  std::ofstream(stairs) << "0,1\n0.3,3\n0.4,4\n";
-  expect_clean_failure(box, box.run({"accumulation", "--field-file", stairs}), {"friction"});
+  EXPECT_EQ(from_flags["map"], "eq. 59");
+  // A level of two ramps with a kink (no closed form): the exact solver's stick-position map.
+  // Second method: the stopping run on the same field accumulates at the same x_stick,min, and
+  // the map's iterates rise to it with shrinking steps.
+  const std::string kink = box.file("kink.csv");
+  std::ofstream(kink) << "position,level\n0.1,1\n0.125,1.9\n0.15,2.5\n";
+  const CliResult acc_k = box.run({"accumulation", "--field-file", kink, "--json"});
+  ASSERT_EQ(acc_k.exit_code, 0) << acc_k.err;
+  const CliResult stop_k = box.run({"stop", "--field-file", kink, "--json"});
+  ASSERT_EQ(stop_k.exit_code, 0) << stop_k.err;
+  const json k = json::parse(acc_k.out), sk = json::parse(stop_k.out);
+  EXPECT_EQ(k["map"], "exact solver");
+  EXPECT_EQ(sk["stop"], "accumulation");
+  EXPECT_EQ(k["fixed_point"], sk["x_stick_min"]);
+  EXPECT_EQ(k["x_stick_min"], sk["x_stick_min"]);
+  EXPECT_NEAR(k["fixed_point"].get<double>(), sk["end_position"].get<double>(), 1e-12);
+  EXPECT_TRUE(k["accumulates_for_every_entry"].is_null());
+  EXPECT_TRUE(k["slope_at_fixed_point"].is_null());
+  EXPECT_FALSE(k["accumulation_condition_reason"].get<std::string>().empty());
+  const json& positions = k["iterates"]["positions"];
+  ASSERT_GT(positions.size(), 10u);
+  for (std::size_t i = 2; i < positions.size(); ++i) {
+    EXPECT_GT(positions[i].get<double>(), positions[i - 1].get<double>()) << i;
+    EXPECT_LE(positions[i].get<double>() - positions[i - 1].get<double>(),
+              positions[i - 1].get<double>() - positions[i - 2].get<double>()) << i;
+  }
+  EXPECT_LT(positions.back().get<double>(), k["fixed_point"].get<double>());
+  EXPECT_GT(k["contraction_at_fixed_point"].get<double>(), 0.0);
+  EXPECT_LT(k["contraction_at_fixed_point"].get<double>(), 1.0);
   expect_clean_failure(
       box, box.run({"simulate", "--friction", "two-region", "--field-file", field, "--periods", "1"}),
       {"field_file"});

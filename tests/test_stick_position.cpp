@@ -169,3 +169,58 @@ TEST(StickPosition, DiagonalStickPositionsContractByCosThetaCoshTheta) {
   constexpr double kNearSlope = 1e-3;
   EXPECT_NEAR((c1 - exact[n - 1]) / (c1 - exact[n - 2]), lambda, kNearSlope);
 }
+
+// The stick-position map of any level, by the exact solver (PeriodStickPositionMap), is the
+// closed form where one exists: eq. (59) and the slide back after it on the paper's table
+// (StickPositionMap::next_stick_position), at every point of a grid over the transition region,
+// NaN where the closed form has none (both ways). Event-located arcs against composed closed
+// forms: kSameArcs as above.
+TEST(StickPosition, ThePeriodMapsStickPositionsAreEquationFiftyNineOnThePapersTable) {
+  constexpr double kSameArcs = 1e-12;
+  const FieldFriction friction = two_region_friction(0.5, 0.05, 2.5);
+  for (const ThreePhaseParameters& p :
+       {ThreePhaseParameters{1.0, 0.084, 2.45, 2.45}, ThreePhaseParameters{1.05, 0.084, 2.2, 0.9}}) {
+    const ThreePhaseProfile profile(p);
+    const StickPositionMap closed(profile, *friction.two_region());
+    const PeriodStickPositionMap numeric(profile, friction);
+    EXPECT_EQ(numeric.look_phase(), profile.piecewise_polynomial()->segments()[1].begin);
+    int compared = 0;
+    for (int i = 0; i <= 40; ++i) {
+      const double x = 0.5 + 0.05 * i / 40.0;
+      const double a = closed.next_stick_position(x), b = numeric(x);
+      SCOPED_TRACE(::testing::Message() << "a2 " << p.a2 << " a3 " << p.a3 << " x " << x);
+      if (std::isnan(a)) continue;  // the closed form leaves its arcs: nothing to compare
+      EXPECT_NEAR(b, a, kSameArcs);
+      ++compared;
+    }
+    EXPECT_GE(compared, 30);
+  }
+}
+
+// On a level with no closed form (two ramps with a kink, 1 -> 1.9 -> 2.5 over 0.1 .. 0.125 ..
+// 0.15), the map's iterates from the rise accumulate at the lowest of its fixed points, the
+// general eq. (41) (stick_position_min of the pieces: s m(x) = max |y''| = 2.3 on the second
+// ramp, by hand 0.125 + 0.025 (2.3 - 1.9) / 0.6), rising with shrinking steps, and every point
+// at or above it is a fixed point (held for good, eq. 40).
+TEST(StickPosition, OnAnyLevelTheMapAccumulatesAtTheGeneralEquationFortyOne) {
+  const ThreePhaseProfile profile({1.0, 0.084, 2.3, 1.3});
+  const FieldFriction friction(FrictionField::ramps({0.1, 0.125, 0.15}, {1.0, 1.9, 2.5}),
+                               PointFootprint{});
+  const double x_min = stick_position_min(*friction.piecewise_affine(), FrictionLaw{}, 2.3);
+  EXPECT_NEAR(x_min, 0.125 + 0.025 * 0.4 / 0.6, 1e-15);
+  const PeriodStickPositionMap map(profile, friction);
+  double x = 0.1, step = HUGE_VAL;
+  for (int k = 0; k < 40; ++k) {
+    const double next = map(x);
+    ASSERT_FALSE(std::isnan(next)) << k;
+    EXPECT_LE(next, x_min + 1e-15) << k;
+    EXPECT_GE(next, x) << k;
+    EXPECT_LE(next - x, step) << k;
+    step = next - x;
+    x = next;
+  }
+  EXPECT_NEAR(x, x_min, 1e-9);
+  for (const double held : {x_min, x_min + 1e-3, 0.16}) EXPECT_EQ(map(held), held);
+  EXPECT_THROW(PeriodStickPositionMap(profile, friction, FrictionLaw{}.with_viscous(0.1)),
+               InvalidParameter);
+}

@@ -44,6 +44,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     OBJECTIVE_SCALE,
     ObjectState,
     PeriodMap,
+    PeriodStickPositionMap,
     PiecewisePolynomialProfile,
     PointFootprint,
     PositioningAccuracy,

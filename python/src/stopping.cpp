@@ -33,6 +33,29 @@ two_region_friction gives its own as .two_region): x_stick,min = x_mu + w (max|y
 which eq. (40) holds; x_mu when the peak acceleration is <= 1, +inf when it exceeds c_mu (the
 object never stops for good).)doc");
 
+  py::class_<PeriodStickPositionMap>(m, "PeriodStickPositionMap", R"doc(
+The stick-position map of any piecewise-affine level under a Coulomb law, by the exact solver:
+where an object at rest at x_n at the look phase (three-phase: t1, the start of its -a2
+segment; other profiles: 0) is at rest one period later; NaN where it is moving then. On the
+paper's table under the paper's law it is StickPositionMap.next_stick_position (eq. 59 and the
+slide back); on other levels (a field, several steps) it is the map itself: its fixed points
+are where s m(x) >= max|y''| (eq. 40), the lowest the general eq. (41), where stops below
+accumulate. Calling it works elementwise on floats and ndarrays.)doc")
+      .def(py::init<const TableProfile&, const FrictionMap&, const FrictionLaw&>(),
+           py::arg("profile"), py::arg("friction"), py::arg("law") = FrictionLaw{},
+           py::keep_alive<1, 2>(), py::keep_alive<1, 3>(),
+           "profile: piecewise constant or linear in acceleration; friction: a piecewise-affine "
+           "level; law: velocity-independent (the exact solver).")
+      .def(
+          "__call__",
+          [](const PeriodStickPositionMap& map, const py::object& x_n) {
+            return map_elementwise<double>(x_n, [&](double v) { return map(v); });
+          },
+          py::arg("x_n"), "x_{n+1} [-]: at rest one period after rest at x_n at the look; NaN "
+                          "where moving then (float or ndarray)")
+      .def_property_readonly("look_phase", &PeriodStickPositionMap::look_phase,
+                             "the phase of the looks [-]");
+
   py::class_<StickPositionMap>(m, "StickPositionMap", R"doc(
 The stick-position map of eq. (59) for a three-phase profile on a two-region table:
   x_{n+1} = c2 + sqrt((K + d cos θ)^2 + (d sin θ)^2),   d = x_n - c1,

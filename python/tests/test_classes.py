@@ -135,7 +135,9 @@ def test_every_class_under_every_protocol_round_trips_or_refuses():
         import selfalign as sa
         P = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
         others = {"PeriodMap": sa.PeriodMap(P),
-                  "StickPositionMap": sa.StickPositionMap(P, sa.TwoRegionTable(0.5, 0.05, 2.5))}
+                  "StickPositionMap": sa.StickPositionMap(P, sa.TwoRegionTable(0.5, 0.05, 2.5)),
+                  "PeriodStickPositionMap": sa.PeriodStickPositionMap(
+                      P, sa.two_region_friction(0.5, 0.05, 2.5))}
         for cls in bound_classes():
             values = ([m for m in cls.__members__.values()] if hasattr(cls, "__members__")
                       else [others[cls.__name__]] if cls.__name__ in others else [])
@@ -152,7 +154,7 @@ def test_every_class_under_every_protocol_round_trips_or_refuses():
     assert len(lines) >= 2 * (pickle.HIGHEST_PROTOCOL + 1)
     for line in lines:
         name = line.split()[0]
-        if name in ("PeriodMap", "StickPositionMap"):
+        if name in ("PeriodMap", "StickPositionMap", "PeriodStickPositionMap"):
             assert f"TypeError cannot pickle '{name}' object" in line, line
         else:
             assert line.endswith("round trip"), line
@@ -163,7 +165,7 @@ def test_classes_without_an_example_are_not_value_types():
     enums = {c.__name__ for c in bound_classes() if hasattr(c, "__members__")}
     rest = {c.__name__ for c in bound_classes()} - set(EXAMPLES) - enums
     assert rest == {"TableProfile", "FrictionMap", "ProfileFamily", "PeriodMap",
-                    "StickPositionMap"}
+                    "StickPositionMap", "PeriodStickPositionMap"}
     for name in ("TableProfile", "FrictionMap", "ProfileFamily"):  # abstract: no instance (their
         with pytest.raises(TypeError):                              # __new__ objects: above)
             getattr(_selfalign, name)()

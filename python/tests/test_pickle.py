@@ -196,6 +196,7 @@ NOT_VALUE_TYPES = {
     "ProfileFamily": "abstract base of the families",
     "PeriodMap": "a computation holding (keeping alive) its profile and friction, not a value",
     "StickPositionMap": "a computation over a profile and a friction map (eq. 59), not a value",
+    "PeriodStickPositionMap": "a computation holding (keeping alive) its profile and friction",
 }
 
 # Value types still without value semantics (none).

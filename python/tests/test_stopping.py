@@ -198,3 +198,30 @@ def test_one_stopping_criterion_for_the_time_stepped_run_and_the_planar_stop():
     assert run.process_time == one.process_time
     with pytest.raises(sa.InvalidParameter, match="steps_per_period"):
         sa.stopping_run(wave, friction, sa.ObjectState(), sa.StoppingOptions(steps_per_period=0))
+
+
+def test_the_period_maps_stick_positions_on_any_level():
+    # Issue 21: accumulation on any level. On the paper's table the exact solver's map is eq.
+    # (59) with the slide back (the closed form, a second method); on two ramps with a kink it
+    # accumulates at the general eq. (41), where the stopping run ends (accumulation).
+    profile = sa.ThreePhaseProfile(1.0, 0.084, 2.45, 2.45)
+    paper = sa.two_region_friction(0.5, 0.05, 2.5)
+    closed = sa.StickPositionMap(profile, paper.two_region)
+    numeric = sa.PeriodStickPositionMap(profile, paper)
+    x = np.linspace(0.5, 0.55, 21)
+    a, b = closed.next_stick_position(x), numeric(x)
+    ok = ~np.isnan(a)
+    assert ok.sum() >= 15
+    np.testing.assert_allclose(b[ok], a[ok], rtol=0, atol=1e-12)
+    kink = sa.FieldFriction(sa.FrictionField.ramps([0.1, 0.125, 0.15], [1.0, 1.9, 2.5]),
+                            sa.PointFootprint())
+    three = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    m = sa.PeriodStickPositionMap(three, kink)
+    xs = [0.1]
+    for _ in range(40):
+        xs.append(m(xs[-1]))
+    run = sa.stopping_run(three, kink, sa.ObjectState())
+    assert run.kind == sa.StopKind.accumulation
+    assert xs[-1] == pytest.approx(run.x_stick_min, abs=1e-9)
+    assert np.all(np.diff(xs) >= 0)
+    assert m(run.x_stick_min) == run.x_stick_min  # held for good there (eq. 40)

@@ -1,4 +1,6 @@
 #include "selfalign/analysis/stick_position.hpp"
+
+#include "selfalign/analysis/period_map.hpp"
 #include "selfalign/special_values.hpp"
 
 #include <algorithm>
@@ -7,6 +9,7 @@
 #include <numbers>
 
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
@@ -208,6 +211,39 @@ std::optional<bool> StickPositionMap::accumulates_for_every_entry() const {
   const EveryEntryAccumulation e = every_entry_accumulation();
   if (!e.applies) return std::nullopt;
   return e.accumulates;
+}
+
+PeriodStickPositionMap::PeriodStickPositionMap(const TableProfile& profile,
+                                               const FrictionMap& friction,
+                                               const FrictionLaw& law) {
+  const PiecewisePolynomialProfile& pwc = require_exact_profile(profile, "the stick-position map");
+  if (!friction.piecewise_affine())
+    throw InvalidParameter("friction", "not piecewise affine",
+                           "the stick-position map needs a piecewise-affine level (exact solver)");
+  if (law.velocity_dependent())
+    throw InvalidParameter("law", law.describe(),
+                           "the stick-position map needs a Coulomb law (the exact solver)");
+  // The stopping run's look: the start of the -y2'' segment of a three-phase profile, as the
+  // solver forms the switch (the segments' own begin and period).
+  if (profile.three_phase())
+    for (const AccelerationSegment& seg : pwc.segments())
+      if (seg.accel < 0) {
+        phase_ = seg.begin;
+        break;
+      }
+  period_ = pwc.period();
+  PeriodMapOptions o;
+  o.method = Method::exact;
+  map_ = std::make_unique<PeriodMap>(profile, friction, law, o);
+}
+
+PeriodStickPositionMap::~PeriodStickPositionMap() = default;
+
+double PeriodStickPositionMap::operator()(double x_n) const {
+  require_moderate("x_n", x_n);
+  PeriodMap::Run run = map_->start({phase_, x_n, 0});
+  const ObjectState& end = run.advance_to(phase_ + period_);
+  return end.xd == 0 ? end.x : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace selfalign

@@ -10,9 +10,12 @@
 ///  - the stick-position map: where the object is at rest at the next t1. It is eq. (59) where
 ///    friction holds the object at that stop (m >= y3''), and otherwise adds the slide back
 ///    that follows (on the diagonal y3'' = y2'' at every stop below x_stick,min);
-///  - the proof of accumulation and the domain of Sect. 7.3's condition for every entry.
+///  - the proof of accumulation and the domain of Sect. 7.3's condition for every entry;
+///  - the same stick-position map on any piecewise-affine level, by the exact solver
+///    (PeriodStickPositionMap): where no closed form exists (a field, several steps, ramps).
 /// Derivations: docs/accumulation.md.
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -22,6 +25,8 @@
 #include "selfalign/profiles/three_phase.hpp"
 
 namespace selfalign {
+
+class PeriodMap;
 
 /// eq. (40): true iff an object at rest at x is held by friction whatever the table does.
 bool sticks_permanently(const FrictionMap& friction, double peak_acceleration, double x);
@@ -102,6 +107,38 @@ class StickPositionMap {
   ThreePhaseParameters p_;
   double x_mu_, w_, c_mu_, b1_, omega_, T1_, T2_, T3_, c1_, c2_, K_, x_stick_min_;
   bool shape_ok_;  // the assumptions that do not depend on x_n
+};
+
+/// The stick-position map of any piecewise-affine level under any Coulomb law, by the exact
+/// solver (issue 21: accumulation on any field): where an object at rest at x_n at the look
+/// phase of the profile is one period later, when it is at rest there; NaN when it is moving
+/// then (its motion is not a sequence of stops at that phase). The look is the stopping run's
+/// (stopping.hpp): phase t1 for the three-phase profile (the start of its -y2'' segment, where
+/// the object has rested through [t0, t1]), phase 0 for other profiles. On the paper's table
+/// under the paper's law it is StickPositionMap::next_stick_position (eq. 59 and the slide back
+/// that follows; tests/test_stick_position.cpp compares them), where the closed form exists;
+/// elsewhere it is the map itself, its fixed points x with s m(x) >= max |y''| (held for good,
+/// eq. 40), the lowest of them stick_position_min (eq. 41's general form), where stops below
+/// accumulate.
+class PeriodStickPositionMap {
+ public:
+  /// Borrows profile and friction (they must outlive the map). The profile must be piecewise
+  /// polynomial and the level piecewise affine, the law velocity-independent (the exact
+  /// solver; InvalidParameter naming "profile", "friction" or "law" otherwise).
+  PeriodStickPositionMap(const TableProfile& profile, const FrictionMap& friction,
+                         const FrictionLaw& law = {});
+  ~PeriodStickPositionMap();
+  PeriodStickPositionMap(const PeriodStickPositionMap&) = delete;
+  PeriodStickPositionMap& operator=(const PeriodStickPositionMap&) = delete;
+
+  /// x_{n+1}: the position at rest one period after rest at x_n at the look [-]; NaN when the
+  /// object is moving then (x_n must be finite and moderate, InvalidParameter otherwise).
+  double operator()(double x_n) const;
+  double look_phase() const noexcept { return phase_; }  ///< the look's phase [-]
+
+ private:
+  std::unique_ptr<PeriodMap> map_;
+  double phase_ = 0, period_ = 0;
 };
 
 }  // namespace selfalign
