@@ -212,6 +212,14 @@ CATALOGUE = [
      {"profile": PROFILES, "friction": TWO_REGION, "t0": FL("0.0"), "x0": FL("0.0", "0.45"),
       "v0": FL("0.0"), "max_periods": IN("200", "20"),
       "fractions": AR("[0.99, 0.999]", "[0.5]")}, "stopping"),
+    ("result = sa.stopping_run({profile}, {friction}, sa.ObjectState(), "
+     "sa.StoppingOptions(max_periods={max_periods}, method={method}, steps_per_period={spp}))",
+     {"profile": PROFILES, "friction": TWO_REGION, "max_periods": IN("50", "5"),
+      "method": (["None", "'time-stepping'", "'exact'"], ["'x'", "5", "sa.Method(-1)"], []),
+      "spp": IN("200", "50", big=["10**9"])}, "stopping"),
+    ("m = sa.PeriodStickPositionMap({profile}, {friction}); result = m({x})",
+     {"profile": PROFILES, "friction": FRICTIONS,
+      "x": (["0.52", "np.linspace(0.5, 0.55, 4)"], BAD_FLOAT + BAD_ARRAY, [])}, "none"),
     ("result = sa.positioning_accuracy({profile}, {width}, {c_mu}, sa.PositioningOptions(entries={entries}, "
      "stopping=sa.StoppingOptions(max_periods={max_periods}), stop_at_first_failure={first}))",
      {"profile": PROFILES, "width": FL("0.05"), "c_mu": FL("2.5"), "entries": IN("3", "1", big=["10**9"]),

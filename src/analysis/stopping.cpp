@@ -148,6 +148,10 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   // a part at rest at x exactly when h s m(x) bounds it: eq. 40 of the scheme, as the planar
   // stop's never-stops proof), on the run's own grid t0 + k h.
   const bool stepped = period_map.method() == Method::time_stepping;
+  if (stepped && static_cast<double>(o.steps_per_period) * o.max_periods > kMaxTimeSteps)
+    throw InvalidParameter("steps_per_period", o.steps_per_period,
+                           "times max_periods (" + std::to_string(o.max_periods) +
+                               ") must be at most 1e9 time steps");
   const double peak =
       stepped ? largest_step_velocity_change(PlanarTableMotion{&profile}, start.t,
                                              period_map.step(), o.steps_per_period) /

@@ -102,7 +102,8 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
 /// paper's and applies to the two-region table with a three-phase profile under the paper's
 /// law only (elsewhere an accumulating run ends not_stopped, or, time-stepped, stops where its
 /// discrete scheme sticks for a whole period). Throws InvalidParameter for a level that is not
-/// piecewise affine, or steps_per_period < 1. A velocity-dependent law (Stribeck, viscous) runs on the
+/// piecewise affine, steps_per_period < 1, or a time-stepped run of more than 1e9 steps
+/// (steps_per_period x max_periods; kMaxTimeSteps). A velocity-dependent law (Stribeck, viscous) runs on the
 /// slip integrator, which locates the entry and the targets' crossings as events.
 StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& friction,
                          const FrictionLaw& law, const ObjectState& start,
