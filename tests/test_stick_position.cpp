@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/error.hpp"
 #include "selfalign/simulate/exact.hpp"
 
 using namespace selfalign;

@@ -14,6 +14,18 @@
 
 namespace selfalign {
 
+/// How a key's value converts between SI and dimensionless units (Sect. 3.2).
+enum class Dimension {
+  none,         ///< same value in both systems ([-], or always SI like g [m/s^2])
+  length,       ///< [m] = L [-]
+  time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
+  velocity,     ///< [m/s] = L/T [-]
+  acceleration, ///< [m/s^2] = mu g [-]
+  jerk,         ///< [m/s^3] = mu g / T [-]
+  rate          ///< [1/s] = 1/T [-] (a viscous coefficient per unit mass)
+};
+
+
 /// Characteristic scales of the dimensionless model (Sect. 3.2).
 class Scales {
  public:

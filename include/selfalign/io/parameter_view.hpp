@@ -37,21 +37,9 @@
 #include <vector>
 
 #include "selfalign/io/simulate_config.hpp"
+#include "selfalign/model_parameter.hpp"
 
 namespace selfalign {
-
-/// One named parameter of a model.
-struct ModelParameter {
-  std::string name;     ///< "mu_static", "accelerations[2]", "amplitude_scale"
-  double value;         ///< in the run's unit system; NaN when absent (no Stribeck decay)
-  Dimension dimension;  ///< how it converts between SI and dimensionless units
-  std::string unit;     ///< "[-]", or the SI unit in an SI run ("[m]", "[m/s^2]")
-  std::string group;    ///< "law", "scales", "friction", "profile", "initial"
-  std::string meaning;  ///< one line
-};
-
-/// Parameter values by name, applied in order.
-using ParameterValues = std::vector<std::pair<std::string, double>>;
 
 /// The parameters of the model `config` describes (defaults resolved: resolve_simulate_config),
 /// in the order of the key table (law, scales, friction, profile, initial), the two factors

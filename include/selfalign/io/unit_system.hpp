@@ -22,16 +22,6 @@ enum class UnitSystem {
 UnitSystem parse_unit_system(const std::string& text);
 std::string to_string(UnitSystem units);
 
-/// How a key's value converts between SI and dimensionless units (Sect. 3.2).
-enum class Dimension {
-  none,         ///< same value in both systems ([-], or always SI like g [m/s^2])
-  length,       ///< [m] = L [-]
-  time,         ///< [s] = T [-],  T = sqrt(L/(mu g))
-  velocity,     ///< [m/s] = L/T [-]
-  acceleration, ///< [m/s^2] = mu g [-]
-  jerk,         ///< [m/s^3] = mu g / T [-]
-  rate          ///< [1/s] = 1/T [-] (a viscous coefficient per unit mass)
-};
 
 /// One value of dimension `d` converted from dimensionless to SI, and from SI to dimensionless
 /// (Sect. 3.2); values of Dimension::none are returned unchanged.
