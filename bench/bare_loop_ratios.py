@@ -7,9 +7,10 @@
         --benchmark_out=sim.json --benchmark_out_format=json
     bench/bare_loop_ratios.py sim.json
 
-Each library benchmark is paired with its bare, single-purpose loop of the same computation in
-the same binary; the ratio is taken repetition by repetition (CPU time), and the median with
-min-max is printed. Standard library only.
+Each library benchmark is paired with its bare loop, a transliteration of the library's own loop
+in the same binary ("dispatch overhead"), and with its floor, a minimal loop written from the
+equations (bench/floors.cpp: "distance to the floor", issue 22); the ratio is taken repetition by
+repetition (CPU time), and the median with min-max is printed. Standard library only.
 """
 import json
 import statistics
@@ -24,6 +25,13 @@ PAIRS = [
     ("time_stepping_per_step/case3_uniform", "bare_time_stepping_per_step/case3_uniform_inlined"),
     ("planar_point_per_step", "bare_planar_point_per_step"),
 ]
+FLOORS = [
+    ("exact_per_period/case1_uniform", "floor_exact_per_period/case1_uniform"),
+    ("exact_per_period/case3_uniform", "floor_exact_per_period/case3_uniform"),
+    ("time_stepping_per_step/case1_uniform", "floor_time_stepping_per_step/case1_uniform"),
+    ("time_stepping_per_step/case3_uniform", "floor_time_stepping_per_step/case3_uniform"),
+    ("planar_point_per_step", "floor_planar_point_per_step"),
+]
 
 
 def main(path: str, key: str = "cpu_time") -> None:
@@ -33,12 +41,13 @@ def main(path: str, key: str = "cpu_time") -> None:
             runs.setdefault(b["run_name"], []).append(b)
     for k in runs:
         runs[k].sort(key=lambda b: b["repetition_index"])
-    for lib, bare in PAIRS:
-        if lib not in runs or bare not in runs:
-            continue
-        ratios = [a[key] / b[key] for a, b in zip(runs[lib], runs[bare])]
-        print(f"{lib:40s} / bare: median {statistics.median(ratios):.3f} "
-              f"[{min(ratios):.3f}, {max(ratios):.3f}] over {len(ratios)} repetitions")
+    for label, pairs in (("bare", PAIRS), ("floor", FLOORS)):
+        for lib, other in pairs:
+            if lib not in runs or other not in runs:
+                continue
+            ratios = [a[key] / b[key] for a, b in zip(runs[lib], runs[other])]
+            print(f"{lib:40s} / {label}: median {statistics.median(ratios):.3f} "
+                  f"[{min(ratios):.3f}, {max(ratios):.3f}] over {len(ratios)} repetitions")
 
 
 if __name__ == "__main__":
