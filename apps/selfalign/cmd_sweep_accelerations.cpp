@@ -19,20 +19,33 @@ struct AccelerationFlags {
   std::string a2_range, a3_range;
 };
 
-// Header "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status"; a2, a3 as on the grid (run
-// units), row-major with a2 outer, as the library orders the cells.
-std::string cells_csv(const std::vector<AccelerationCell>& cells, const std::vector<double>& a2,
+// Columns "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status"; a2, a3 as on the grid
+// (run units), row-major with a2 outer, as the library orders the cells.
+CellTable cells_table(const std::vector<AccelerationCell>& cells, const std::vector<double>& a2,
                       const std::vector<double>& a3, const OutputUnits& u) {
-  std::string csv = "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status\n";
-  for (std::size_t k = 0; k < cells.size(); ++k) {
+  const std::size_t n = cells.size();
+  std::vector<double> ga2(n), ga3(n), v_bar(n), f(n), x0(n);
+  std::vector<std::int64_t> prior(n), observed(n), converged(n);
+  std::vector<std::string> status(n);
+  for (std::size_t k = 0; k < n; ++k) {
     const AccelerationCell& c = cells[k];
-    csv += csv_number(a2[k / a3.size()]) + ',' + csv_number(a3[k % a3.size()]) + ',' +
-           std::to_string(static_cast<int>(c.predicted)) + ',' +
-           std::to_string(static_cast<int>(c.observed)) + ',' + csv_number(u.velocity(c.v_bar)) +
-           ',' + csv_number(c.f) + ',' + csv_number(u.velocity(c.x_dot_0s)) + ',' +
-           (c.converged ? "1" : "0") + ',' + cell_status(c.failure) + '\n';
+    ga2[k] = a2[k / a3.size()], ga3[k] = a3[k % a3.size()];
+    prior[k] = static_cast<int>(c.predicted), observed[k] = static_cast<int>(c.observed);
+    v_bar[k] = u.velocity(c.v_bar), f[k] = c.f, x0[k] = u.velocity(c.x_dot_0s);
+    converged[k] = c.converged ? 1 : 0;
+    status[k] = cell_status(c.failure);
   }
-  return csv;
+  CellTable t;
+  t.numbers("a2", std::move(ga2));
+  t.numbers("a3", std::move(ga3));
+  t.integers("case_a_priori", std::move(prior));
+  t.integers("case", std::move(observed));
+  t.numbers("v_bar", std::move(v_bar));
+  t.numbers("f", std::move(f));
+  t.numbers("x_dot_0s", std::move(x0));
+  t.integers("converged", std::move(converged));
+  t.words("status", std::move(status));
+  return t;
 }
 
 json cells_summary(const SimulateConfig& config, const ProfileModel& model,
@@ -82,7 +95,7 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
     cells = sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model,
                                 sweep_options(*f.common, *bar, model));
   }
-  write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
+  write_sweep_outputs(paths, cells_table(cells, g.a2, g.a3, model.output_units()),
                       cells_summary(config, model, f, g.r2, g.r3, cells), model);
 }
 
@@ -94,7 +107,8 @@ void add_sweep_accelerations_command(CLI::App& sweep) {
       "f, v_bar and the motion case (a priori and simulated) over a grid of the three-phase "
       "profile's (y2'', y3'') at the config's period and stroke (Figs. 10, 11). CSV "
       "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status; rows a2-major; a cell "
-      "that cannot be computed has status failed (reason in the summary).");
+      "that cannot be computed has status failed (reason in the summary). --out FILE.npy "
+      "writes the same columns as a NumPy structured array (numpy.load).");
   auto f = std::make_shared<AccelerationFlags>();
   f->common = add_sweep_flags(*sub, {"a2", "a3"});
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);

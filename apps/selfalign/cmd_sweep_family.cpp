@@ -37,19 +37,29 @@ std::unique_ptr<ProfileFamily> make_family(const std::string& name, const Profil
 
 // Header "period,stroke,physical,case,v_bar,f,status": the swept value as on the grid, the fixed one
 // as given (run units).
-std::string points_csv(const std::vector<FamilyPoint>& points, const std::vector<double>& values,
+CellTable points_table(const std::vector<FamilyPoint>& points, const std::vector<double>& values,
                        double fixed, SweptParameter swept, const OutputUnits& u) {
-  std::string csv = "period,stroke,physical,case,v_bar,f,status\n";
-  for (std::size_t k = 0; k < points.size(); ++k) {
+  const std::size_t n = points.size();
+  const bool by_period = swept == SweptParameter::period;
+  std::vector<double> period(n), stroke(n), v_bar(n), f(n);
+  std::vector<std::int64_t> physical(n), observed(n);
+  std::vector<std::string> status(n);
+  for (std::size_t k = 0; k < n; ++k) {
     const FamilyPoint& pt = points[k];
-    const bool by_period = swept == SweptParameter::period;
-    csv += csv_number(by_period ? values[k] : fixed) + ',' +
-           csv_number(by_period ? fixed : values[k]) + ',' + (pt.physical ? "1" : "0") + ',' +
-           std::to_string(static_cast<int>(pt.observed)) + ',' +
-           csv_number(u.velocity(pt.v_bar)) + ',' + csv_number(pt.f) + ',' +
-           cell_status(pt.failure) + '\n';
+    period[k] = by_period ? values[k] : fixed, stroke[k] = by_period ? fixed : values[k];
+    physical[k] = pt.physical ? 1 : 0, observed[k] = static_cast<int>(pt.observed);
+    v_bar[k] = u.velocity(pt.v_bar), f[k] = pt.f;
+    status[k] = cell_status(pt.failure);
   }
-  return csv;
+  CellTable t;
+  t.numbers("period", std::move(period));
+  t.numbers("stroke", std::move(stroke));
+  t.integers("physical", std::move(physical));
+  t.integers("case", std::move(observed));
+  t.numbers("v_bar", std::move(v_bar));
+  t.numbers("f", std::move(f));
+  t.words("status", std::move(status));
+  return t;
 }
 
 void run_sweep_family(const FamilyFlags& f) {
@@ -100,7 +110,7 @@ void run_sweep_family(const FamilyFlags& f) {
     return json{{"period", model.from_model_units(D::time, pt.period)},
                 {"stroke", model.from_model_units(D::length, pt.stroke)}};
   });
-  write_sweep_outputs(paths, points_csv(points, values, fixed, f.swept, model.output_units()),
+  write_sweep_outputs(paths, points_table(points, values, fixed, f.swept, model.output_units()),
                       j, model);
 }
 

@@ -33,19 +33,32 @@ struct PositioningFlags {
 // status"; a2, a3 as on the grid, row-major with a2 outer; dx_d in the run's units (nan where
 // the object does not arrive or an entry does not stop); periods -1 where no entry accumulates;
 // status ok or failed (a cell that could not be computed; why: the summary's failures).
-std::string cells_csv(const std::vector<PositioningCell>& cells, const std::vector<double>& a2,
+CellTable cells_table(const std::vector<PositioningCell>& cells, const std::vector<double>& a2,
                       const std::vector<double>& a3, const OutputUnits& u) {
-  std::string csv = "a2,a3,case,f,accumulates,dx_d,accumulating_entries,max_periods_p99,"
-                    "max_periods_p999,status\n";
-  for (std::size_t k = 0; k < cells.size(); ++k) {
+  const std::size_t n = cells.size();
+  std::vector<double> ga2(n), ga3(n), f(n), dx_d(n);
+  std::vector<std::int64_t> motion_case(n), accumulates(n), entries(n), p99(n), p999(n);
+  std::vector<std::string> status(n);
+  for (std::size_t k = 0; k < n; ++k) {
     const PositioningCell& c = cells[k];
-    csv += csv_number(a2[k / a3.size()]) + ',' + csv_number(a3[k % a3.size()]) + ',' +
-           std::to_string(static_cast<int>(c.motion_case)) + ',' + csv_number(c.f) + ',' +
-           (c.accumulates ? "1" : "0") + ',' + csv_number(u.length(c.dx_d)) + ',' +
-           std::to_string(c.accumulating_entries) + ',' + std::to_string(c.max_periods_p99) +
-           ',' + std::to_string(c.max_periods_p999) + ',' + cell_status(c.failure) + '\n';
+    ga2[k] = a2[k / a3.size()], ga3[k] = a3[k % a3.size()];
+    motion_case[k] = static_cast<int>(c.motion_case), f[k] = c.f;
+    accumulates[k] = c.accumulates ? 1 : 0, dx_d[k] = u.length(c.dx_d);
+    entries[k] = c.accumulating_entries, p99[k] = c.max_periods_p99, p999[k] = c.max_periods_p999;
+    status[k] = cell_status(c.failure);
   }
-  return csv;
+  CellTable t;
+  t.numbers("a2", std::move(ga2));
+  t.numbers("a3", std::move(ga3));
+  t.integers("case", std::move(motion_case));
+  t.numbers("f", std::move(f));
+  t.integers("accumulates", std::move(accumulates));
+  t.numbers("dx_d", std::move(dx_d));
+  t.integers("accumulating_entries", std::move(entries));
+  t.integers("max_periods_p99", std::move(p99));
+  t.integers("max_periods_p999", std::move(p999));
+  t.words("status", std::move(status));
+  return t;
 }
 
 json cells_summary(const SimulateConfig& config, const ProfileModel& model,
@@ -125,7 +138,7 @@ void run_sweep_positioning(const PositioningFlags& f) {
                   : positioning_surfaces(p.period, p.stroke, width, c_mu, g.a2_model, g.a3_model,
                                          options, sweep);
   }
-  write_sweep_outputs(paths, cells_csv(cells, g.a2, g.a3, model.output_units()),
+  write_sweep_outputs(paths, cells_table(cells, g.a2, g.a3, model.output_units()),
                       cells_summary(config, model, f, g.r2, g.r3, cells, field.get()), model);
 }
 

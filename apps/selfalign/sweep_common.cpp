@@ -5,9 +5,12 @@
 #include <charconv>
 #include <cmath>
 #include <iostream>
+#include <variant>
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
+#include "selfalign/overloaded.hpp"
+#include "report.hpp"
 
 namespace selfalign::cli {
 namespace {
@@ -66,7 +69,8 @@ std::shared_ptr<SweepFlags> add_sweep_flags(CLI::App& command,
                                             std::vector<std::string_view> keep) {
   auto flags = std::make_shared<SweepFlags>();
   std::vector<KeyFlag> overrides = {
-      {"out", "CSV file of the results (default: standard output)"},
+      {"out", "CSV file of the results (default: standard output); a path ending in .npy: the "
+              "same columns as a NumPy structured array (numpy.load)"},
       {"summary", "summary JSON file, - for stdout (default: <out without extension>"
                   ".summary.json when out is given, else none)"}};
   for (std::string_view key : swept) overrides.push_back({key, ""});
@@ -118,9 +122,44 @@ SweepPaths resolve_sweep_paths(const SimulateConfig& config) {
   return paths;
 }
 
-void write_sweep_outputs(const SweepPaths& paths, const std::string& csv, nlohmann::json summary,
+void CellTable::numbers(std::string name, std::vector<double> values) {
+  columns_.push_back({std::move(name), std::move(values)});
+}
+void CellTable::integers(std::string name, std::vector<std::int64_t> values) {
+  columns_.push_back({std::move(name), std::move(values)});
+}
+void CellTable::words(std::string name, std::vector<std::string> values) {
+  columns_.push_back({std::move(name), std::move(values)});
+}
+
+std::string CellTable::csv() const {
+  std::string out;
+  for (const NpyColumn& c : columns_) out += (out.empty() ? "" : ",") + c.name;
+  out += '\n';
+  const std::size_t rows =
+      columns_.empty() ? 0 : std::visit([](const auto& v) { return v.size(); }, columns_[0].values);
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t k = 0; k < columns_.size(); ++k) {
+      if (k > 0) out += ',';
+      std::visit(Overloaded{[&](const std::vector<double>& v) { out += csv_number(v[r]); },
+                            [&](const std::vector<std::int64_t>& v) { out += std::to_string(v[r]); },
+                            [&](const std::vector<std::string>& v) { out += v[r]; }},
+                 columns_[k].values);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string CellTable::npy() const { return npy_file(columns_); }
+
+void write_sweep_outputs(const SweepPaths& paths, const CellTable& table, nlohmann::json summary,
                          const ProfileModel& model) {
+  const bool npy = paths.csv && paths.csv->size() > 4 &&
+                   paths.csv->compare(paths.csv->size() - 4, 4, ".npy") == 0;
+  const std::string csv = npy ? table.npy() : table.csv();
   summary["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
+  summary["format"] = npy ? "npy" : "csv";
   summary["law"] = law_json(model.law, model.output_units(), model.scales.mu());
   // Every cell's solver: the exact ones, or the slip integrator under a Stribeck/viscous law.
   summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";

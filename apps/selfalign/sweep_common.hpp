@@ -3,6 +3,7 @@
 // (config keys, --threads, --quiet, --log), the library's sweep options with a progress bar,
 // and writing the CSV with its JSON summary. The subcommands are cmd_sweep_*.cpp.
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +15,7 @@
 #include "config_flags.hpp"
 #include "progress_bar.hpp"
 #include "selfalign/analysis/sweep.hpp"
+#include "selfalign/io/npy.hpp"
 #include "selfalign/io/simulate_model.hpp"
 
 namespace selfalign::cli {
@@ -119,9 +121,26 @@ struct SweepPaths {
 /// Resolves and checks the paths (before any work is done). Throws InvalidParameter.
 SweepPaths resolve_sweep_paths(const SimulateConfig& config);
 
-/// Writes the CSV and the summary, with "csv_file" added; files are committed together
-/// (AtomicFileSet), then standard output is written.
-void write_sweep_outputs(const SweepPaths& paths, const std::string& csv, nlohmann::json summary,
+/// A sweep's cells as named columns, one row per cell: written as CSV (header, then rows; to
+/// standard output without --out) or, for an --out path ending in ".npy", as a NumPy structured
+/// array with the same names and values (io/npy.hpp: numbers float64 at full precision, flags
+/// and counts int64, the status as bytes), readable by numpy.load without selfalign.
+class CellTable {
+ public:
+  void numbers(std::string name, std::vector<double> values);
+  void integers(std::string name, std::vector<std::int64_t> values);
+  void words(std::string name, std::vector<std::string> values);
+  std::string csv() const;  ///< numbers as csv_number writes them
+  std::string npy() const;
+
+ private:
+  std::vector<NpyColumn> columns_;
+};
+
+/// Writes the table (CSV, or .npy for an --out path ending in ".npy") and the summary, with
+/// "csv_file" (the table's path) and "format" ("csv" or "npy") added; files are committed
+/// together (AtomicFileSet), then standard output is written.
+void write_sweep_outputs(const SweepPaths& paths, const CellTable& table, nlohmann::json summary,
                          const ProfileModel& model);
 
 /// The sweep subcommands, added under `selfalign sweep` (cmd_sweep.cpp).
