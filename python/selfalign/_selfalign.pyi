@@ -1987,6 +1987,7 @@ def simulate_planar(
     pose: PoseLike = (0.0, 0.0, 0.0),
     twist: TwistLike = (0.0, 0.0, 0.0),
     every: int = 1,
+    method: Union[Method, str] = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 @overload
 def simulate_planar(
@@ -2006,6 +2007,7 @@ def simulate_planar(
     every: int = 1,
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
+    method: Union[Method, str] = ...,
 ) -> dict[str, npt.NDArray[np.generic]]: ...
 @overload
 def planar_steady(

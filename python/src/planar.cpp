@@ -875,12 +875,17 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
   int8     mode (PatchMode of the step that ended there: 0 stick, 1 pivot, 2 slip; at t = 0
            stick for a zero twist, else slip)
   int32    pivot (the pivot contact's index in part.patch for mode 1, else -1)
+`method`: "time-stepping" (Moreau, the default) or "exact": the exact event-driven point solver
+(a point part at its centre of mass on a uniform field, a translating table with
+piecewise-constant accelerations; otherwise InvalidParameter naming method), sampled at the same
+times (the step then only sets them): exact to rounding, mode 0 where the relative velocity is
+0, else 2; the angle turns at the start's constant omega (no torque about a centred point).
 )doc");
   // simulate_planar on a PlanarProblem: both overloads below call it.
   const auto simulate_planar_of = [](const PlanarProblem& p,
                                       std::optional<long long> periods,
                                       std::optional<double> duration, const py::object& pose_in,
-                                      const py::object& twist_in, long long every) {
+                                      const py::object& twist_in, long long every, Method method) {
     const PlanarPose pose = pose_of(pose_in, "pose");
     const PlanarTwist twist = twist_of(twist_in, "twist");
     if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
@@ -892,7 +897,8 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
     const PythonProgress interrupt{py::none()};
     PlanarTrajectory r = interrupt.run([&] {
       return simulate_planar(p, pose, twist, steps, every,
-                             [&interrupt](long long, long long) { interrupt.stop_if_cancelled(); });
+                             [&interrupt](long long, long long) { interrupt.stop_if_cancelled(); },
+                             method);
     });
     return trajectory_dict(std::move(r));
   };
@@ -900,12 +906,14 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
       "simulate_planar",
       [simulate_planar_of](const PyPlanarProblem& problem,
               std::optional<long long> periods, std::optional<double> duration,
-              const py::object& pose_in, const py::object& twist_in, long long every) {
-        return simulate_planar_of(problem.problem, periods, duration, pose_in, twist_in, every);
+              const py::object& pose_in, const py::object& twist_in, long long every,
+              Method method) {
+        return simulate_planar_of(problem.problem, periods, duration, pose_in, twist_in, every,
+                                  method);
       },
       py::arg("problem"), py::kw_only(),
       py::arg("periods") = none, py::arg("duration") = none, py::arg("pose") = zero3,
-      py::arg("twist") = zero3, py::arg("every") = 1,
+      py::arg("twist") = zero3, py::arg("every") = 1, py::arg("method") = Method::time_stepping,
       simulate_doc.c_str());
   m.def(
       "simulate_planar",
@@ -914,17 +922,18 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
          const FrictionLaw& law, double step, double theta, 
               std::optional<long long> periods, std::optional<double> duration,
               const py::object& pose_in, const py::object& twist_in, long long every,
-              const py::object& x_direction, const py::object& y_direction) {
+              const py::object& x_direction, const py::object& y_direction, Method method) {
         return simulate_planar_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
                                 part, law, step, theta),
-                     periods, duration, pose_in, twist_in, every);
+                     periods, duration, pose_in, twist_in, every, method);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
       py::arg("step"), py::arg("theta") = 0.5,
       py::arg("periods") = none, py::arg("duration") = none, py::arg("pose") = zero3,
       py::arg("twist") = zero3, py::arg("every") = 1,
-      py::arg("x_direction") = ex, py::arg("y_direction") = ey, simulate_doc.c_str());
+      py::arg("x_direction") = ex, py::arg("y_direction") = ey,
+      py::arg("method") = Method::time_stepping, simulate_doc.c_str());
 
   static const std::string steady_doc = doc(R"doc(
 The window-average drift of a part (kept for comparison; the steady state is

@@ -331,3 +331,29 @@ def test_a_planar_problem_is_checked_when_made():
         sa.PlanarProblem(PROFILE, field=sa.UniformPlanarField(), part=sa.RigidPart(), step=0.01,
                          x_direction=(1.0, 1.0))
     assert error.value.name == "x_direction"
+
+
+def test_the_exact_point_solver_from_python():
+    # Issue 22: simulate_planar(method="exact") runs the exact event-driven point solver at the
+    # samples' times. Second method: Moreau converges to it at first order (the error at h/4 is
+    # about a quarter of the error at h); a patch part is refused by name.
+    along = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    across = sa.ThreePhaseProfile(1.0, 0.084, 3.0, 0.9)
+    errors = []
+    for step in (1 / 400, 1 / 1600):
+        problem = sa.PlanarProblem(along, across, field=sa.UniformPlanarField(1.0),
+                                   part=sa.RigidPart(0.01, sa.point_patch()),
+                                   law=sa.FrictionLaw(1.3, 1.0), step=step)
+        every = round(0.25 / step)
+        exact = sa.simulate_planar(problem, periods=2, twist=(0.1, -0.05, 0), every=every,
+                                   method="exact")
+        moreau = sa.simulate_planar(problem, periods=2, twist=(0.1, -0.05, 0), every=every)
+        np.testing.assert_array_equal(exact["t"], moreau["t"])
+        errors.append(max(np.abs(exact["x"] - moreau["x"]).max(),
+                          np.abs(exact["y"] - moreau["y"]).max()))
+        assert set(exact["mode"]) <= {0, 2} and np.all(exact["pivot"] == -1)
+    assert 2 < errors[0] / errors[1] < 8
+    patch = sa.PlanarProblem(along, field=sa.UniformPlanarField(1.0),
+                             part=sa.RigidPart(0.01, sa.rectangle_patch(0.04, 0.02, 2, 2)), step=0.01)
+    with pytest.raises(sa.InvalidParameter, match="method"):
+        sa.simulate_planar(patch, periods=1, method="exact")

@@ -9,6 +9,7 @@
 #include "../analysis/parallel_cells.hpp"
 #include "selfalign/analysis/final_stick.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/profiles/piecewise_polynomial.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps
 #include "step_sinks.hpp"
 
@@ -67,6 +68,20 @@ void validate(const PlanarProblem& p) {
   validate(p.part);
   validate(p.options);
   steps_per_period(p);
+}
+
+bool exact_point_applies(const PlanarProblem& p) {
+  const ContactPatch& patch = p.part.patch;
+  if (patch.size() != 1 || patch[0].x != 0 || patch[0].y != 0) return false;
+  if (!std::holds_alternative<UniformPlanarField>(p.field) || p.motion.rotation) return false;
+  for (const TableProfile* profile : {p.motion.first, p.motion.second}) {
+    if (!profile) continue;
+    const PiecewisePolynomialProfile* pwp = profile->piecewise_polynomial();
+    if (!pwp) return false;
+    for (const AccelerationSegment& s : pwp->segments())
+      if (s.jerk != 0) return false;
+  }
+  return true;
 }
 
 long long steps_per_period(const PlanarProblem& p) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "selfalign/error.hpp"
+#include "selfalign/planar/planar_exact_point.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps, kMaxRecordedSamples
 
 namespace selfalign {
@@ -62,9 +63,45 @@ long long planar_steps_of_duration(const PlanarProblem& p, double duration) {
   return static_cast<long long>(steps);
 }
 
+namespace {
+
+// The exact point solver's run at the samples' times (simulate_planar, Method::exact).
+void exact_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist& twist,
+               long long steps, long long every, const PlanarRunProgress& progress,
+               PlanarTrajectory& out) {
+  const UniformPlanarField& field = std::get<UniformPlanarField>(p.field);
+  const double h = p.options.step;
+  PlanarExactState s{0, pose.x, pose.y, twist.ux, twist.uy};
+  PlanarRigidState end = make_planar_rigid_state(p.motion, 0, pose, twist);
+  const auto sample = [&](long long k) {
+    const double t = static_cast<double>(k) * h;
+    advance_planar_exact_point(p.motion, field, p.law, s, t);
+    const PlanarTablePose table = table_pose(p.motion, t);
+    end.t = t, end.step_index = k, end.table = table;
+    end.pose = {s.x, s.y, pose.angle + twist.omega * t};
+    end.twist = {s.ux, s.uy, twist.omega};
+    end.mode = s.ux == 0 && s.uy == 0 ? PatchMode::stick : PatchMode::slip;
+    out.t.push_back(t);
+    out.x.push_back(end.pose.x), out.y.push_back(end.pose.y), out.angle.push_back(end.pose.angle);
+    out.ux.push_back(s.ux), out.uy.push_back(s.uy), out.omega.push_back(twist.omega);
+    out.table_x.push_back(table.x), out.table_y.push_back(table.y);
+    out.table_angle.push_back(table.angle);
+    out.mode.push_back(end.mode);
+    out.pivot.push_back(-1);
+  };
+  sample(0);
+  for (long long k = every; k < steps + every; k += every) {
+    sample(std::min(k, steps));
+    if (progress) progress(std::min(k, steps), steps);
+  }
+  out.end = end;
+}
+
+}  // namespace
+
 PlanarTrajectory simulate_planar(const PlanarProblem& p, const PlanarPose& pose,
                                  const PlanarTwist& twist, long long steps, long long every,
-                                 const PlanarRunProgress& progress) {
+                                 const PlanarRunProgress& progress, Method method) {
   validate(p.field);
   validate(p.part);
   validate(p.options);
@@ -77,6 +114,17 @@ PlanarTrajectory simulate_planar(const PlanarProblem& p, const PlanarPose& pose,
     throw InvalidParameter("every", static_cast<double>(every),
                            "the run would record more than 1e7 samples: raise every");
   PlanarTrajectory out;
+  if (method == Method::exact) {
+    if (!exact_point_applies(p))
+      throw InvalidParameter("method", "exact",
+                             "the exact point solver needs a point part at its centre of mass on "
+                             "a uniform field, on a translating table with piecewise-constant "
+                             "accelerations (use time-stepping)");
+    exact_run(p, pose, twist, steps, every, progress, out);
+    return out;
+  }
+  if (method != Method::time_stepping)
+    throw InvalidParameter("method", to_string(method), "must be time-stepping or exact");
   Recorder rec(out, every);
   PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
   rec.record(s);

@@ -14,22 +14,6 @@
 namespace selfalign {
 namespace {
 
-// The exact point solver takes a point part at its centre on a uniform field, on a translating
-// table whose accelerations are piecewise constant.
-bool exact_point_applies(const PlanarProblem& p) {
-  const ContactPatch& patch = p.part.patch;
-  if (patch.size() != 1 || patch[0].x != 0 || patch[0].y != 0) return false;
-  if (!std::holds_alternative<UniformPlanarField>(p.field) || p.motion.rotation) return false;
-  for (const TableProfile* profile : {p.motion.first, p.motion.second}) {
-    if (!profile) continue;
-    const PiecewisePolynomialProfile* pwp = profile->piecewise_polynomial();
-    if (!pwp) return false;
-    for (const AccelerationSegment& s : pwp->segments())
-      if (s.jerk != 0) return false;
-  }
-  return true;
-}
-
 // One period of either stepper: pose and twist at the period's end, the level under the part
 // at each step (Moreau) or the uniform level (exact), and the census of the period's steps.
 struct PeriodResult {

@@ -33,6 +33,11 @@ void validate(const PlanarProblem& problem);
 /// Steps per table period.
 long long steps_per_period(const PlanarProblem& problem);
 
+/// Whether the exact point solver (planar_exact_point.hpp) takes the problem: a point part at
+/// its centre of mass, a uniform field, a table that translates (no rotation) with
+/// piecewise-constant accelerations along both directions.
+bool exact_point_applies(const PlanarProblem& problem);
+
 /// Throws InvalidParameter naming `name` when `periods` periods of one run exceed the
 /// time-stepping cap of simulate.hpp (kMaxTimeSteps = 1e9 steps).
 void require_planar_steps(const char* name, double periods, const PlanarProblem& problem);

@@ -3,13 +3,16 @@
 /// One recorded planar run: the run driver the CLI (`planar simulate`) and Python
 /// (simulate_planar) share, so neither front end contains a step loop. From a pose and twist
 /// at t = 0, Moreau's rigid-part stepper (planar_rigid.hpp) advances `steps` steps; the state
-/// is recorded at t = 0, every `every` steps, and at the last step.
+/// is recorded at t = 0, every `every` steps, and at the last step. With Method::exact the
+/// exact point solver (planar_exact_point.hpp) computes the same run where it applies
+/// (exact_point_applies), recorded at the same times (the step h then only sets them).
 
 #include <cstdint>
 #include <functional>
 #include <vector>
 
 #include "selfalign/planar/planar_analysis.hpp"
+#include "selfalign/simulate/method.hpp"
 
 namespace selfalign {
 
@@ -42,8 +45,15 @@ using PlanarRunProgress = std::function<void(long long done, long long total)>;
 /// `progress` is called after every chunk of at most one period and 1e4 steps. A run whose
 /// state or table motion leaves the finite numbers ends at that step: the trajectory's last
 /// sample is the failing step and `end.status` is core::StepStatus::non_finite.
+/// `method`: time_stepping (Moreau, any problem) or exact (the exact point solver: a point part
+/// at its centre of mass on a uniform field, a translating table with piecewise-constant
+/// accelerations; InvalidParameter naming "method" otherwise, and for integrator). An exact run
+/// records the exact state at the sample times: mode stick where the relative velocity is 0,
+/// else slip; the angle turns at the start's constant omega (no torque about a centred point);
+/// the census stays empty (no steps).
 PlanarTrajectory simulate_planar(const PlanarProblem& problem, const PlanarPose& pose,
                                  const PlanarTwist& twist, long long steps, long long every = 1,
-                                 const PlanarRunProgress& progress = {});
+                                 const PlanarRunProgress& progress = {},
+                                 Method method = Method::time_stepping);
 
 }  // namespace selfalign
