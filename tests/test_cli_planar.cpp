@@ -285,6 +285,31 @@ TEST(CliPlanar, TheAxisFieldExampleStopsWhereThePatchIsFirstHeld) {
 
 // A key the config's kinds do not read is said to have no effect, in one warning line after the
 // output (exit 0); the run is the one without the key.
+// [run] method = "exact": planar simulate by the exact point solver (planar_run.hpp). Second
+// method: Moreau's run of the same config, which converges to it at first order, ends within
+// 10 h x (its slip speed) of it; a patch part is refused by the key's name, nothing written.
+TEST(CliPlanar, SimulateTakesTheExactPointSolver) {
+  CliSandbox box;
+  const std::string point = write_config(box, "point.toml", kBase + "[part]\ninertia = 0.01\n");
+  const auto exact = box.run({"planar", "simulate", "--config", point, "--set",
+                              "run.method=exact", "--json"});
+  const auto moreau = box.run({"planar", "simulate", "--config", point, "--json"});
+  ASSERT_EQ(exact.exit_code, 0) << exact.err;
+  ASSERT_EQ(moreau.exit_code, 0) << moreau.err;
+  const json e = json::parse(exact.out), m = json::parse(moreau.out);
+  EXPECT_EQ(e["method"], "exact");
+  EXPECT_EQ(m["method"], "time-stepping");
+  const double ex = e["end_pose"]["x"].get<double>(), mx = m["end_pose"]["x"].get<double>();
+  EXPECT_NE(ex, mx);
+  EXPECT_NEAR(ex, mx, 10 * 0.01 * 0.5);  // 10 h at slip speeds below 0.5
+  EXPECT_GT(std::abs(ex), 0.01);          // it moved
+  CliSandbox bad;
+  const std::string patch = write_config(bad, "patch.toml", kBase + kPart);
+  expect_clean_failure(bad, bad.run({"planar", "simulate", "--config", patch, "--set",
+                                     "run.method=exact", "--csv", "t.csv"}),
+                       {"run.method"});
+}
+
 TEST(CliPlanar, AKeyNothingReadsIsWarnedAbout) {
   CliSandbox box;
   const std::string field = "[field]\ntype = \"axis\"\npositions = [0.2, 0.4]\nlevels = [1, 3]\n";

@@ -111,17 +111,23 @@ void run_simulate(const PlanarFlags& f) {
     throw InvalidParameter("run.every", s.every,
                            "records " + format_number(rows) + " rows; at most " +
                                format_number(kMaxRecordedSamples));
+  if (s.method == Method::exact && !exact_point_applies(s.problem))
+    throw InvalidParameter("run.method", "exact",
+                           "the exact point solver needs a point part at its centre on a uniform "
+                           "field and a translating table with piecewise-constant accelerations");
   const Si si{s};
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   const PlanarTrajectory run = simulate_planar(
       s.problem, s.pose, s.twist, planar_steps_of_periods(s.problem, s.periods), s.every,
       [&bar](long long done, long long total) {
         bar.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
-      });
+      },
+      s.method);
   bar.finish();
   const PlanarRigidState& st = run.end;
   json r = header(s);
   r["command"] = "planar simulate";
+  r["method"] = to_string(s.method);
   r["periods"] = s.periods;
   r["end_pose"] = pose_json(st.pose, si);
   r["end_twist"] = {{"ux", si.velocity(st.twist.ux)}, {"uy", si.velocity(st.twist.uy)}, {"omega", si.rate(st.twist.omega)}};

@@ -348,6 +348,12 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
   if (!(st.tolerance >= 0 && st.tolerance < 1))
     throw InvalidParameter(run.key("tolerance"), st.tolerance, "must be in [0, 1) (0: the default)");
   st.every = run.integer("every", 1, 1, 1000000000);
+  {
+    const std::string method = run.text("method", "time-stepping");
+    if (method == "time-stepping") st.method = Method::time_stepping;
+    else if (method == "exact") st.method = Method::exact;
+    else throw InvalidParameter(run.key("method"), method, "must be time-stepping or exact");
+  }
   st.pose = pose_from(run.list("pose", {0, 0, 0}));
   const std::vector<double> tw = run.list("twist", {0, 0, 0});
   st.twist = {tw[0], tw[1], tw[2]};

@@ -119,6 +119,9 @@ std::vector<KeySpec> make_keys() {
       {"run", "twist", V::numbers, D::none, kTwist, "[ux, uy, omega]", "[m/s, m/s, rad/s]",
        "initial twist relative to the table (default [0, 0, 0])"},
       {"run", "every", V::number, D::none, {}, {}, "", "simulate: a row every N steps (default 1)"},
+      {"run", "method", V::text, D::none, {}, {}, "",
+       "simulate: time-stepping (default) or exact (the exact point solver: a point part at its "
+       "centre on a uniform field, a translating table with piecewise-constant accelerations)"},
       {"run", "transient", V::number, D::none, {}, {}, "",
        "steady: periods before the fixed-point search (default 0)"},
       {"run", "window", V::number, D::none, {}, {}, "", "not used (the window average before issue 21)"},

@@ -18,6 +18,7 @@
 #include "selfalign/io/parameter_view.hpp"
 #include "selfalign/planar/planar_analysis.hpp"
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/method.hpp"
 #include "selfalign/units.hpp"
 
 namespace selfalign {
@@ -34,6 +35,7 @@ struct PlanarSetup {
   PlanarPose pose;
   PlanarTwist twist;
   int periods = 10, every = 1;
+  Method method = Method::time_stepping;  ///< simulate: time-stepping or exact (planar_run.hpp)
   int transient = 0;          ///< steady: periods before the fixed-point search
   int steady_periods = 2000;  ///< steady: periods of the search at most
   double tolerance = 0;       ///< steady: PlanarSteadyStateOptions::tolerance (0: default)
