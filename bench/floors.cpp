@@ -38,6 +38,20 @@ constexpr double kH = 1e-4, kTheta = 0.5;
 
 bool close(double a, double b) { return std::abs(a - b) <= 1e-12 * (1 + std::abs(a)); }
 
+// The one-off check of a floor: the library's final (x, x') and the floor's agree, else the
+// benchmark is skipped with an error; the position difference is reported as check_dx.
+bool agrees(benchmark::State& st, const std::string& what, double lib_x, double lib_v, double x,
+            double v) {
+  if (!(close(lib_x, x) && close(lib_v, v))) {
+    st.SkipWithError((what + " floor differs: x " + std::to_string(lib_x) + " vs " +
+                      std::to_string(x))
+                         .c_str());
+    return false;
+  }
+  st.counters["check_dx"] = std::abs(lib_x - x);
+  return true;
+}
+
 // The three segments of a three-phase profile from its closed form (appendix): accelerations,
 // start phases, durations, and the table velocity at each start.
 struct Phases {
@@ -96,13 +110,7 @@ void floor_exact_per_period(benchmark::State& st, ThreePhaseParameters params) {
   advance_exact(setup, lib, static_cast<double>(kPeriods) * setup.profile.period());
   double x = 0, v = 0;
   floor_exact(f, 1.0, kPeriods, x, v);
-  if (!(close(lib.object.x, x) && close(lib.object.xd, v))) {
-    st.SkipWithError(("exact floor differs: x " + std::to_string(lib.object.x) + " vs " +
-                      std::to_string(x))
-                         .c_str());
-    return;
-  }
-  st.counters["check_dx"] = std::abs(lib.object.x - x);
+  if (!agrees(st, "exact", lib.object.x, lib.object.xd, x, v)) return;
   double m = 1.0;
   long long arcs = 0;
   for (auto _ : st) {
@@ -157,13 +165,7 @@ void floor_time_stepping_per_step(benchmark::State& st, ThreePhaseParameters par
   advance_time_stepping(profile, UniformFriction(), FrictionLaw{}, {kH, kTheta}, lib, kSteps);
   double x = 0, v = 0;
   floor_moreau(f, 1.0, kSteps, x, v);
-  if (!(close(lib.object.x, x) && close(lib.object.xd, v))) {
-    st.SkipWithError(("Moreau floor differs: x " + std::to_string(lib.object.x) + " vs " +
-                      std::to_string(x))
-                         .c_str());
-    return;
-  }
-  st.counters["check_dx"] = std::abs(lib.object.x - x);
+  if (!agrees(st, "Moreau", lib.object.x, lib.object.xd, x, v)) return;
   double m = 1.0;
   for (auto _ : st) {
     benchmark::DoNotOptimize(m);

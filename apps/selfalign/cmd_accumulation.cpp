@@ -113,17 +113,14 @@ json accumulation_json(const SimulateModel& model, const TwoRegionTable& f,
 }
 
 // Any other piecewise-affine level: the stick-position map by the exact solver. Its
-// accumulation point is the lowest of its fixed points, the general eq. (41); the contraction
-// there is the map's one-sided slope from below (a difference over kSlopeStep of the span
-// x_stick,min - x_mu: far above rounding, far below the map's curvature).
+// accumulation point is the lowest of its fixed points, the general eq. (41) (x_stick_min, from
+// the level's rise x_mu); the contraction there is the map's one-sided slope from below (a
+// difference over kSlopeStep of the span x_stick,min - x_mu: far above rounding, far below the
+// map's curvature).
 json field_accumulation_json(const SimulateModel& model, const PeriodStickPositionMap& map,
-                             double x1) {
+                             double x_mu, double x_stick_min, double x1) {
   constexpr double kSlopeStep = 1e-6;
   const OutputUnits u = model.output_units();
-  const FrictionMap& friction = *model.friction;
-  const double x_mu = friction_rise(friction);
-  const double x_stick_min = stick_position_min(*friction.piecewise_affine(), FrictionLaw{},
-                                                model.profile->peak_acceleration());
   json j = stopping_context_json(model, true);
   j["map"] = "exact solver";
   j["fixed_point"] = length_or_null(u, x_stick_min);
@@ -220,7 +217,7 @@ void run_accumulation(const ConfigFlags& flags, const AccumulationFlags& f) {
     const double x1 = f.x1_option->count() > 0
                           ? model_length(model, require_moderate("x1", f.x1))
                           : x_mu;
-    const json report = field_accumulation_json(model, map, x1);
+    const json report = field_accumulation_json(model, map, x_mu, x_stick_min, x1);
     std::string csv;
     if (paths.csv) {  // default grid: from the rise to a quarter past x_stick,min
       const double span = std::isfinite(x_stick_min) ? x_stick_min - x_mu : 0.0;

@@ -213,6 +213,14 @@ std::optional<bool> StickPositionMap::accumulates_for_every_entry() const {
   return e.accumulates;
 }
 
+double stopping_look_phase(const TableProfile& profile) {
+  const PiecewisePolynomialProfile* pwc = profile.piecewise_polynomial();
+  if (profile.three_phase() && pwc)
+    for (const AccelerationSegment& seg : pwc->segments())
+      if (seg.accel < 0) return seg.begin;  // the -y2'' segment begins at t1
+  return 0;
+}
+
 PeriodStickPositionMap::PeriodStickPositionMap(const TableProfile& profile,
                                                const FrictionMap& friction,
                                                const FrictionLaw& law) {
@@ -223,14 +231,7 @@ PeriodStickPositionMap::PeriodStickPositionMap(const TableProfile& profile,
   if (law.velocity_dependent())
     throw InvalidParameter("law", law.describe(),
                            "the stick-position map needs a Coulomb law (the exact solver)");
-  // The stopping run's look: the start of the -y2'' segment of a three-phase profile, as the
-  // solver forms the switch (the segments' own begin and period).
-  if (profile.three_phase())
-    for (const AccelerationSegment& seg : pwc.segments())
-      if (seg.accel < 0) {
-        phase_ = seg.begin;
-        break;
-      }
+  phase_ = stopping_look_phase(profile);
   period_ = pwc.period();
   PeriodMapOptions o;
   o.method = Method::exact;

@@ -186,13 +186,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
   std::unique_ptr<StickPositionMap> map;
   if (three_phase && paper && !stepped)
     map = std::make_unique<StickPositionMap>(*three_phase, *two);
-  double phase = 0;
-  if (three_phase && pwc)
-    for (const AccelerationSegment& seg : pwc->segments())
-      if (seg.accel < 0) {  // the -y2'' segment begins at t1
-        phase = seg.begin;
-        break;
-      }
+  const double phase = stopping_look_phase(profile);
 
   PeriodMap::Run run = period_map.start(start);
   StopWatch watch(x_mu, targets, r, start.t);  // at rest at t0: stopped since t0

@@ -83,9 +83,7 @@ void validate(const Model& m) {
     if (!(g.g > 0 && g.g <= 1e50)) throw InvalidParameter("gravity.g", g.g, "must be in (0, 1e50]");
     if (!(g.incline >= 0 && g.incline < std::numbers::pi / 2))
       throw InvalidParameter("gravity.incline", g.incline, "must be in [0, pi/2) rad");
-    if (!(std::abs(std::hypot(g.downhill_x, g.downhill_y) - 1) <= 1e-12))
-      throw InvalidParameter("gravity.downhill", std::hypot(g.downhill_x, g.downhill_y),
-                             "must be a unit vector (|d| = 1)");
+    require_unit_vector("gravity.downhill", g.downhill_x, g.downhill_y);
   } else if (m.motion.normal) {
     throw InvalidParameter("motion.normal", m.motion.normal->kind(),
                            "the table's normal motion changes the normal load: give the model "

@@ -8,13 +8,14 @@
 
 namespace selfalign {
 
+void require_unit_vector(const std::string& name, double x, double y) {
+  if (!(std::abs(std::hypot(x, y) - 1) <= 1e-12))
+    throw InvalidParameter(name, std::hypot(x, y), "must be a unit vector (|" + name + "| = 1)");
+}
+
 void validate(const PlanarTableMotion& m) {
-  const auto unit = [](const char* name, double ex, double ey) {
-    if (!(std::abs(std::hypot(ex, ey) - 1) <= 1e-12))
-      throw InvalidParameter(name, std::hypot(ex, ey), "must be a unit vector (|e| = 1)");
-  };
-  if (m.first) unit("e1", m.e1_x, m.e1_y);
-  if (m.second) unit("e2", m.e2_x, m.e2_y);
+  if (m.first) require_unit_vector("e1", m.e1_x, m.e1_y);
+  if (m.second) require_unit_vector("e2", m.e2_x, m.e2_y);
 }
 
 void require_no_normal_motion(const PlanarTableMotion& m, const char* solver) {

@@ -109,6 +109,11 @@ class StickPositionMap {
   bool shape_ok_;  // the assumptions that do not depend on x_n
 };
 
+/// The phase of a stopping run's looks (stopping.hpp) and of the stick-position maps [-]: t1 for
+/// the three-phase profile, the start of its -y2'' segment as the solver forms the switch (the
+/// object has rested through [t0, t1] there); 0 for other profiles.
+double stopping_look_phase(const TableProfile& profile);
+
 /// The stick-position map of any piecewise-affine level under any Coulomb law, by the exact
 /// solver (issue 21: accumulation on any field): where an object at rest at x_n at the look
 /// phase of the profile is one period later, when it is at rest there; NaN when it is moving

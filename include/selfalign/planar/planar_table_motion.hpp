@@ -6,6 +6,8 @@
 /// solver (the point steppers, the exact point solver, the rigid part) and analysis takes it;
 /// it does not belong to any one of them. Also the planar solvers' common friction-law check.
 
+#include <string>
+
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 
@@ -41,6 +43,10 @@ double planar_period(const PlanarTableMotion& motion);
 
 /// Throws InvalidParameter unless each direction given is a unit vector (to 1e-12).
 void validate(const PlanarTableMotion& motion);
+
+/// Throws InvalidParameter(name, |(x, y)|, ...) unless (x, y) is a unit vector (to 1e-12): the
+/// one check of the table's directions and of core::Gravity's downhill direction.
+void require_unit_vector(const std::string& name, double x, double y);
 
 /// Throws InvalidParameter naming "normal" when the motion moves the table along its normal:
 /// `solver` has no normal-load stage (only the contact core with gravity has).
