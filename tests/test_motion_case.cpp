@@ -46,7 +46,10 @@ TEST(MotionCase, APrioriRulesAgreeWithSimulatedSteadyStateOnThreePlanes) {
     const std::vector<double> g =
         pl.log ? log_grid(pl.lo, pl.hi, n) : linear_grid(pl.lo, pl.hi, n);
     const double step = pl.log ? std::pow(pl.hi / pl.lo, 1.0 / (n - 1)) : (pl.hi - pl.lo) / (n - 1);
-    const std::vector<AccelerationCell> cells = sweep_accelerations(pl.period, pl.stroke, g, g);
+    SweepOptions search;  // the simulated steady state, not the closed form (which follows Fig. 8)
+    search.closed_form = false;
+    const std::vector<AccelerationCell> cells =
+        sweep_accelerations(pl.period, pl.stroke, g, g, search);
     int straddling = 0, disagreements = 0, unexplained = 0;
     for (const AccelerationCell& c : cells) {
       ++seen_predicted[static_cast<int>(c.predicted)];

@@ -17,6 +17,7 @@ using nlohmann::json;
 struct AccelerationFlags {
   std::shared_ptr<SweepFlags> common;
   std::string a2_range, a3_range;
+  bool search = false;  // --search: the fixed-point search on every cell
 };
 
 // Columns "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status"; a2, a3 as on the grid
@@ -50,7 +51,7 @@ CellTable cells_table(const std::vector<AccelerationCell>& cells, const std::vec
 
 json cells_summary(const SimulateConfig& config, const ProfileModel& model,
                    const AccelerationFlags& f, const GridRange& r2, const GridRange& r3,
-                   const std::vector<AccelerationCell>& cells) {
+                   const std::vector<AccelerationCell>& cells, bool closed_form) {
   const SimulateConfig given = resolve_simulate_config(config);  // Δt, Δy as given (run units)
   std::vector<StickSlipCase> observed, predicted;
   int disagreements = 0, not_converged = 0;
@@ -75,6 +76,8 @@ json cells_summary(const SimulateConfig& config, const ProfileModel& model,
   j["cases_a_priori"] = case_counts(predicted);
   j["a_priori_disagreements"] = disagreements;
   j["not_converged"] = not_converged;
+  // Each cell a formula (docs/three-phase-steady-state.md), or the fixed-point search.
+  if (closed_form) j["method"] = "closed form";
   j["failures"] = failures_json(cells, [&](const AccelerationCell& c) {
     return json{{"a2", model.from_model_units(Dimension::acceleration, c.a2)},
                 {"a3", model.from_model_units(Dimension::acceleration, c.a3)}};
@@ -90,13 +93,16 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
 
   const ThreePhaseParameters& p = *model.three_phase;
   std::vector<AccelerationCell> cells;
+  SweepOptions options;
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
-    cells = sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model,
-                                sweep_options(*f.common, *bar, model));
+    options = sweep_options(*f.common, *bar, model);
+    options.closed_form = !f.search;
+    cells = sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model, options);
   }
+  const bool closed_form = closed_form_cells(options);
   write_sweep_outputs(paths, cells_table(cells, g.a2, g.a3, model.output_units()),
-                      cells_summary(config, model, f, g.r2, g.r3, cells), model);
+                      cells_summary(config, model, f, g.r2, g.r3, cells, closed_form), model);
 }
 
 }  // namespace
@@ -104,14 +110,21 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
 void add_sweep_accelerations_command(CLI::App& sweep) {
   CLI::App* sub = sweep.add_subcommand(
       "accelerations",
-      "f, v_bar and the motion case (a priori and simulated) over a grid of the three-phase "
+      "f, v_bar and the motion case (a priori and of the steady period) over a grid of the three-phase "
       "profile's (y2'', y3'') at the config's period and stroke (Figs. 10, 11). CSV "
       "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status; rows a2-major; a cell "
-      "that cannot be computed has status failed (reason in the summary). --out FILE.npy "
+      "that cannot be computed has status failed (reason in the summary). Each cell is the "
+      "closed-form steady state (jump accelerations, Coulomb law; summary method \"closed "
+      "form\"), else the fixed-point search. --out FILE.npy "
       "writes the same columns as a NumPy structured array (numpy.load).");
   auto f = std::make_shared<AccelerationFlags>();
   f->common = add_sweep_flags(*sub, {"a2", "a3"});
   add_acceleration_range_flags(*sub, f->a2_range, f->a3_range);
+  sub->add_flag("--search", f->search,
+                "compute every cell by the fixed-point search of the exact solver instead of "
+                "the closed-form steady state (docs/three-phase-steady-state.md; used with jump "
+                "accelerations under a Coulomb law), e.g. to check it")
+      ->group("Sweep");
   sub->callback([f] { run_sweep_accelerations(*f); });
 }
 

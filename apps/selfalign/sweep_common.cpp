@@ -161,8 +161,10 @@ void write_sweep_outputs(const SweepPaths& paths, const CellTable& table, nlohma
   summary["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
   summary["format"] = npy ? "npy" : "csv";
   summary["law"] = law_json(model.law, model.output_units(), model.scales.mu());
-  // Every cell's solver: the exact ones, or the slip integrator under a Stribeck/viscous law.
-  summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
+  // Every cell's solver, unless the sweep said (accelerations: "closed form"): the exact ones,
+  // or the slip integrator under a Stribeck/viscous law.
+  if (!summary.contains("method"))
+    summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   const std::string summary_text = summary.dump(2) + "\n";
   AtomicFileSet files;
   if (paths.csv) files.add(*paths.csv, csv, "out");

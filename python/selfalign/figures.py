@@ -24,6 +24,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from . import _selfalign as sa  # noqa: E402
+from . import claims  # noqa: E402
 from .claims import CASE_SETTINGS, optimum_shape  # noqa: E402  (shared with the claims)
 
 Progress = Optional[Callable[[int, int], None]]
@@ -257,8 +258,7 @@ def fig9(out_dir: str) -> Figure:
                   "stick (Table 1, Fig. 9).", _save(fig, out_dir, "fig09"), [data])
 
 
-FIG10 = (0.072, 0.021, ("log", 1.0, 1275.0, 200))  # Δt, Δy, (grid kind, lo, hi, n)
-FIG11 = (1.0, 0.084, ("linear", 3.0 / 200, 3.0, 200))
+FIG10, FIG11 = claims.FIG10, claims.FIG11  # Δt, Δy, (grid kind, lo, hi, n)
 
 
 def _grid(spec: tuple) -> np.ndarray:

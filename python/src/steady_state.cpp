@@ -7,6 +7,7 @@
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/motion_case.hpp"
+#include "selfalign/analysis/three_phase_steady_state.hpp"
 
 namespace selfalign::python {
 
@@ -33,7 +34,8 @@ the case arrays of the sweeps hold these ints (StickSlipCase(a[i, j]) names one)
 
   m.def("describe", &describe, py::arg("case"),
         "Table 1's description of a case, e.g. \"stick-slip x' >= 0\".");
-  m.def("predict_case", &predict_case, py::arg("parameters"), R"doc(
+  m.def("predict_case", py::overload_cast<const ThreePhaseParameters&>(&predict_case),
+        py::arg("parameters"), R"doc(
 A priori case of the three-phase profile (the rules of the paper's flow chart, Fig. 8,
 derived in docs/motion-cases.md). With a = a2, b = a3 and T1 = t1, T2 = t2 - t1, T3 = t3 - t2:
   not physical -> 0;  a <= 1, b <= 1 -> 5;  a > 1, b <= 1 -> 1;  a <= 1, b > 1 -> 2;
@@ -165,6 +167,40 @@ law: the friction law (FrictionLaw: static >= kinetic, optionally direction-depe
 kinetic coefficients); the paper's static = kinetic = 1 by default.
 Exact solver where the table acceleration is piecewise polynomial (constant or finite jerk),
 time-stepping otherwise. Raises InvalidParameter on bad options. Runs without the GIL.)doc");
+
+  using T = ThreePhaseSteadyState;
+  py::class_<T> tcls(m, "ThreePhaseSteadyState",
+                     "The closed-form steady state of one three-phase profile "
+                     "(three_phase_steady_state).");
+  tcls.def_readonly("motion_case", &T::motion_case,
+                    "Table 1 case of the steady period (0: the profile does not exist)")
+      .def_readonly("x_dot_0s", &T::x_dot_0s, "steady-state x' at t0 [-]; NaN for case 0")
+      .def_readonly("displacement", &T::displacement,
+                    "x(t0 + Δt) - x(t0) over a steady period [-]; NaN for case 0")
+      .def_readonly("v_bar", &T::v_bar, "eq. (10) [-]; NaN for case 0")
+      .def_readonly("f", &T::f, "eq. (11) [-]; +inf for v̄ = 0, NaN for case 0")
+      .def_readonly("slope", &T::slope,
+                    "dP/dv at the fixed point: 0 where it sticks, c4 of eq. (32) in slip-slip; "
+                    "NaN for case 0")
+      .def("__repr__", [](const T& s) {
+        return Repr("ThreePhaseSteadyState")
+            .raw("motion_case", enum_name(s.motion_case))("x_dot_0s", s.x_dot_0s)(
+                "v_bar", s.v_bar)("f", s.f)("slope", s.slope)
+            .str();
+      });
+  def_record(tcls, field("motion_case", &T::motion_case), field("x_dot_0s", &T::x_dot_0s),
+             field("displacement", &T::displacement), field("v_bar", &T::v_bar),
+             field("f", &T::f), field("slope", &T::slope));
+  m.def("three_phase_steady_state",
+        py::overload_cast<const ThreePhaseParameters&, const FrictionLaw&>(
+            &three_phase_steady_state),
+        py::arg("parameters"), py::arg("law") = FrictionLaw{}, R"doc(
+The steady state of the three-phase profile (jump accelerations) in closed form, every case
+of Table 1 (docs/three-phase-steady-state.md; eqs. (12)-(24) for case 1): no period is
+simulated. law: a Coulomb FrictionLaw (static >= kinetic, direction-dependent kinetic
+coefficients allowed); the paper's by default. Returns a ThreePhaseSteadyState; a profile
+that does not exist is case 0 with NaN numbers. Raises InvalidParameter on bad parameters or
+a velocity-dependent law (named "law").)doc");
 
   m.attr("OBJECTIVE_SCALE") = kObjectiveScale;
   m.def(

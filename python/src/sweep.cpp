@@ -147,10 +147,11 @@ void bind_sweep(py::module_& m) {
       "sweep_accelerations",
       [](double period, double stroke, const py::object& a2_in, const py::object& a3_in,
          const SteadyStateOptions& steady, int threads, const py::object& progress_in,
-         const FrictionLaw& law, double jerk) {
+         const FrictionLaw& law, double jerk, bool closed_form) {
         const std::vector<double> a2 = to_vector(a2_in, "a2"), a3 = to_vector(a3_in, "a3");
         const PythonProgress progress(progress_in);
-        const SweepOptions options = sweep_options(threads, progress, steady, law, jerk);
+        SweepOptions options = sweep_options(threads, progress, steady, law, jerk);
+        options.closed_form = closed_form;
         const std::vector<AccelerationCell> cells =
             progress.run([&] { return sweep_accelerations(period, stroke, a2, a3, options); });
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(a2.size()),
@@ -176,19 +177,22 @@ void bind_sweep(py::module_& m) {
       py::arg("period"), py::arg("stroke"), py::arg("a2"), py::arg("a3"), py::kw_only(),
       py::arg("steady") = SteadyStateOptions{}, py::arg("threads") = 0,
       py::arg("progress") = py::none(), py::arg("law") = FrictionLaw{},
-      py::arg("jerk") = std::numeric_limits<double>::infinity(),
+      py::arg("jerk") = std::numeric_limits<double>::infinity(), py::arg("closed_form") = true,
       (std::string(R"doc(
 f and the motion case of the three-phase profile over the grid a2 × a3 at fixed (Δt, Δy)
 (Figs. 10, 11). Returns a dict of arrays shaped (len(a2), len(a3)) (cell [i, j] is a2[i],
 a3[j]): 'predicted', 'observed' (int32 StickSlipCase values: a priori Fig. 8 rules and the
-simulated steady period), 'v_bar' (eq. 10), 'f' (eq. 11; +inf for v̄ = 0), 'x_dot_0s'
+steady period), 'v_bar' (eq. 10), 'f' (eq. 11; +inf for v̄ = 0), 'x_dot_0s'
 (float64, NaN for case 0), 'converged' (bool), 'failure' (str: '' for a computed cell, else
 why it could not be computed; its numbers are then NaN — one cell never aborts the sweep);
 plus the 1-D grids 'a2' and 'a3'.
 law: every cell's friction law (FrictionLaw; the paper's by default). jerk: the jerk
 limit of every cell's profile [-], > 0 (JerkLimitedThreePhaseProfile; a cell without one is
 case 0); inf (the default): the paper's jump accelerations. 'predicted' always applies the
-Fig. 8 rules of the jump profile under the paper's law.
+Fig. 8 rules of the jump profile under the paper's law. closed_form: True (the default): a
+cell with jump accelerations under a Coulomb law is the closed-form steady state
+(three_phase_steady_state, a formula per cell); False: the fixed-point search (steady_state)
+on every cell, e.g. to check it. Finite jerk and velocity-dependent laws always search.
 Raises InvalidParameter on bad inputs (jerk <= 0 or NaN included).)doc") +
        kSweepArgs)
           .c_str());

@@ -99,6 +99,7 @@ EXAMPLES = {
         stepping_tol=1e-6, integrator=sa.IntegratorOptions(absolute_tolerance=1e-11),
         initial_velocity=0.1, initial_slope=-0.5),
     "SteadyState": lambda: sa.steady_state(PROFILE),
+    "ThreePhaseSteadyState": lambda: sa.three_phase_steady_state(sa.ThreePhaseParameters(1.0, 0.084, 2.3, 1.3)),
     "Monodromy": lambda: sa.make_monodromy([[1.0, 0.5], [0.0, 0.2]]),
     "FloquetOptions": lambda: sa.FloquetOptions(fd_step=1e-6,
                                                 steady=sa.SteadyStateOptions(max_periods=10)),

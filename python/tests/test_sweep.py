@@ -33,7 +33,7 @@ def test_sweep_accelerations_shapes_and_types():
 
 
 def test_sweep_cells_are_the_single_computations():
-    r = sa.sweep_accelerations(PERIOD, STROKE, A2, A3)
+    r = sa.sweep_accelerations(PERIOD, STROKE, A2, A3, closed_form=False)  # the search
     for i, a2 in enumerate(A2):
         for j, a3 in enumerate(A3):
             expected_case = fig8_case(PERIOD, STROKE, a2, a3)
@@ -185,3 +185,34 @@ def test_every_cell_reports_its_failure_status():
     assert all(m == "" for m in r["failure"].ravel())
     p = sa.sweep_period(sa.ThreePhaseFamily(2.3, 1.3), STROKE, [0.5, 1.0])
     assert list(p["failure"]) == ["", ""]
+
+
+def test_closed_form_cells_agree_with_the_search_and_the_single_closed_form():
+    """The default cells are the closed-form steady state (docs/three-phase-steady-state.md):
+    the same as three_phase_steady_state bit for bit, and within 1e-10 (relative to 1 + |v|,
+    the tolerance of tests/test_three_phase_steady_state.cpp) of the fixed-point search."""
+    for law in (sa.FrictionLaw(), sa.FrictionLaw(1.2, 1.0, 0.7)):
+        closed = sa.sweep_accelerations(PERIOD, STROKE, A2, A3, law=law)
+        search = sa.sweep_accelerations(PERIOD, STROKE, A2, A3, law=law, closed_form=False)
+        np.testing.assert_array_equal(closed["predicted"], search["predicted"])
+        np.testing.assert_array_equal(closed["observed"], search["observed"])
+        np.testing.assert_array_equal(closed["converged"], search["converged"])
+        for key in ("v_bar", "x_dot_0s"):
+            np.testing.assert_allclose(closed[key], search[key], rtol=0,
+                                       atol=1e-10 * (1 + np.nanmax(np.abs(search[key]))))
+        for i, a2 in enumerate(A2):
+            for j, a3 in enumerate(A3):
+                s = sa.three_phase_steady_state(sa.ThreePhaseParameters(PERIOD, STROKE, a2, a3),
+                                                law)
+                assert int(s.motion_case) == closed["observed"][i, j]
+                np.testing.assert_array_equal([s.v_bar, s.f, s.x_dot_0s],
+                                              [closed["v_bar"][i, j], closed["f"][i, j],
+                                               closed["x_dot_0s"][i, j]])
+
+
+def test_three_phase_steady_state_refuses_a_velocity_dependent_law():
+    law = sa.FrictionLaw(1.2, 1.0).with_stribeck(0.1)
+    with pytest.raises(sa.InvalidParameter, match="law"):
+        sa.three_phase_steady_state(sa.ThreePhaseParameters(1.0, 0.084, 2.0, 2.0), law)
+    s = sa.three_phase_steady_state(sa.ThreePhaseParameters(1.0, 0.084, 0.2, 0.2))
+    assert s.motion_case == sa.StickSlipCase.non_physical and np.isnan(s.v_bar)

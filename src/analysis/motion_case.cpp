@@ -17,7 +17,10 @@ std::string describe(StickSlipCase c) {
 }
 
 StickSlipCase predict_case(const ThreePhaseParameters& p) {
-  const ThreePhaseSolution r = solve_three_phase(p);  // validates p
+  return predict_case(p, solve_three_phase(p));  // validates p
+}
+
+StickSlipCase predict_case(const ThreePhaseParameters& p, const ThreePhaseSolution& r) {
   if (!r.physical) return StickSlipCase::non_physical;
   const double a = p.a2, b = p.a3;
   // Sticking needs |y''| <= 1 (Sect. 3.2); slipping starts from rest only where |y''| > 1.

@@ -1,5 +1,7 @@
 #include "selfalign/analysis/sweep.hpp"
 
+#include "selfalign/analysis/three_phase_steady_state.hpp"
+
 #include <tbb/info.h>
 
 #include <algorithm>
@@ -51,6 +53,10 @@ constexpr double kMaxCells = kMaxGridPoints;  // ~1 GB of results; hours of work
 
 }  // namespace
 
+bool closed_form_cells(const SweepOptions& o) noexcept {
+  return o.closed_form && std::isinf(o.jerk) && three_phase_closed_form_applies(o.law);
+}
+
 std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
                                                   const std::vector<double>& a2,
                                                   const std::vector<double>& a3,
@@ -64,11 +70,23 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
     throw InvalidParameter("cells", static_cast<double>(a2.size()) * static_cast<double>(a3.size()),
                            "len(a2) x len(a3) must be <= 1e7");
   std::vector<AccelerationCell> cells(a2.size() * a3.size());
+  const bool closed_form = closed_form_cells(o);
   detail::parallel_cells(cells.size(), o, [&](std::size_t k) {
     AccelerationCell& c = cells[k];
     c.a2 = a2[k / a3.size()];
     c.a3 = a3[k % a3.size()];
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
+    if (closed_form) {  // a formula per cell (docs/three-phase-steady-state.md)
+      const ThreePhaseSolution r = solve_three_phase(p);
+      const ThreePhaseSteadyState s = three_phase_steady_state(p, r, o.law);
+      c.predicted = predict_case(p, r);
+      c.observed = s.motion_case;
+      c.v_bar = s.v_bar;
+      c.f = s.f;
+      c.x_dot_0s = s.x_dot_0s;
+      c.converged = r.physical;
+      return;
+    }
     c.predicted = predict_case(p);
     const bool physical = std::isinf(o.jerk) ? c.predicted != StickSlipCase::non_physical
                                              : three_phase_is_physical(p, o.jerk);

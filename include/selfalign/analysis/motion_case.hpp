@@ -37,6 +37,8 @@ std::string describe(StickSlipCase c);
 ///     |x'(t3)| < T1 (it stops again before t1)  -> 3, otherwise -> 4.
 /// Throws InvalidParameter on misuse (non-positive or NaN parameters).
 StickSlipCase predict_case(const ThreePhaseParameters& p);
+/// The same from p's solved profile r = solve_three_phase(p) (a sweep solves it once per cell).
+StickSlipCase predict_case(const ThreePhaseParameters& p, const ThreePhaseSolution& r);
 
 /// What kinds of motion the pieces of a time window contain (feed it a steady-state period),
 /// from any stepper: arcs, the integrator's intervals, or time steps. A time step ending at

@@ -42,6 +42,11 @@ struct SweepOptions {
   /// sweep_accelerations: the jerk limit of every cell's three-phase profile [-], > 0; +inf:
   /// the paper's jump accelerations. A cell with no jerk-limited profile is case 0.
   double jerk = std::numeric_limits<double>::infinity();
+  /// sweep_accelerations: a cell with jump accelerations under a Coulomb law is the closed-form
+  /// steady state (three_phase_steady_state.hpp: a formula, no periods simulated); false: the
+  /// fixed-point search of steady_state() on every cell (`steady`'s options), e.g. to check it.
+  /// Other cells (finite jerk, velocity-dependent laws) always take the search.
+  bool closed_form = true;
 };
 
 /// The number of workers a study runs on for `requested` threads: all the cores available to
@@ -55,15 +60,20 @@ struct AccelerationCell {
   double a2 = 0, a3 = 0;                                   ///< y2'', y3'' [-]
   /// a priori (Fig. 8 rules: jump accelerations under the paper's law, whatever the options)
   StickSlipCase predicted = StickSlipCase::non_physical;
-  StickSlipCase observed = StickSlipCase::non_physical;   ///< a posteriori (steady period)
+  /// a posteriori: of the steady period (closed form or search, SweepOptions::closed_form)
+  StickSlipCase observed = StickSlipCase::non_physical;
   double v_bar = 0;    ///< eq. (10) [-]; NaN for case 0
   double f = 0;        ///< eq. (11) [-]; +inf for v̄ = 0, NaN for case 0
   double x_dot_0s = 0; ///< steady-state x' at t0 [-]; NaN for case 0
-  bool converged = false;
+  bool converged = false;  ///< the steady state was found (always, by the closed form)
   /// Empty when the cell was computed; otherwise why it could not be (its numbers are NaN).
   /// One failing cell never aborts the study.
   std::string failure;
 };
+
+/// True when sweep_accelerations computes its cells by the closed form under these options:
+/// options.closed_form, jump accelerations (jerk +inf) and a Coulomb law.
+bool closed_form_cells(const SweepOptions& options) noexcept;
 
 /// f and case over the grid a2 × a3 at fixed (Δt, Δy); row-major: cell (i, j) is at
 /// index i * a3.size() + j with a2[i], a3[j]. Throws InvalidParameter on bad inputs.

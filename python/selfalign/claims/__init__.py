@@ -51,7 +51,7 @@ from .positioning import (_fig16_accuracies, _fig17_surfaces, accumulation_zero_
                           fig16_settings, fig17_design_rules, positioning_error_definition,
                           stick_condition, stick_position_formula)
 from .settings import (ACCUMULATION_ENTRIES, ACCUMULATION_GRID, ACCUMULATION_MAX_PERIODS,
-                       ACCUMULATION_RESTS, CASE_SETTINGS, FD_TOL, FLOQUET_PLANES,
+                       ACCUMULATION_RESTS, CASE_SETTINGS, FD_TOL, FIG10, FIG11, FLOQUET_PLANES,
                        INITIAL_VELOCITIES, NEAR_ZERO_BAND, ROUND_OFF, SALTATION_TOL, SECT72,
                        SLIP_SLIP_SETTINGS)
 from .stability import (FloquetGrid, case1_multipliers, cases23_multipliers,
@@ -64,7 +64,7 @@ from .trends import (OptimumShape, _fourier_optimum_result, fig4_trend, fig5_tre
 __all__ = [
     "sa", "Claim", "ALL", "compute_all",
     # settings
-    "ROUND_OFF", "SALTATION_TOL", "FD_TOL", "NEAR_ZERO_BAND", "CASE_SETTINGS", "SECT72",
+    "ROUND_OFF", "SALTATION_TOL", "FD_TOL", "NEAR_ZERO_BAND", "CASE_SETTINGS", "FIG10", "FIG11", "SECT72",
     "FLOQUET_PLANES", "INITIAL_VELOCITIES", "SLIP_SLIP_SETTINGS", "ACCUMULATION_GRID",
     "ACCUMULATION_ENTRIES", "ACCUMULATION_RESTS", "ACCUMULATION_MAX_PERIODS", "ROUNDED_ONTO",
     # closed forms
@@ -119,7 +119,8 @@ def compute_all(raw: Optional[dict] = None, timings: Optional[dict] = None,
 
     fig6 = (raw.get("6") or {}).get("result")
     surfaces = raw.get("17")
-    sweeps = [raw[k] for k in ("10", "11") if raw.get(k) is not None]
+    sweeps = [(setting[0], setting[1], raw[k])
+              for k, setting in (("10", FIG10), ("11", FIG11)) if raw.get(k) is not None]
     inputs: dict[Callable, Callable[[], tuple]] = {
         fig4_trend: lambda: (raw.get("4"),),
         fig5_trend: lambda: (raw.get("5"),),

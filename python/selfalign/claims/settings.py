@@ -51,3 +51,6 @@ ACCUMULATION_GRID = dict(periods=(0.8, 1.0, 1.05, 1.3), strokes=(0.05, 0.084),
 ACCUMULATION_ENTRIES = 40  # steady entries per setting (Sect. 7.1), all phases of a period
 ACCUMULATION_RESTS = 16  # starts at rest at x_1 in [x_mu, x_stick,min) (Sect. 7.3's x_1)
 ACCUMULATION_MAX_PERIODS = 400
+# The (y2'', y3'') planes of Figs. 10 and 11: Δt, Δy, (grid kind, lo, hi, n).
+FIG10 = (0.072, 0.021, ("log", 1.0, 1275.0, 200))
+FIG11 = (1.0, 0.084, ("linear", 3.0 / 200, 3.0, 200))

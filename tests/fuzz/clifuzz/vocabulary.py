@@ -46,7 +46,7 @@ FLAGS = {  # as `selfalign SUBCOMMAND --help` lists them (fuzz_cli.py checks it 
     "accumulation": [f for f in _SECT7 if f not in LAW] + ["x-mu", "out", "summary", "json", "x1",
                                                           "from", "to", "n"],
     "sweep accelerations": [f for f in _THREE_PHASE if f not in ("a2", "a3")] + _SWEEP
-    + ["a2-range", "a3-range"],
+    + ["a2-range", "a3-range", "search"],
     "sweep period": [f for f in _THREE_PHASE if f != "period"] + _SWEEP + ["range", "family"],
     "sweep stroke": [f for f in _THREE_PHASE if f != "stroke"] + _SWEEP + ["range", "family"],
     "sweep positioning": [f for f in _THREE_PHASE if f not in ("a2", "a3")] + _SWEEP
@@ -99,7 +99,7 @@ for _f in ["out", "summary", "profile-csv", "runs-csv"]:
     KIND[_f] = "out"
 for _f in ["a2-range", "a3-range", "range"]:
     KIND[_f] = "range"
-for _f in ["json", "quiet", "log", "robust", "worst-case"]:
+for _f in ["json", "quiet", "log", "robust", "worst-case", "search"]:
     KIND[_f] = "bool"
 
 
