@@ -3,7 +3,13 @@
 // Issue 22 item 3: the same grids with closed-form cells (three_phase_steady_state): 10^6
 // cells <= 100 ms in-process on 2 threads, the cost per cell flat (+-10 %) from 10^4 to 10^6.
 // Args: {n, threads, closed_form}. Counters: ns of thread time per cell.
+// sweep_grid returns the vector of AccelerationCell (88 bytes a cell, first touched by the
+// calling thread); sweep_grid_columns hands each cell to a sink writing five columns allocated
+// uninitialised, as the Python binding and the CLI's table do (first touched by the workers).
 #include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <memory>
 
 #include "selfalign/analysis/sweep.hpp"
 
@@ -37,6 +43,38 @@ BENCHMARK(sweep_grid)
     ->Args({316, 2, 1})
     ->Args({1000, 2, 1})
     ->Args({1000, 1, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void sweep_grid_columns(benchmark::State& st) {
+  const int n = static_cast<int>(st.range(0));
+  const std::vector<double> g = linear_grid(3.0 / n, 3.0, n);
+  SweepOptions o;
+  o.threads = static_cast<int>(st.range(1));
+  const std::size_t cells = static_cast<std::size_t>(n) * n;
+  for (auto _ : st) {
+    std::unique_ptr<double[]> v_bar(new double[cells]), f(new double[cells]),
+        x0(new double[cells]);
+    std::unique_ptr<std::int32_t[]> prior(new std::int32_t[cells]),
+        observed(new std::int32_t[cells]);
+    sweep_accelerations(1.0, 0.084, g, g, o, [&](std::size_t k, const AccelerationCell& c) {
+      v_bar[k] = c.v_bar, f[k] = c.f, x0[k] = c.x_dot_0s;
+      prior[k] = static_cast<std::int32_t>(c.predicted);
+      observed[k] = static_cast<std::int32_t>(c.observed);
+    });
+    benchmark::DoNotOptimize(v_bar.get());
+  }
+  st.counters["cells"] = static_cast<double>(cells);
+  st.counters["thread_ns_per_cell"] =
+      benchmark::Counter(static_cast<double>(cells) / 1e9 / static_cast<double>(o.threads),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(sweep_grid_columns)
+    ->ArgNames({"n", "threads"})
+    ->Args({100, 2})
+    ->Args({316, 2})
+    ->Args({1000, 2})
+    ->Args({1000, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 }  // namespace bench_sweep

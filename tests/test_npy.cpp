@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/npy.hpp"
@@ -53,6 +55,42 @@ TEST(Npy, BadTablesAreRefusedByName) {
                InvalidParameter);
   // an empty table (no rows) is a valid file
   EXPECT_NO_THROW(npy_file({{"a", std::vector<double>{}}}));
+}
+
+// NpyRecords, filled row by row from several threads (as a sweep's workers fill it), is the
+// same file as npy_file of the same columns; its readers give back what was set.
+TEST(Npy, RecordsFilledInPlaceAreTheColumnsFile) {
+  constexpr std::size_t rows = 5000;
+  std::vector<double> x(rows);
+  std::vector<std::int64_t> n(rows);
+  std::vector<std::string> status(rows);
+  for (std::size_t r = 0; r < rows; ++r) {
+    x[r] = 0.1 * static_cast<double>(r) - 7.0;
+    n[r] = static_cast<std::int64_t>(r % 7) - 3;
+    status[r] = r % 11 == 0 ? "failed" : "ok";
+  }
+  NpyRecords t({{"x", NpyKind::float64}, {"n", NpyKind::int64}, {"status", NpyKind::bytes, 6}},
+               rows);
+  std::vector<std::thread> workers;
+  for (std::size_t w = 0; w < 4; ++w)
+    workers.emplace_back([&, w] {
+      for (std::size_t r = w; r < rows; r += 4) {
+        t.set(r, 0, x[r]);
+        t.set(r, 1, n[r]);
+        t.set(r, 2, std::string_view(status[r]));
+      }
+    });
+  for (std::thread& w : workers) w.join();
+  EXPECT_EQ(std::string(t.file()),
+            npy_file({{"x", x}, {"n", n}, {"status", status}}));  // widest word: "failed"
+  EXPECT_EQ(t.number(17, 0), x[17]);
+  EXPECT_EQ(t.integer(17, 1), n[17]);
+  EXPECT_EQ(t.word(22, 2), "failed");
+  EXPECT_EQ(t.word(23, 2), "ok");
+  EXPECT_THROW(t.set(0, 2, std::string_view("toolong")), InvalidParameter);
+  EXPECT_THROW(t.set(0, 2, std::string_view("a\tb")), InvalidParameter);
+  EXPECT_THROW(NpyRecords({{"w", NpyKind::bytes, 0}}, 1), InvalidParameter);
+  EXPECT_THROW(NpyRecords({}, 1), InvalidParameter);
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 // from the steady period) over a (y2'', y3'') grid of the three-phase profile at the config's
 // Δt and Δy (Figs. 10, 11; --log for the Fig. 11 style plane).
 
+#include <algorithm>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -21,45 +23,46 @@ struct AccelerationFlags {
 };
 
 // Columns "a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status"; a2, a3 as on the grid
-// (run units), row-major with a2 outer, as the library orders the cells.
-CellTable cells_table(const std::vector<AccelerationCell>& cells, const std::vector<double>& a2,
-                      const std::vector<double>& a3, const OutputUnits& u) {
-  const std::size_t n = cells.size();
-  std::vector<double> ga2(n), ga3(n), v_bar(n), f(n), x0(n);
-  std::vector<std::int64_t> prior(n), observed(n), converged(n);
-  std::vector<std::string> status(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const AccelerationCell& c = cells[k];
-    ga2[k] = a2[k / a3.size()], ga3[k] = a3[k % a3.size()];
-    prior[k] = static_cast<int>(c.predicted), observed[k] = static_cast<int>(c.observed);
-    v_bar[k] = u.velocity(c.v_bar), f[k] = c.f, x0[k] = u.velocity(c.x_dot_0s);
-    converged[k] = c.converged ? 1 : 0;
-    status[k] = cell_status(c.failure);
-  }
-  CellTable t;
-  t.numbers("a2", std::move(ga2));
-  t.numbers("a3", std::move(ga3));
-  t.integers("case_a_priori", std::move(prior));
-  t.integers("case", std::move(observed));
-  t.numbers("v_bar", std::move(v_bar));
-  t.numbers("f", std::move(f));
-  t.numbers("x_dot_0s", std::move(x0));
-  t.integers("converged", std::move(converged));
-  t.words("status", std::move(status));
-  return t;
+// (run units), row-major with a2 outer, as the library orders the cells. The status is "ok" or
+// "failed" (6 bytes in a .npy file).
+enum Column : std::size_t { a2_col, a3_col, prior_col, case_col, v_bar_col, f_col, x0_col,
+                            converged_col, status_col };
+
+std::vector<NpyField> cell_fields() {
+  using K = NpyKind;
+  return {{"a2", K::float64},    {"a3", K::float64}, {"case_a_priori", K::int64},
+          {"case", K::int64},    {"v_bar", K::float64}, {"f", K::float64},
+          {"x_dot_0s", K::float64}, {"converged", K::int64}, {"status", K::bytes, 6}};
+}
+
+// Cell k's row of the table, written by the worker that computed it.
+void set_row(NpyRecords& t, std::size_t k, const AccelerationCell& c, double a2, double a3,
+             const OutputUnits& u) {
+  t.set(k, a2_col, a2);
+  t.set(k, a3_col, a3);
+  t.set(k, prior_col, std::int64_t{static_cast<int>(c.predicted)});
+  t.set(k, case_col, std::int64_t{static_cast<int>(c.observed)});
+  t.set(k, v_bar_col, u.velocity(c.v_bar));
+  t.set(k, f_col, c.f);
+  t.set(k, x0_col, u.velocity(c.x_dot_0s));
+  t.set(k, converged_col, std::int64_t{c.converged ? 1 : 0});
+  t.set(k, status_col, std::string_view(cell_status(c.failure)));
 }
 
 json cells_summary(const SimulateConfig& config, const ProfileModel& model,
                    const AccelerationFlags& f, const GridRange& r2, const GridRange& r3,
-                   const std::vector<AccelerationCell>& cells, bool closed_form) {
+                   const NpyRecords& table, const std::vector<AccelerationCell>& failed,
+                   bool closed_form) {
   const SimulateConfig given = resolve_simulate_config(config);  // Δt, Δy as given (run units)
   std::vector<StickSlipCase> observed, predicted;
   int disagreements = 0, not_converged = 0;
-  for (const AccelerationCell& c : cells) {
-    observed.push_back(c.observed);
-    predicted.push_back(c.predicted);
-    if (c.observed != c.predicted) ++disagreements;
-    if (c.predicted != StickSlipCase::non_physical && !c.converged) ++not_converged;
+  for (std::size_t k = 0; k < table.rows(); ++k) {
+    const auto o = static_cast<StickSlipCase>(table.integer(k, case_col));
+    const auto p = static_cast<StickSlipCase>(table.integer(k, prior_col));
+    observed.push_back(o);
+    predicted.push_back(p);
+    if (o != p) ++disagreements;
+    if (p != StickSlipCase::non_physical && table.integer(k, converged_col) == 0) ++not_converged;
   }
   json j;
   j["sweep"] = "accelerations";
@@ -71,14 +74,14 @@ json cells_summary(const SimulateConfig& config, const ProfileModel& model,
                {"a3", grid_json(r3)},
                {"spacing", f.common->log ? "log" : "linear"},
                {"order", "row-major, a2 outer"}};
-  j["cells"] = cells.size();
+  j["cells"] = table.rows();
   j["cases"] = case_counts(observed);
   j["cases_a_priori"] = case_counts(predicted);
   j["a_priori_disagreements"] = disagreements;
   j["not_converged"] = not_converged;
   // Each cell a formula (docs/three-phase-steady-state.md), or the fixed-point search.
   if (closed_form) j["method"] = "closed form";
-  j["failures"] = failures_json(cells, [&](const AccelerationCell& c) {
+  j["failures"] = failures_json(failed, [&](const AccelerationCell& c) {
     return json{{"a2", model.from_model_units(Dimension::acceleration, c.a2)},
                 {"a3", model.from_model_units(Dimension::acceleration, c.a3)}};
   });
@@ -92,17 +95,34 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
   const AccelerationGrid g = acceleration_grid(model, f.a2_range, f.a3_range, f.common->log);
 
   const ThreePhaseParameters& p = *model.three_phase;
-  std::vector<AccelerationCell> cells;
+  const OutputUnits units = model.output_units();
+  // The workers write each cell's row into the table in place (one buffer for CSV and .npy).
+  NpyRecords table(cell_fields(), g.a2.size() * g.a3.size());
+  std::vector<std::pair<std::size_t, AccelerationCell>> failed;  // rare: under a mutex
+  std::mutex failed_mutex;
   SweepOptions options;
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
     options = sweep_options(*f.common, *bar, model);
     options.closed_form = !f.search;
-    cells = sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model, options);
+    sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model, options,
+                        [&](std::size_t k, const AccelerationCell& c) {
+                          set_row(table, k, c, g.a2[k / g.a3.size()], g.a3[k % g.a3.size()],
+                                  units);
+                          if (c.failure.empty()) return;
+                          std::lock_guard lock(failed_mutex);
+                          failed.emplace_back(k, c);
+                        });
+    options.progress = nullptr;
   }
-  const bool closed_form = closed_form_cells(options);
-  write_sweep_outputs(paths, cells_table(cells, g.a2, g.a3, model.output_units()),
-                      cells_summary(config, model, f, g.r2, g.r3, cells, closed_form), model);
+  std::sort(failed.begin(), failed.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });  // cell order
+  std::vector<AccelerationCell> failed_cells;
+  for (auto& [k, c] : failed) failed_cells.push_back(std::move(c));
+  write_sweep_outputs(paths, table,
+                      cells_summary(config, model, f, g.r2, g.r3, table, failed_cells,
+                                    closed_form_cells(options)),
+                      model);
 }
 
 }  // namespace

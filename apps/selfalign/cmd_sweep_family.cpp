@@ -110,8 +110,9 @@ void run_sweep_family(const FamilyFlags& f) {
     return json{{"period", model.from_model_units(D::time, pt.period)},
                 {"stroke", model.from_model_units(D::length, pt.stroke)}};
   });
-  write_sweep_outputs(paths, points_table(points, values, fixed, f.swept, model.output_units()),
-                      j, model);
+  write_sweep_outputs(
+      paths, points_table(points, values, fixed, f.swept, model.output_units()).records(), j,
+      model);
 }
 
 }  // namespace

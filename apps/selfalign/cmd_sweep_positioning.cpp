@@ -138,7 +138,7 @@ void run_sweep_positioning(const PositioningFlags& f) {
                   : positioning_surfaces(p.period, p.stroke, width, c_mu, g.a2_model, g.a3_model,
                                          options, sweep);
   }
-  write_sweep_outputs(paths, cells_table(cells, g.a2, g.a3, model.output_units()),
+  write_sweep_outputs(paths, cells_table(cells, g.a2, g.a3, model.output_units()).records(),
                       cells_summary(config, model, f, g.r2, g.r3, cells, field.get()), model);
 }
 

@@ -132,32 +132,31 @@ void CellTable::words(std::string name, std::vector<std::string> values) {
   columns_.push_back({std::move(name), std::move(values)});
 }
 
-std::string CellTable::csv() const {
+std::string csv_of(const NpyRecords& table) {
+  const std::vector<NpyField>& fields = table.fields();
   std::string out;
-  for (const NpyColumn& c : columns_) out += (out.empty() ? "" : ",") + c.name;
+  for (const NpyField& f : fields) out += (out.empty() ? "" : ",") + f.name;
   out += '\n';
-  const std::size_t rows =
-      columns_.empty() ? 0 : std::visit([](const auto& v) { return v.size(); }, columns_[0].values);
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (std::size_t k = 0; k < columns_.size(); ++k) {
+  for (std::size_t r = 0; r < table.rows(); ++r) {
+    for (std::size_t k = 0; k < fields.size(); ++k) {
       if (k > 0) out += ',';
-      std::visit(Overloaded{[&](const std::vector<double>& v) { out += csv_number(v[r]); },
-                            [&](const std::vector<std::int64_t>& v) { out += std::to_string(v[r]); },
-                            [&](const std::vector<std::string>& v) { out += v[r]; }},
-                 columns_[k].values);
+      switch (fields[k].kind) {
+        case NpyKind::float64: out += csv_number(table.number(r, k)); break;
+        case NpyKind::int64: out += std::to_string(table.integer(r, k)); break;
+        case NpyKind::bytes: out += table.word(r, k); break;
+      }
     }
     out += '\n';
   }
   return out;
 }
 
-std::string CellTable::npy() const { return npy_file(columns_); }
-
-void write_sweep_outputs(const SweepPaths& paths, const CellTable& table, nlohmann::json summary,
+void write_sweep_outputs(const SweepPaths& paths, const NpyRecords& table, nlohmann::json summary,
                          const ProfileModel& model) {
   const bool npy = paths.csv && paths.csv->size() > 4 &&
                    paths.csv->compare(paths.csv->size() - 4, 4, ".npy") == 0;
-  const std::string csv = npy ? table.npy() : table.csv();
+  const std::string csv = npy ? std::string() : csv_of(table);
+  const std::string_view content = npy ? table.file() : std::string_view(csv);
   summary["csv_file"] = paths.csv ? nlohmann::json(*paths.csv) : nlohmann::json(nullptr);
   summary["format"] = npy ? "npy" : "csv";
   summary["law"] = law_json(model.law, model.output_units(), model.scales.mu());
@@ -167,10 +166,10 @@ void write_sweep_outputs(const SweepPaths& paths, const CellTable& table, nlohma
     summary["method"] = model.law.velocity_dependent() ? "integrator" : "exact";
   const std::string summary_text = summary.dump(2) + "\n";
   AtomicFileSet files;
-  if (paths.csv) files.add(*paths.csv, csv, "out");
+  if (paths.csv) files.add(*paths.csv, content, "out");
   if (paths.summary) files.add(*paths.summary, summary_text, "summary");
   files.commit();
-  if (!paths.csv) std::cout << csv << std::flush;
+  if (!paths.csv) std::cout << content << std::flush;
   if (paths.summary_to_stdout) std::cout << summary_text << std::flush;
 }
 

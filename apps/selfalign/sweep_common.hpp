@@ -121,26 +121,30 @@ struct SweepPaths {
 /// Resolves and checks the paths (before any work is done). Throws InvalidParameter.
 SweepPaths resolve_sweep_paths(const SimulateConfig& config);
 
-/// A sweep's cells as named columns, one row per cell: written as CSV (header, then rows; to
-/// standard output without --out) or, for an --out path ending in ".npy", as a NumPy structured
-/// array with the same names and values (io/npy.hpp: numbers float64 at full precision, flags
-/// and counts int64, the status as bytes), readable by numpy.load without selfalign.
+/// A sweep's cells as named columns, built column by column (the smaller sweeps); records()
+/// is the table every sweep writes.
 class CellTable {
  public:
   void numbers(std::string name, std::vector<double> values);
   void integers(std::string name, std::vector<std::int64_t> values);
   void words(std::string name, std::vector<std::string> values);
-  std::string csv() const;  ///< numbers as csv_number writes them
-  std::string npy() const;
+  NpyRecords records() const { return npy_records(columns_); }
 
  private:
   std::vector<NpyColumn> columns_;
 };
 
-/// Writes the table (CSV, or .npy for an --out path ending in ".npy") and the summary, with
-/// "csv_file" (the table's path) and "format" ("csv" or "npy") added; files are committed
-/// together (AtomicFileSet), then standard output is written.
-void write_sweep_outputs(const SweepPaths& paths, const CellTable& table, nlohmann::json summary,
+/// The table as CSV: the header (field names), then one line per row; numbers as csv_number
+/// writes them, integers in decimal, words without their padding.
+std::string csv_of(const NpyRecords& table);
+
+/// Writes a sweep's table, one row per cell, and the summary: as CSV (csv_of; to standard
+/// output without --out) or, for an --out path ending in ".npy", as the NumPy structured array
+/// itself (io/npy.hpp: numbers float64 at full precision, flags and counts int64, the status
+/// as bytes), readable by numpy.load without selfalign. The summary gains "csv_file" (the
+/// table's path) and "format" ("csv" or "npy"); files are committed together (AtomicFileSet),
+/// then standard output is written.
+void write_sweep_outputs(const SweepPaths& paths, const NpyRecords& table, nlohmann::json summary,
                          const ProfileModel& model);
 
 /// The sweep subcommands, added under `selfalign sweep` (cmd_sweep.cpp).

@@ -67,6 +67,19 @@ py::array failure_array(const std::vector<Cell>& cells, const std::vector<py::ss
   return numpy.attr("array")(messages, py::arg("dtype") = "object").attr("reshape")(dims);
 }
 
+/// The failure array of a study whose cells report failures sparsely: '' everywhere (an object
+/// array of `shape`) but at the flat indices listed, which hold their messages.
+inline py::array sparse_failure_array(const std::vector<std::pair<std::size_t, std::string>>& failures,
+                                      const std::vector<py::ssize_t>& shape) {
+  py::object numpy = py::module_::import("numpy");
+  py::tuple dims(shape.size());
+  for (std::size_t i = 0; i < shape.size(); ++i) dims[i] = shape[i];
+  py::array a = numpy.attr("full")(dims, py::str(""), py::arg("dtype") = "object");
+  py::object flat = a.attr("reshape")(-1);  // a view
+  for (const auto& [k, message] : failures) flat[py::int_(k)] = py::str(message);
+  return a;
+}
+
 /// Is x a Python int or float (or a subclass, e.g. numpy.float64)?
 inline bool is_scalar(const py::handle& x) {
   return py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x);

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <mutex>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
@@ -152,26 +153,37 @@ void bind_sweep(py::module_& m) {
         const PythonProgress progress(progress_in);
         SweepOptions options = sweep_options(threads, progress, steady, law, jerk);
         options.closed_form = closed_form;
-        const std::vector<AccelerationCell> cells =
-            progress.run([&] { return sweep_accelerations(period, stroke, a2, a3, options); });
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(a2.size()),
                                              static_cast<py::ssize_t>(a3.size())};
+        if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) > kMaxGridPoints)
+          throw InvalidParameter("cells", static_cast<double>(a2.size()) * a3.size(),
+                                 "len(a2) x len(a3) must be <= 1e7");
+        // The workers write each cell straight into the arrays (row-major: k = i * len(a3) + j).
         py::array_t<std::int32_t> predicted(shape), observed(shape);
         py::array_t<double> v_bar(shape), f(shape), x_dot_0s(shape);
         py::array_t<bool> converged(shape);
-        for (std::size_t k = 0; k < cells.size(); ++k) {  // row-major: k = i * len(a3) + j
-          predicted.mutable_data()[k] = static_cast<std::int32_t>(cells[k].predicted);
-          observed.mutable_data()[k] = static_cast<std::int32_t>(cells[k].observed);
-          v_bar.mutable_data()[k] = cells[k].v_bar;
-          f.mutable_data()[k] = cells[k].f;
-          x_dot_0s.mutable_data()[k] = cells[k].x_dot_0s;
-          converged.mutable_data()[k] = cells[k].converged;
-        }
+        std::int32_t *pp = predicted.mutable_data(), *po = observed.mutable_data();
+        double *pv = v_bar.mutable_data(), *pf = f.mutable_data(), *px = x_dot_0s.mutable_data();
+        bool* pc = converged.mutable_data();
+        std::vector<std::pair<std::size_t, std::string>> failures;  // rare: under a mutex
+        std::mutex failures_mutex;
+        progress.run([&] {
+          sweep_accelerations(period, stroke, a2, a3, options,
+                              [&](std::size_t k, const AccelerationCell& c) {
+                                pp[k] = static_cast<std::int32_t>(c.predicted);
+                                po[k] = static_cast<std::int32_t>(c.observed);
+                                pv[k] = c.v_bar, pf[k] = c.f, px[k] = c.x_dot_0s;
+                                pc[k] = c.converged;
+                                if (c.failure.empty()) return;
+                                std::lock_guard lock(failures_mutex);
+                                failures.emplace_back(k, c.failure);
+                              });
+        });
         py::dict d;
         d["a2"] = to_array(std::vector(a2)), d["a3"] = to_array(std::vector(a3));
         d["predicted"] = predicted, d["observed"] = observed, d["v_bar"] = v_bar, d["f"] = f;
         d["x_dot_0s"] = x_dot_0s, d["converged"] = converged;
-        d["failure"] = failure_array(cells, shape);
+        d["failure"] = sparse_failure_array(failures, shape);
         return d;
       },
       py::arg("period"), py::arg("stroke"), py::arg("a2"), py::arg("a3"), py::kw_only(),

@@ -57,10 +57,9 @@ bool closed_form_cells(const SweepOptions& o) noexcept {
   return o.closed_form && std::isinf(o.jerk) && three_phase_closed_form_applies(o.law);
 }
 
-std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
-                                                  const std::vector<double>& a2,
-                                                  const std::vector<double>& a3,
-                                                  const SweepOptions& o) {
+void sweep_accelerations(double period, double stroke, const std::vector<double>& a2,
+                         const std::vector<double>& a3, const SweepOptions& o,
+                         const AccelerationSink& sink) {
   require_positive("period", period);
   require_positive("stroke", stroke);
   for (double v : a2) require_positive("a2", v);
@@ -69,12 +68,15 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
   if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) > kMaxCells)
     throw InvalidParameter("cells", static_cast<double>(a2.size()) * static_cast<double>(a3.size()),
                            "len(a2) x len(a3) must be <= 1e7");
-  std::vector<AccelerationCell> cells(a2.size() * a3.size());
   const bool closed_form = closed_form_cells(o);
-  detail::parallel_cells(cells.size(), o, [&](std::size_t k) {
-    AccelerationCell& c = cells[k];
+  auto cell_at = [&](std::size_t k) {
+    AccelerationCell c;
     c.a2 = a2[k / a3.size()];
     c.a3 = a3[k % a3.size()];
+    return c;
+  };
+  detail::parallel_cells(a2.size() * a3.size(), o, [&](std::size_t k) {
+    AccelerationCell c = cell_at(k);
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
     if (closed_form) {  // a formula per cell (docs/three-phase-steady-state.md)
       const ThreePhaseSolution r = solve_three_phase(p);
@@ -85,7 +87,7 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
       c.f = s.f;
       c.x_dot_0s = s.x_dot_0s;
       c.converged = r.physical;
-      return;
+      return sink(k, c);
     }
     c.predicted = predict_case(p);
     const bool physical = std::isinf(o.jerk) ? c.predicted != StickSlipCase::non_physical
@@ -93,7 +95,7 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
     if (!physical) {
       c.observed = StickSlipCase::non_physical;
       c.v_bar = c.f = c.x_dot_0s = kNaN;
-      return;
+      return sink(k, c);
     }
     const SteadyState s = steady_state(*make_three_phase_profile(p, o.jerk), o.law, o.steady);
     c.observed = s.motion_case;
@@ -101,15 +103,26 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
     c.f = s.f;
     c.x_dot_0s = s.x_dot_0s;
     c.converged = s.converged;
+    sink(k, c);
   }, [&](std::size_t k, const std::string& why) {
-    AccelerationCell& c = cells[k];
-    c.a2 = a2[k / a3.size()];
-    c.a3 = a3[k % a3.size()];
+    AccelerationCell c = cell_at(k);
     c.observed = StickSlipCase::non_physical;
     c.v_bar = c.f = c.x_dot_0s = kNaN;
     c.converged = false;
     c.failure = why;
+    sink(k, c);
   });
+}
+
+std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
+                                                  const std::vector<double>& a2,
+                                                  const std::vector<double>& a3,
+                                                  const SweepOptions& o) {
+  std::vector<AccelerationCell> cells;
+  if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) <= kMaxCells)
+    cells.resize(a2.size() * a3.size());  // more: the sink form refuses them
+  sweep_accelerations(period, stroke, a2, a3, o,
+                      [&](std::size_t k, const AccelerationCell& c) { cells[k] = c; });
   return cells;
 }
 
