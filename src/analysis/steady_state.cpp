@@ -73,8 +73,10 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
   // where the event sequence changes (F05: a fixed point 8e-10 Δt from the case-3/4 kink).
   //
   // Steps: plain iterates from rest first (they reach a stick-determined fixed point exactly),
-  // then Newton steps v - g / (λ - 1) on the local slope (exact maps) or secant steps; a step
-  // that leaves the bracket, or one that fails to halve the residual twice, is replaced by
+  // then Newton steps v - g / (λ - 1) on the local slope (exact maps) or secant steps; where
+  // the local slope is near 1 (λ > 0.999: a piece far from v*, typically after a first Newton
+  // step from rest overshot) and a bracket is known, false position across it; a step that
+  // leaves the bracket, or one that fails to halve the residual twice, is replaced by
   // bisection. Once the local estimate |g| / (1 - λ) is within half the tolerance, the next
   // point is the mirror image across the estimated v*: where the estimate holds, g changes
   // sign there and the bracket, of width twice the estimate, certifies it; where a kink lies
@@ -114,10 +116,11 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
 
 
   double below = 0, above = 0;  // bracket: g(below) > 0 > g(above)
+  double g_below = 0, g_above = 0;
   bool have_below = false, have_above = false;
   auto note_side = [&](const Period& p) {
-    if (p.g > 0 && (!have_below || p.v > below)) below = p.v, have_below = true;
-    if (p.g < 0 && (!have_above || p.v < above)) above = p.v, have_above = true;
+    if (p.g > 0 && (!have_below || p.v > below)) below = p.v, g_below = p.g, have_below = true;
+    if (p.g < 0 && (!have_above || p.v < above)) above = p.v, g_above = p.g, have_above = true;
   };
   auto bracketed = [&] { return have_below && have_above && below < above; };
 
@@ -148,6 +151,12 @@ SteadyState steady_state(const PeriodMap& map, const SteadyStateOptions& o) {
       certify = estimate <= 0.5 * tol * scale(v);
       next = v + std::copysign(certify ? std::max(2 * estimate, floor_at(last)) : estimate, g);
       step = !certify;
+    } else if (bracketed() && std::isfinite(s) && s >= -1e-3) {
+      // The slope here says nothing of v* (λ ≈ 1 on a piece far from it, e.g. a first Newton
+      // step from rest that overshot): false position across the bracket instead of a plain
+      // iterate, which would crawl at the rate 1 - λ.
+      next = below + g_below * (above - below) / (g_below - g_above);
+      step = true;
     } else if (!std::isfinite(s) && !probed && r.periods >= 3 && g != 0) {
       // Residuals too close to each other to give a slope (a start near the fixed point, a
       // map with λ near 1): one probe a resolvable distance towards v* measures it.

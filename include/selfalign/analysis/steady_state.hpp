@@ -9,8 +9,9 @@
 /// fixed point; P is piecewise affine for the paper's profiles (constant after a stick, slope
 /// λ2 = c4 in slip-slip, eq. 32) with kinks where the event sequence changes. Steps: plain
 /// iterates from rest, then Newton steps on the map's own slope dP/dv (the saltation product of
-/// the period's arcs, exact maps) or secant steps (other maps), bisection where a step leaves
-/// the bracket or stalls. The search stops at a fixed point in floating point (or, for a Newton
+/// the period's arcs, exact maps) or secant steps (other maps), false position across the
+/// bracket where the local slope is near 1 (a piece far from the fixed point), bisection where
+/// a step leaves the bracket or stalls. The search stops at a fixed point in floating point (or, for a Newton
 /// iterate, at the rounding floor of g), or when a bracket narrower than the tolerance holds
 /// it: an estimate within tolerance is certified by evaluating its mirror image across the
 /// estimated fixed point. x_dot_0s_error is then the bracket's width, a bound rather than a
