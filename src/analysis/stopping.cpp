@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "selfalign/analysis/final_stick.hpp"
 #include "selfalign/analysis/stick_position.hpp"
@@ -39,8 +40,21 @@ struct StopWatch final : MotionObserver {
   StoppingRun& run;
   FinalStick stick;
   std::vector<std::pair<double, double>> crossed;  // (position, time) in the open interval
+  // A target's crossing on an arc, timed only when the run ends (resolve): a part that walks
+  // stick-slip across a target crosses it again after every slide back, and only the last
+  // crossing stands. nullopt: none pending (its time, if any, is in run.time_to_fraction).
+  std::vector<std::optional<Arc>> pending;
   StopWatch(double x_mu_, std::vector<double> targets_, StoppingRun& r, double t0)
-      : x_mu(x_mu_), targets(std::move(targets_)), run(r), stick(t0) {}
+      : x_mu(x_mu_), targets(std::move(targets_)), run(r), stick(t0), pending(targets.size()) {}
+
+  // The times of the crossings still pending.
+  void resolve() {
+    for (std::size_t k = 0; k < targets.size(); ++k)
+      if (pending[k]) {
+        run.time_to_fraction[k] = crossing(*pending[k], targets[k]);
+        pending[k].reset();
+      }
+  }
 
   // The positions whose crossings the integrator should report, sorted.
   std::vector<double> watch() const {
@@ -65,16 +79,21 @@ struct StopWatch final : MotionObserver {
   // One arc, interval or time step from x0 to x1 (x monotone on it), ending at t1 at rest
   // after moving (`stops`); crossing(X) is the first time at which x >= X on it, called only
   // when x0 < X <= x1.
+  // `arc`: the piece's closed form, where it has one (its crossings are then timed lazily).
   template <class Crossing>
-  void record(double x0, double x1, bool stops, Crossing crossing) {
+  void record(double x0, double x1, bool stops, const Arc* arc, Crossing crossing) {
     const double x_hi = std::max(x0, x1);
     if (std::isnan(run.entry_time) && x_hi >= x_mu) run.entry_time = crossing(x_mu);
     for (std::size_t k = 0; k < targets.size(); ++k) {
       double& t = run.time_to_fraction[k];
       if (x1 < targets[k]) {
         t = kNaN;  // back below (a slide back): not arrived yet
-      } else if (std::isnan(t)) {
-        t = crossing(targets[k]);
+        pending[k].reset();
+      } else if (std::isnan(t) && !pending[k]) {
+        if (arc)
+          pending[k] = *arc;
+        else
+          t = crossing(targets[k]);
       }
     }
     if (stops && x1 >= x_mu) run.stick_positions.push_back(x1);
@@ -92,10 +111,10 @@ struct StopWatch final : MotionObserver {
   void on_motion(const MotionInterval& i, const Arc* arc) override {
     stick.on_motion(i, arc);
     if (arc) {
-      record(i.x0, i.x1, stops(i), [&](double X) { return crossing(*arc, X); });
+      record(i.x0, i.x1, stops(i), arc, [&](double X) { return crossing(*arc, X); });
       return;
     }
-    record(i.x0, i.x1, stops(i), [&](double X) {
+    record(i.x0, i.x1, stops(i), nullptr, [&](double X) {
       if (i.x0 >= X) return i.t0;
       for (const auto& [position, time] : crossed)
         if (position == X) return time;
@@ -253,6 +272,7 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
       if (!pending) break;
       advance_to_look();
     }
+  watch.resolve();
   for (std::size_t i = 0; i < targets.size(); ++i)
     if (!std::isnan(r.time_to_fraction[i]) && !std::isnan(r.entry_time))
       r.periods_to_fraction[i] =
