@@ -49,9 +49,10 @@ namespace {
 // The uniform solver: one constant friction piece and constant acceleration on every segment,
 // the paper's case and the sweeps' hot loop. Parabolic arcs only (eqs. 15-21); the general
 // solver below gives the same arcs (tests/test_friction_law.cpp checks both agree), this copy
-// only drops the look-ups it does not need. Its segment walk repeats the general solver's on
-// purpose: sharing it through a lambda-taking template measured 1.23-1.26x the bare loop per
-// period (bench_simulate, exact_per_period/case1_uniform) against 1.09x for this copy.
+// only drops the look-ups it does not need. It walks each segment in local time (the phase in
+// the period, and the time left in the segment), as the independent floor of
+// bench/floors.cpp does; absolute times are formed only at the segment switches (the same
+// expression, period start + segment start, as the general solver) and for an observer's arcs.
 std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t_end,
                             MotionObserver* observer) {
   const auto segs = setup.profile.segments();
@@ -64,36 +65,32 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
   double t = state.object.t, x = state.object.x, v = state.object.xd;
   std::size_t si = state.segment;
   long long n = state.period_index;
+  double period_start = static_cast<double>(n) * P;
+  double phase = t - period_start;  // local time in the period
   std::size_t count = 0;
 
   while (t < t_end) {  // one acceleration segment per pass
-    const double period_start = static_cast<double>(n) * P;
-    const double seg_end = si + 1 < nseg ? period_start + segs[si + 1].begin : period_start + P;
+    const double seg_end = si + 1 < nseg ? segs[si + 1].begin : P;  // local
     const double A = segs[si].accel;
-    const bool to_switch = seg_end <= t_end;
-    const double t_stop = to_switch ? seg_end : t_end;
+    const bool to_switch = period_start + seg_end <= t_end;
+    const double stop = to_switch ? seg_end : t_end - period_start;  // local
     const ArcEnd stop_end = to_switch ? ArcEnd::acceleration_switch : ArcEnd::horizon;
+    double left = stop - phase;  // time left in the segment
 
-    while (t < t_stop) {  // one arc per pass
+    while (left > 0) {  // one arc per pass
       // The commonest arc: at rest and held for the rest of the segment.
       if (v == 0 && !observer && decide_at_rest(A, m_static) == 0) {
         ++count;
-        t = t_stop;
         break;
       }
-      int sigma = 0;
-      double alpha = 0, x1 = x, v1 = 0, t1 = t_stop;
+      const int sigma = v == 0 ? decide_at_rest(A, m_static)  // stick, or slip against the push
+                                : (v > 0 ? 1 : -1);
+      double alpha = 0, x1 = x, v1 = 0, tau = left;
       ArcEnd end = stop_end;
-      if (v == 0) {
-        sigma = decide_at_rest(A, m_static);  // stick, or slip against the table's push
-      } else {
-        sigma = v > 0 ? 1 : -1;
-      }
       if (sigma != 0) {  // parabolic: x'' = -sigma k m - A (eqs. 15, 18)
         alpha = -sigma * (sigma > 0 ? m_forward : m_backward) - A;
-        const double tau_v = detail::parabolic_stop(sigma * v, sigma * alpha);
-        double tau = t_stop - t;
-        if (tau_v <= tau) {
+        const double tau_v = detail::parabolic_stop(sigma * v, sigma * alpha);  // eq. (21)
+        if (tau_v <= left) {
           tau = tau_v;
           end = ArcEnd::velocity_zero;
         }
@@ -101,10 +98,13 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
         v1 = end == ArcEnd::velocity_zero ? 0.0 : v + alpha * tau;
         // A velocity that crossed zero by rounding at a switch is a stop.
         if ((v1 > 0 && sigma < 0) || (v1 < 0 && sigma > 0)) v1 = 0;
-        if (end != stop_end) t1 = t + tau;
       }
+      const double phase1 = end == stop_end ? stop : phase + tau;
       if (observer) [[unlikely]] {
-        Arc arc{{t, t1, x, v, x1, v1}, A, 0.0, m, 0.0, StickArc{}};
+        const double t1 = end != stop_end ? period_start + phase1
+                          : to_switch     ? period_start + seg_end
+                                          : t_end;
+        Arc arc{{period_start + phase, t1, x, v, x1, v1}, A, 0.0, m, 0.0, StickArc{}};
         if (sigma != 0) arc.shape = PolynomialArc{alpha, 0.0};
         arc.direction = static_cast<std::int8_t>(sigma);
         arc.end = end;
@@ -112,13 +112,22 @@ std::size_t advance_uniform(const ExactSetup& setup, ExactState& state, double t
         emit(*observer, arc);
       }
       ++count;
-      t = t1;
+      phase = phase1;
+      left = stop - phase;
       x = x1;
       v = v1;
     }
-    if (to_switch && ++si == nseg) {
+    if (!to_switch) {  // the horizon, inside this segment
+      t = t_end;
+      break;
+    }
+    t = period_start + seg_end;
+    phase = seg_end;
+    if (++si == nseg) {
       si = 0;
       ++n;
+      period_start = static_cast<double>(n) * P;
+      phase = t - period_start;  // 0 up to rounding of n P
     }
   }
   state.object = {t, x, v};
