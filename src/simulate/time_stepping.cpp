@@ -1,11 +1,10 @@
 #include "selfalign/simulate/time_stepping.hpp"
 
 #include <cmath>
-#include <limits>
-#include <span>
 
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "../profiles/tracked_velocity.hpp"
 #include "moreau_slider_step.hpp"
 
 namespace selfalign {
@@ -75,43 +74,6 @@ void moreau_steps(const Velocity& velocity, const Bound& bound, const FrictionLa
   }
 }
 
-// The table velocity of a piecewise-constant-acceleration profile at the step ends, which only
-// grow: PiecewisePolynomialProfile::velocity_of_constant_acceleration bit for bit, with the
-// period index and segment tracked instead of found anew each step. The phase is that
-// function's own expression t - Δt n; wherever the tracked n is floor(t / Δt) for certain (the
-// phase at least kEdge Δt from both ends of the period, far above the rounding of t / Δt for
-// the periods tracked) it skips the division, else it takes the profile's own phase() and
-// restarts the segment scan. The segment scan is segment_at's, resumed where the last step
-// left it (the phase only grows within a period).
-class TrackedVelocity {
- public:
-  explicit TrackedVelocity(const PiecewisePolynomialProfile& p)
-      : profile_(&p), segs_(p.segments()), period_(p.period()) {}
-  double operator()(double t) const noexcept {
-    constexpr double kEdge = 1e-9;      // of the period; rounding of t / Δt: ~1e-16 (n + 1)
-    constexpr double kMaxTracked = 1e6;  // periods: (n + 1) eps stays below 1e-9 / 4
-    const double guess = t - period_ * n_;
-    double ph;
-    if (guess >= kEdge * period_ && guess <= (1 - kEdge) * period_ && n_ < kMaxTracked) {
-      ph = guess;
-    } else {
-      n_ = std::floor(t / period_);
-      ph = profile_->phase(t);
-      i_ = 0;
-    }
-    while (i_ + 1 < segs_.size() && ph >= segs_[i_ + 1].begin) ++i_;
-    const AccelerationSegment& s = segs_[i_];
-    return s.yd + s.accel * (ph - s.begin);
-  }
-
- private:
-  const PiecewisePolynomialProfile* profile_;
-  std::span<const AccelerationSegment> segs_;
-  double period_;
-  mutable double n_ = std::numeric_limits<double>::quiet_NaN();  // NaN: not yet known
-  mutable std::size_t i_ = 0;
-};
-
 }  // namespace
 
 void advance_time_stepping(const TableProfile& profile, const FrictionMap& friction,
@@ -127,7 +89,7 @@ void advance_time_stepping(const TableProfile& profile, const FrictionMap& frict
     const double level = uniform->level();
     const auto constant_level = [level](double) { return level; };
     if (pp->piecewise_constant()) {  // velocity() without its jerk test: the same numbers
-      moreau_steps(TrackedVelocity(*pp), constant_level, law, o, state, steps, observer);
+      moreau_steps(detail::TrackedVelocity(*pp), constant_level, law, o, state, steps, observer);
       return;
     }
     moreau_steps([pp](double t) { return pp->PiecewisePolynomialProfile::velocity(t); },
