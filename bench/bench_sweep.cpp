@@ -51,6 +51,7 @@ void sweep_grid_columns(benchmark::State& st) {
   const std::vector<double> g = linear_grid(3.0 / n, 3.0, n);
   SweepOptions o;
   o.threads = static_cast<int>(st.range(1));
+  if (st.range(2) != 0) o.progress = [](std::size_t, std::size_t) {};  // as the front ends
   const std::size_t cells = static_cast<std::size_t>(n) * n;
   for (auto _ : st) {
     std::unique_ptr<double[]> v_bar(new double[cells]), f(new double[cells]),
@@ -70,11 +71,13 @@ void sweep_grid_columns(benchmark::State& st) {
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(sweep_grid_columns)
-    ->ArgNames({"n", "threads"})
-    ->Args({100, 2})
-    ->Args({316, 2})
-    ->Args({1000, 2})
-    ->Args({1000, 1})
+    ->ArgNames({"n", "threads", "progress"})
+    ->Args({100, 2, 0})
+    ->Args({316, 2, 0})
+    ->Args({1000, 2, 0})
+    ->Args({1000, 1, 0})
+    ->Args({100, 2, 1})
+    ->Args({1000, 2, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 }  // namespace bench_sweep
