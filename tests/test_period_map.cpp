@@ -30,6 +30,38 @@ PiecewisePolynomialProfile square_wave() {
 // The closed forms are evaluated in a handful of floating-point operations: a few ulps.
 constexpr double kClosedFormTol = 1e-14;
 
+// Run::jump_periods against the second method, advancing period by period: a case-1 walk on
+// the uniform table repeats every period after its first stick, so jumping N - 2 periods with
+// the last period's displacement lands where N periods of arcs do (to the rounding of the
+// positions summed: 1e-12 relative over 50 periods), at the same time, bit for bit.
+TEST(PeriodMap, JumpingPeriodsOfARepeatingWalkLandsWhereAdvancingDoes) {
+  const ThreePhaseProfile profile({1.0, 0.084, 3.0, 0.9});
+  const PeriodMap map(profile);
+  const double t1 = profile.solution().t1;  // a switch: the look of a stopping run
+  constexpr long long n = 50;
+  PeriodMap::Run stepped = map.start({t1, 0, 0});
+  for (long long k = 1; k <= n; ++k) stepped.advance_to(static_cast<double>(k) + t1);
+  PeriodMap::Run jumped = map.start({t1, 0, 0});
+  const double x1 = jumped.advance_to(1 + t1).x, x2 = jumped.advance_to(2 + t1).x;
+  ASSERT_GT(x2 - x1, 0.0);
+  ASSERT_TRUE(jumped.jump_periods(n - 2, static_cast<double>(n - 2) * (x2 - x1)));
+  EXPECT_EQ(jumped.state().t, stepped.state().t);
+  EXPECT_NEAR(jumped.state().x, stepped.state().x, 1e-12 * stepped.state().x);
+  EXPECT_EQ(jumped.state().xd, 0.0);
+  // and they go on alike
+  EXPECT_NEAR(jumped.advance_to(n + 1 + t1).x, stepped.advance_to(n + 1 + t1).x,
+              1e-12 * stepped.state().x);
+  // not at a switch, or another method: refused, nothing changed
+  PeriodMap::Run off = map.start({0.3, 0, 0});
+  EXPECT_FALSE(off.jump_periods(5, 1.0));
+  EXPECT_EQ(off.state().x, 0.0);
+  PeriodMapOptions time_stepping;
+  time_stepping.method = Method::time_stepping;
+  const PeriodMap stepping(profile, FrictionLaw{}, time_stepping);
+  PeriodMap::Run ts = stepping.start({t1, 0, 0});
+  EXPECT_FALSE(ts.jump_periods(5, 1.0));
+}
+
 TEST(PeriodMap, ChoosesTheSolverTheProfileAndLawAllow) {
   const PiecewisePolynomialProfile square = square_wave();
   const FourierProfile fourier(1.0, {0.01}, {0.02});

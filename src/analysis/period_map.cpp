@@ -192,6 +192,21 @@ const ExactState& PeriodMap::Run::exact_state() const noexcept {
   return exact ? *exact : none;
 }
 
+bool PeriodMap::Run::jump_periods(long long periods, double displacement) {
+  auto* exact = std::get_if<ExactState>(&state_);
+  if (!exact || periods < 1) return false;
+  const PiecewisePolynomialProfile& p = map_->exact_setup().profile;
+  const auto segs = p.segments();
+  const auto at_switch = [&](long long n) {
+    return static_cast<double>(n) * p.period() + segs[exact->segment].begin;
+  };
+  if (exact->object.t != at_switch(exact->period_index)) return false;
+  exact->period_index += periods;
+  exact->object.t = at_switch(exact->period_index);
+  exact->object.x += displacement;
+  return true;
+}
+
 const ObjectState& PeriodMap::Run::advance_to(double t_end, MotionObserver* observer,
                                               std::span<const double> watch) {
   IntegratorStatistics stats;

@@ -44,6 +44,8 @@ struct StopWatch final : MotionObserver {
   // stick-slip across a target crosses it again after every slide back, and only the last
   // crossing stands. nullopt: none pending (its time, if any, is in run.time_to_fraction).
   std::vector<std::optional<Arc>> pending;
+  // The range of x since the last look (the period the run just advanced).
+  double lo = kNaN, hi = kNaN;
   StopWatch(double x_mu_, std::vector<double> targets_, StoppingRun& r, double t0)
       : x_mu(x_mu_), targets(std::move(targets_)), run(r), stick(t0), pending(targets.size()) {}
 
@@ -110,6 +112,8 @@ struct StopWatch final : MotionObserver {
   }
   void on_motion(const MotionInterval& i, const Arc* arc) override {
     stick.on_motion(i, arc);
+    lo = std::fmin(lo, std::fmin(i.x0, i.x1));  // x is monotone on a piece
+    hi = std::fmax(hi, std::fmax(i.x0, i.x1));
     if (arc) {
       record(i.x0, i.x1, stops(i), arc, [&](double X) { return crossing(*arc, X); });
       return;
@@ -223,7 +227,9 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
     run.advance_to(t_look, &watch, watched);
   };
   double last_look = std::numeric_limits<double>::quiet_NaN();  // a period before this look
+  const bool can_jump = period_map.method() == Method::exact && pwc;
   for (int k = 0; k < o.max_periods && r.kind == StopKind::not_stopped; ++k) {
+    watch.lo = watch.hi = run.state().x;
     advance_to_look();
     const ObjectState& obj = run.state();
     const double window_start = last_look;
@@ -243,6 +249,28 @@ StoppingRun stopping_run(const TableProfile& profile, const FrictionMap& frictio
     if (std::isinf(r.x_stick_min) && !std::isnan(r.entry_time)) {
       r.never_stops = true;
       break;
+    }
+    // Below the rise, at rest at this look and the one before: the next periods repeat the
+    // last one's motion shifted by its displacement (the same start at the same phase on the
+    // same level) while they stay on one constant level below x_mu. Jump over them at once,
+    // one period short of the level's end (nothing is observed there: no target, entry or
+    // rest position lies below x_mu).
+    if (can_jump && obj.xd == 0 && previous.xd == 0 && obj.x > previous.x && obj.x < x_mu) {
+      const double dx = obj.x - previous.x;
+      const AffinePiece& pc = pieces->pieces()[pieces->piece_index(watch.lo)];
+      const double room = std::min(pc.end, x_mu) - watch.hi;
+      const double whole = std::floor(room / dx) - 1;
+      const long long periods = static_cast<long long>(
+          std::min(whole, static_cast<double>(o.max_periods - k - 1)));
+      if (pc.slope == 0 && pc.begin <= watch.lo && periods >= 2 &&
+          run.jump_periods(periods, static_cast<double>(periods) * dx)) {
+        look += periods;
+        k += static_cast<int>(periods);
+        watch.stick = FinalStick(watch.stick.since() + static_cast<double>(periods) * P_segments);
+        previous = run.state();
+        last_look = previous.t;
+        continue;
+      }
     }
     previous = obj;
     if (obj.xd != 0 || obj.x < x_mu) continue;

@@ -102,6 +102,13 @@ class PeriodMap {
     const ObjectState& state() const noexcept { return object_of(state_); }
     /// The exact solver's state (segment and period index; exact only, else a default one).
     const ExactState& exact_state() const noexcept;
+    /// Moves the run `periods` >= 1 table periods on at once, its position by `displacement`:
+    /// the state one would reach by advancing, where the caller knows the motion repeats every
+    /// period with that displacement (a part at rest at the same phase each period on a level
+    /// that does not change where it moves; see stopping_run). Exact solver only, and only at
+    /// a segment switch (the state as a look at a switch left it): returns false, changing
+    /// nothing, otherwise. The new time is formed as the solver forms a switch's.
+    bool jump_periods(long long periods, double displacement);
 
    private:
     friend class PeriodMap;
