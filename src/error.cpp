@@ -52,42 +52,42 @@ double parse_number(const std::string& name, const std::string& text) {
   return v;
 }
 
-double require_finite(const std::string& name, double value) {
-  if (!std::isfinite(value)) throw InvalidParameter(name, value, "must be a finite number");
+double require_finite(std::string_view name, double value) {
+  if (!std::isfinite(value)) throw InvalidParameter(std::string(name), value, "must be a finite number");
   return value;
 }
 
-double require_positive(const std::string& name, double value) {
-  if (!(std::isfinite(value) && value > 0)) throw InvalidParameter(name, value, "must be > 0");
+double require_positive(std::string_view name, double value) {
+  if (!(std::isfinite(value) && value > 0)) throw InvalidParameter(std::string(name), value, "must be > 0");
   return value;
 }
 
-double require_non_negative(const std::string& name, double value) {
-  if (!(std::isfinite(value) && value >= 0)) throw InvalidParameter(name, value, "must be >= 0");
+double require_non_negative(std::string_view name, double value) {
+  if (!(std::isfinite(value) && value >= 0)) throw InvalidParameter(std::string(name), value, "must be >= 0");
   return value;
 }
 
-double require_moderate(const std::string& name, double value) {
+double require_moderate(std::string_view name, double value) {
   if (!(std::abs(value) <= kMaxMagnitude))
-    throw InvalidParameter(name, value, "must be a finite number with |value| <= 1e50");
+    throw InvalidParameter(std::string(name), value, "must be a finite number with |value| <= 1e50");
   return value;
 }
 
-double require_positive_moderate(const std::string& name, double value) {
+double require_positive_moderate(std::string_view name, double value) {
   if (!(value >= 1.0 / kMaxMagnitude && value <= kMaxMagnitude))
-    throw InvalidParameter(name, value, "must be > 0, within [1e-50, 1e50]");
+    throw InvalidParameter(std::string(name), value, "must be > 0, within [1e-50, 1e50]");
   return value;
 }
 
-double require_greater(const std::string& name, double value, double bound) {
+double require_greater(std::string_view name, double value, double bound) {
   if (!(std::isfinite(value) && value > bound))
-    throw InvalidParameter(name, value, "must be > " + format_number(bound));
+    throw InvalidParameter(std::string(name), value, "must be > " + format_number(bound));
   return value;
 }
 
-double require_in_half_open(const std::string& name, double value, double lo, double hi) {
+double require_in_half_open(std::string_view name, double value, double lo, double hi) {
   if (!(std::isfinite(value) && value > lo && value <= hi))
-    throw InvalidParameter(name, value,
+    throw InvalidParameter(std::string(name), value,
                            "must be in (" + format_number(lo) + ", " + format_number(hi) + "]");
   return value;
 }

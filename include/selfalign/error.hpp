@@ -33,27 +33,27 @@ class InvalidParameter : public std::invalid_argument {
 std::string format_number(double value);
 
 /// Throws InvalidParameter unless value is finite and > 0.
-double require_positive(const std::string& name, double value);
+double require_positive(std::string_view name, double value);
 /// Throws InvalidParameter unless value is finite and >= 0.
-double require_non_negative(const std::string& name, double value);
+double require_non_negative(std::string_view name, double value);
 /// The number `text` spells (std::stod, the whole text; "nan" and "inf" parse); throws
 /// InvalidParameter(name, text, "must be a number") otherwise.
 double parse_number(const std::string& name, const std::string& text);
 /// Throws InvalidParameter unless value is finite.
-double require_finite(const std::string& name, double value);
+double require_finite(std::string_view name, double value);
 /// Throws InvalidParameter unless value is finite and > bound ("must be > bound").
-double require_greater(const std::string& name, double value, double bound);
+double require_greater(std::string_view name, double value, double bound);
 /// The largest magnitude selfalign accepts for a free-valued input (a velocity, a position, a
 /// config number): dimensionless quantities of this model are O(1e-6 .. 1e6), and 1e50 keeps
 /// products of several such quantities (energies, y = a t^2/2, (k w)^2 A) finite.
 inline constexpr double kMaxMagnitude = 1e50;
 /// Throws InvalidParameter unless value is finite and |value| <= kMaxMagnitude.
-double require_moderate(const std::string& name, double value);
+double require_moderate(std::string_view name, double value);
 /// Throws InvalidParameter unless 1/kMaxMagnitude <= value <= kMaxMagnitude (a positive scale:
 /// a width, a length, a limit), the positive counterpart of require_moderate.
-double require_positive_moderate(const std::string& name, double value);
+double require_positive_moderate(std::string_view name, double value);
 /// Throws InvalidParameter unless value is finite and lo < value <= hi.
-double require_in_half_open(const std::string& name, double value, double lo, double hi);
+double require_in_half_open(std::string_view name, double value, double lo, double hi);
 
 /// A library parameter's name and the name its user gave it (a flag, a config key, a file's
 /// key), so that a message names what the user typed: {"accels", "accelerations"},
