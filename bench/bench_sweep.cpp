@@ -16,6 +16,13 @@
 namespace bench_sweep {
 using namespace selfalign;
 
+// Thread time per cell [ns]: wall time x threads / cells, per iteration.
+void thread_ns_per_cell(benchmark::State& st, double cells, int threads) {
+  st.counters["thread_ns_per_cell"] =
+      benchmark::Counter(cells / 1e9 / static_cast<double>(threads),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void sweep_grid(benchmark::State& st) {
   const int n = static_cast<int>(st.range(0));
   const std::vector<double> g = linear_grid(3.0 / n, 3.0, n);
@@ -31,9 +38,7 @@ void sweep_grid(benchmark::State& st) {
   }
   st.counters["cells"] = static_cast<double>(n) * n;
   st.counters["physical_cells"] = static_cast<double>(physical);
-  st.counters["thread_ns_per_cell"] =
-      benchmark::Counter(static_cast<double>(n) * n / 1e9 / static_cast<double>(o.threads),
-                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  thread_ns_per_cell(st, static_cast<double>(n) * n, o.threads);
 }
 BENCHMARK(sweep_grid)
     ->ArgNames({"n", "threads", "closed_form"})
@@ -66,9 +71,7 @@ void sweep_grid_columns(benchmark::State& st) {
     benchmark::DoNotOptimize(v_bar.get());
   }
   st.counters["cells"] = static_cast<double>(cells);
-  st.counters["thread_ns_per_cell"] =
-      benchmark::Counter(static_cast<double>(cells) / 1e9 / static_cast<double>(o.threads),
-                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  thread_ns_per_cell(st, static_cast<double>(cells), o.threads);
 }
 BENCHMARK(sweep_grid_columns)
     ->ArgNames({"n", "threads", "progress"})

@@ -55,18 +55,6 @@ void def_array(PyClass& cls, const char* name, std::vector<T> Class::*member, co
       doc);
 }
 
-/// The cells' `failure` messages as a NumPy array of str (dtype object) of the given shape:
-/// '' where the cell was computed, else why it could not be (its numbers are NaN).
-template <class Cell>
-py::array failure_array(const std::vector<Cell>& cells, const std::vector<py::ssize_t>& shape) {
-  py::list messages;
-  for (const Cell& c : cells) messages.append(py::str(c.failure));
-  py::object numpy = py::module_::import("numpy");
-  py::tuple dims(shape.size());
-  for (std::size_t i = 0; i < shape.size(); ++i) dims[i] = shape[i];
-  return numpy.attr("array")(messages, py::arg("dtype") = "object").attr("reshape")(dims);
-}
-
 /// The failure array of a study whose cells report failures sparsely: '' everywhere (an object
 /// array of `shape`) but at the flat indices listed, which hold their messages.
 inline py::array sparse_failure_array(const std::vector<std::pair<std::size_t, std::string>>& failures,
@@ -78,6 +66,16 @@ inline py::array sparse_failure_array(const std::vector<std::pair<std::size_t, s
   py::object flat = a.attr("reshape")(-1);  // a view
   for (const auto& [k, message] : failures) flat[py::int_(k)] = py::str(message);
   return a;
+}
+
+/// The cells' `failure` messages as a NumPy array of str (dtype object) of the given shape:
+/// '' where the cell was computed, else why it could not be (its numbers are NaN).
+template <class Cell>
+py::array failure_array(const std::vector<Cell>& cells, const std::vector<py::ssize_t>& shape) {
+  std::vector<std::pair<std::size_t, std::string>> failures;
+  for (std::size_t k = 0; k < cells.size(); ++k)
+    if (!cells[k].failure.empty()) failures.emplace_back(k, cells[k].failure);
+  return sparse_failure_array(failures, shape);
 }
 
 /// Is x a Python int or float (or a subclass, e.g. numpy.float64)?

@@ -153,11 +153,9 @@ void bind_sweep(py::module_& m) {
         const PythonProgress progress(progress_in);
         SweepOptions options = sweep_options(threads, progress, steady, law, jerk);
         options.closed_form = closed_form;
+        acceleration_cells(a2, a3);  // refuses too many cells before the arrays exist
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(a2.size()),
                                              static_cast<py::ssize_t>(a3.size())};
-        if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) > kMaxGridPoints)
-          throw InvalidParameter("cells", static_cast<double>(a2.size()) * a3.size(),
-                                 "len(a2) x len(a3) must be <= 1e7");
         // The workers write each cell straight into the arrays (row-major: k = i * len(a3) + j).
         py::array_t<std::int32_t> predicted(shape), observed(shape);
         py::array_t<double> v_bar(shape), f(shape), x_dot_0s(shape);

@@ -53,6 +53,13 @@ constexpr double kMaxCells = kMaxGridPoints;  // ~1 GB of results; hours of work
 
 }  // namespace
 
+std::size_t acceleration_cells(const std::vector<double>& a2, const std::vector<double>& a3) {
+  const double cells = static_cast<double>(a2.size()) * static_cast<double>(a3.size());
+  if (cells > kMaxCells)
+    throw InvalidParameter("cells", cells, "len(a2) x len(a3) must be <= 1e7");
+  return a2.size() * a3.size();
+}
+
 bool closed_form_cells(const SweepOptions& o) noexcept {
   return o.closed_form && std::isinf(o.jerk) && three_phase_closed_form_applies(o.law);
 }
@@ -65,9 +72,7 @@ void sweep_accelerations(double period, double stroke, const std::vector<double>
   for (double v : a2) require_positive("a2", v);
   for (double v : a3) require_positive("a3", v);
   if (!(o.jerk > 0)) throw InvalidParameter("jerk", o.jerk, "must be > 0 (+inf: jump accelerations)");
-  if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) > kMaxCells)
-    throw InvalidParameter("cells", static_cast<double>(a2.size()) * static_cast<double>(a3.size()),
-                           "len(a2) x len(a3) must be <= 1e7");
+  const std::size_t n = acceleration_cells(a2, a3);
   const bool closed_form = closed_form_cells(o);
   auto cell_at = [&](std::size_t k) {
     AccelerationCell c;
@@ -75,7 +80,7 @@ void sweep_accelerations(double period, double stroke, const std::vector<double>
     c.a3 = a3[k % a3.size()];
     return c;
   };
-  detail::parallel_cells(a2.size() * a3.size(), o, [&](std::size_t k) {
+  detail::parallel_cells(n, o, [&](std::size_t k) {
     AccelerationCell c = cell_at(k);
     const ThreePhaseParameters p{period, stroke, c.a2, c.a3};
     if (closed_form) {  // a formula per cell (docs/three-phase-steady-state.md)
@@ -119,8 +124,9 @@ std::vector<AccelerationCell> sweep_accelerations(double period, double stroke,
                                                   const std::vector<double>& a3,
                                                   const SweepOptions& o) {
   std::vector<AccelerationCell> cells;
+  // sized only within the bound: the sink form checks the inputs in order, the cells last
   if (static_cast<double>(a2.size()) * static_cast<double>(a3.size()) <= kMaxCells)
-    cells.resize(a2.size() * a3.size());  // more: the sink form refuses them
+    cells.resize(a2.size() * a3.size());
   sweep_accelerations(period, stroke, a2, a3, o,
                       [&](std::size_t k, const AccelerationCell& c) { cells[k] = c; });
   return cells;

@@ -71,6 +71,10 @@ struct AccelerationCell {
   std::string failure;
 };
 
+/// The number of cells of an a2 × a3 study, len(a2) len(a3). Throws InvalidParameter naming
+/// "cells" when it exceeds kMaxGridPoints (a front end checks before allocating its output).
+std::size_t acceleration_cells(const std::vector<double>& a2, const std::vector<double>& a3);
+
 /// True when sweep_accelerations computes its cells by the closed form under these options:
 /// options.closed_form, jump accelerations (jerk +inf) and a Coulomb law.
 bool closed_form_cells(const SweepOptions& options) noexcept;
