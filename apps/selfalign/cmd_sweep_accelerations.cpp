@@ -100,11 +100,12 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
   NpyRecords table(cell_fields(), g.a2.size() * g.a3.size());
   std::vector<std::pair<std::size_t, AccelerationCell>> failed;  // rare: under a mutex
   std::mutex failed_mutex;
-  SweepOptions options;
+  bool closed_form = false;  // whether the cells were the closed form
   {
     const std::unique_ptr<ProgressBar> bar = sweep_progress_bar(*f.common);
-    options = sweep_options(*f.common, *bar, model);
+    SweepOptions options = sweep_options(*f.common, *bar, model);
     options.closed_form = !f.search;
+    closed_form = closed_form_cells(options);
     sweep_accelerations(p.period, p.stroke, g.a2_model, g.a3_model, options,
                         [&](std::size_t k, const AccelerationCell& c) {
                           set_row(table, k, c, g.a2[k / g.a3.size()], g.a3[k % g.a3.size()],
@@ -113,7 +114,6 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
                           std::lock_guard lock(failed_mutex);
                           failed.emplace_back(k, c);
                         });
-    options.progress = nullptr;
   }
   std::sort(failed.begin(), failed.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });  // cell order
@@ -121,7 +121,7 @@ void run_sweep_accelerations(const AccelerationFlags& f) {
   for (auto& [k, c] : failed) failed_cells.push_back(std::move(c));
   write_sweep_outputs(paths, table,
                       cells_summary(config, model, f, g.r2, g.r3, table, failed_cells,
-                                    closed_form_cells(options)),
+                                    closed_form),
                       model);
 }
 
