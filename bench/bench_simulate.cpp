@@ -38,6 +38,7 @@
 #include "selfalign/simulate/time_stepping.hpp"
 #include "selfalign/planar/planar_exact_point.hpp"
 #include "selfalign/planar/planar_point.hpp"
+#include "selfalign/planar/planar_patch_integrator.hpp"
 #include "selfalign/planar/planar_rigid.hpp"
 
 namespace {
@@ -564,6 +565,67 @@ void planar_patch_per_step(benchmark::State& st) {
   st.counters["sweeps_per_step"] = static_cast<double>(sweeps) / steps;
   st.counters["newton_per_step"] = static_cast<double>(newton) / steps;
 }
+
+// ---- A 16-point patch to a given accuracy: Moreau against the patch integrator --------------
+// The problem of planar_patch_per_step over 2 periods. The error of a run is the distance of its
+// end pose from the integrator's at tolerance 1e-13 (position plus patch radius times angle);
+// bench/planar_patch_accuracy.py picks, per method, the cheapest run within 1e-6 and reports the
+// ratio of their times (issue 22: the integrator at least 10x faster than Moreau at 1e-6).
+struct SixteenPointRun {
+  ThreePhaseProfile px{kCase3}, py{kCase1};
+  PlanarTableMotion motion;
+  RigidPart part{0.002, rectangle_patch(0.1, 0.06, 4, 4)};
+  PlanarField field = HalfPlaneStepField{0.02, 0, 0.3, 0.05, 2.5};
+  static constexpr double kT = 2.0;
+  SixteenPointRun() { motion.first = &px, motion.second = &py; }
+  PlanarPose integrated(double rtol, IntegratorStatistics* stats = nullptr) const {
+    IntegratorOptions o;
+    o.relative_tolerance = rtol, o.absolute_tolerance = 1e-2 * rtol;
+    PlanarPatchState s = make_planar_patch_state(0, {0, 0, 0.2}, {});
+    advance_planar_integrated(motion, field, kPlanarLaw, part, o, s, kT, stats);
+    return s.pose;
+  }
+  PlanarPose moreau(double h) const {
+    PlanarRigidState s = make_planar_rigid_state(motion, 0, {0, 0, 0.2}, {});
+    advance_planar_rigid(motion, field, kPlanarLaw, part, {h, 0.5}, s, std::llround(kT / h));
+    return s.pose;
+  }
+  double error(const PlanarPose& a) const {
+    static const PlanarPose ref = integrated(1e-13);
+    return std::hypot(a.x - ref.x, a.y - ref.y) +
+           patch_radius(part.patch) * std::abs(a.angle - ref.angle);
+  }
+};
+
+// Arg k: the step 10^-k (Moreau) or the relative tolerance 10^-k (integrator).
+void planar_patch_accuracy_moreau(benchmark::State& st) {
+  const SixteenPointRun run;
+  const double h = std::pow(10.0, -static_cast<double>(st.range(0)));
+  PlanarPose pose;
+  for (auto _ : st) {
+    pose = run.moreau(h);
+    benchmark::DoNotOptimize(pose);
+  }
+  st.counters["error"] = run.error(pose);
+  st.counters["step"] = h;
+}
+void planar_patch_accuracy_integrator(benchmark::State& st) {
+  const SixteenPointRun run;
+  const double rtol = std::pow(10.0, -static_cast<double>(st.range(0)));
+  PlanarPose pose;
+  IntegratorStatistics stats;
+  for (auto _ : st) {
+    stats = {};
+    pose = run.integrated(rtol, &stats);
+    benchmark::DoNotOptimize(pose);
+  }
+  st.counters["error"] = run.error(pose);
+  st.counters["relative_tolerance"] = rtol;
+  st.counters["rk_steps"] = static_cast<double>(stats.steps + stats.rejected);
+  st.counters["events"] = static_cast<double>(stats.events);
+}
+BENCHMARK(planar_patch_accuracy_moreau)->DenseRange(3, 6)->Unit(benchmark::kMillisecond);
+BENCHMARK(planar_patch_accuracy_integrator)->DenseRange(5, 10)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(planar_point_per_step)->Unit(benchmark::kMicrosecond);
 BENCHMARK(planar_patch_per_step)->Arg(1)->Arg(4)->Unit(benchmark::kMicrosecond);

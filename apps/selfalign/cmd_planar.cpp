@@ -115,6 +115,10 @@ void run_simulate(const PlanarFlags& f) {
     throw InvalidParameter("run.method", "exact",
                            "the exact point solver needs a point part at its centre on a uniform "
                            "field and a translating table with piecewise-constant accelerations");
+  if (s.method == Method::integrator && !patch_integrator_applies(s.problem))
+    throw InvalidParameter("run.method", "integrator",
+                           "the patch integrator needs a translating table with "
+                           "piecewise-constant accelerations");
   const Si si{s};
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   const PlanarTrajectory run = simulate_planar(
@@ -133,6 +137,9 @@ void run_simulate(const PlanarFlags& f) {
   r["end_twist"] = {{"ux", si.velocity(st.twist.ux)}, {"uy", si.velocity(st.twist.uy)}, {"omega", si.rate(st.twist.omega)}};
   r["census"] = census_json(run.census);
   r["solver"] = {{"sweeps", st.sweeps}, {"newton_steps", st.newton_steps}};
+  r["integrator"] = integrator_json(s.method, s.problem.integrator, run.integration,
+                                    "Boost.Odeint runge_kutta_dopri5, controlled steps");
+  if (s.method == Method::integrator) r["integrator"]["pivots"] = run.integration.pivots;
   TextTable t;
   t.row("end pose x, y [" + si.u("m", "-") + "], angle [rad]",
         table_text(r["end_pose"]["x"]) + ", " + table_text(r["end_pose"]["y"]) + ", " + table_text(r["end_pose"]["angle_rad"]));
@@ -327,7 +334,7 @@ void add_planar_command(CLI::App& app) {
       "Planar motion of a rigid part on a contact patch (translation and rotation) on a table "
       "moving in the plane, by Moreau time-stepping with exact set-valued friction (docs/planar.md)");
   sub->require_subcommand(1);
-  add_planar_sub(sub, "simulate", "one run from [run] pose/twist for [run] periods",
+  add_planar_sub(sub, "simulate", "one run from [run] pose/twist for [run] periods ([run] method: time-stepping, exact for a point part, or integrator: the patch integrator, docs/planar-integrator.md)",
                  &run_simulate, "write the trajectory (every [run] every steps) to FILE");
   add_planar_sub(sub, "steady",
                  "steady drift velocity and rotation rate: the fixed point of the period map "

@@ -479,6 +479,8 @@ class IntegratorStatistics:
     def slips(self) -> int: ...
     @property
     def sticks(self) -> int: ...
+    @property
+    def pivots(self) -> int: ...
     def to_dict(self) -> dict[str, Any]: ...
 
 class SimulationOptions:
@@ -2008,7 +2010,8 @@ def simulate_planar(
     twist: TwistLike = (0.0, 0.0, 0.0),
     every: int = 1,
     method: Union[Method, str] = ...,
-) -> dict[str, npt.NDArray[np.generic]]: ...
+    integrator: IntegratorOptions = ...,
+) -> dict[str, Any]: ...
 @overload
 def simulate_planar(
     x_profile: Optional[TableProfile] = None,
@@ -2028,7 +2031,8 @@ def simulate_planar(
     x_direction: tuple[float, float] = (1.0, 0.0),
     y_direction: tuple[float, float] = (0.0, 1.0),
     method: Union[Method, str] = ...,
-) -> dict[str, npt.NDArray[np.generic]]: ...
+    integrator: IntegratorOptions = ...,
+) -> dict[str, Any]: ...
 @overload
 def planar_steady(
     problem: PlanarProblem,

@@ -809,8 +809,9 @@ as its first argument: simulate_planar(problem, periods=3), planar_steady_state(
 }
 
 // A recorded run as the dict of NumPy columns simulate_planar returns.
-py::dict trajectory_dict(PlanarTrajectory&& r) {
+py::dict trajectory_dict(PlanarTrajectory&& r, Method method) {
   py::dict d;
+  if (method == Method::integrator) d["integration"] = r.integration;
   std::vector<std::int8_t> mode;
   mode.reserve(r.mode.size());
   for (PatchMode m : r.mode) mode.push_back(static_cast<std::int8_t>(m));
@@ -880,12 +881,20 @@ a whole number of steps to 1e-9). Returns a dict of 1-D NumPy arrays sampled at 
 piecewise-constant accelerations; otherwise InvalidParameter naming method), sampled at the same
 times (the step then only sets them): exact to rounding, mode 0 where the relative velocity is
 0, else 2; the angle turns at the start's constant omega (no torque about a centred point).
+Or "integrator": the patch integrator (any part and field on a translating table with
+piecewise-constant accelerations; docs/planar-integrator.md): slips integrated by Dormand-Prince
+5(4) under `integrator` (IntegratorOptions: relative and absolute tolerance, step budget), stick
+and pivot decided exactly at the events; mode and pivot are the current ones at each sample,
+and the dict also holds "integration" (IntegratorStatistics: steps, events, sticks, pivots).
 )doc");
   // simulate_planar on a PlanarProblem: both overloads below call it.
-  const auto simulate_planar_of = [](const PlanarProblem& p,
+  const auto simulate_planar_of = [](const PlanarProblem& problem,
                                       std::optional<long long> periods,
                                       std::optional<double> duration, const py::object& pose_in,
-                                      const py::object& twist_in, long long every, Method method) {
+                                      const py::object& twist_in, long long every, Method method,
+                                      const IntegratorOptions& integrator) {
+    PlanarProblem p = problem;
+    p.integrator = integrator;
     const PlanarPose pose = pose_of(pose_in, "pose");
     const PlanarTwist twist = twist_of(twist_in, "twist");
     if (every < 1) throw InvalidParameter("every", static_cast<double>(every), "must be >= 1");
@@ -900,21 +909,21 @@ times (the step then only sets them): exact to rounding, mode 0 where the relati
                              [&interrupt](long long, long long) { interrupt.stop_if_cancelled(); },
                              method);
     });
-    return trajectory_dict(std::move(r));
+    return trajectory_dict(std::move(r), method);
   };
   m.def(
       "simulate_planar",
       [simulate_planar_of](const PyPlanarProblem& problem,
               std::optional<long long> periods, std::optional<double> duration,
               const py::object& pose_in, const py::object& twist_in, long long every,
-              Method method) {
+              Method method, const IntegratorOptions& integrator) {
         return simulate_planar_of(problem.problem, periods, duration, pose_in, twist_in, every,
-                                  method);
+                                  method, integrator);
       },
       py::arg("problem"), py::kw_only(),
       py::arg("periods") = none, py::arg("duration") = none, py::arg("pose") = zero3,
       py::arg("twist") = zero3, py::arg("every") = 1, py::arg("method") = Method::time_stepping,
-      simulate_doc.c_str());
+      py::arg("integrator") = IntegratorOptions{}, simulate_doc.c_str());
   m.def(
       "simulate_planar",
       [simulate_planar_of](const TableProfile* x_profile, const TableProfile* y_profile,
@@ -922,10 +931,11 @@ times (the step then only sets them): exact to rounding, mode 0 where the relati
          const FrictionLaw& law, double step, double theta, 
               std::optional<long long> periods, std::optional<double> duration,
               const py::object& pose_in, const py::object& twist_in, long long every,
-              const py::object& x_direction, const py::object& y_direction, Method method) {
+              const py::object& x_direction, const py::object& y_direction, Method method,
+              const IntegratorOptions& integrator) {
         return simulate_planar_of(problem_of(x_profile, y_profile, rotation, x_direction, y_direction, field,
                                 part, law, step, theta),
-                     periods, duration, pose_in, twist_in, every, method);
+                     periods, duration, pose_in, twist_in, every, method, integrator);
       },
       py::arg("x_profile") = none, py::arg("y_profile") = none, py::arg("rotation") = none,
       py::kw_only(), py::arg("field"), py::arg("part"), py::arg("law") = FrictionLaw{},
@@ -933,7 +943,8 @@ times (the step then only sets them): exact to rounding, mode 0 where the relati
       py::arg("periods") = none, py::arg("duration") = none, py::arg("pose") = zero3,
       py::arg("twist") = zero3, py::arg("every") = 1,
       py::arg("x_direction") = ex, py::arg("y_direction") = ey,
-      py::arg("method") = Method::time_stepping, simulate_doc.c_str());
+      py::arg("method") = Method::time_stepping, py::arg("integrator") = IntegratorOptions{},
+      simulate_doc.c_str());
 
   static const std::string steady_doc = doc(R"doc(
 The window-average drift of a part (kept for comparison; the steady state is

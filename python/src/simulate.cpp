@@ -139,6 +139,8 @@ void bind_integrator(py::module_& m) {
                     "located events: x' = 0, friction boundaries, stick breaks")
       .def_readonly("slips", &IntegratorStatistics::slips, "slip intervals integrated")
       .def_readonly("sticks", &IntegratorStatistics::sticks, "stick intervals held exactly")
+      .def_readonly("pivots", &IntegratorStatistics::pivots,
+                    "pivots (the planar patch integrator only)")
       .def("__repr__", [](const IntegratorStatistics& s) {
         return Repr("IntegratorStatistics")("steps", s.steps)("rejected", s.rejected)(
                    "rhs_evaluations", s.rhs_evaluations)("events", s.events)
@@ -146,7 +148,7 @@ void bind_integrator(py::module_& m) {
       });
   def_record(statistics, field("steps", &S::steps), field("rejected", &S::rejected),
              field("rhs_evaluations", &S::rhs_evaluations), field("events", &S::events),
-             field("slips", &S::slips), field("sticks", &S::sticks));
+             field("slips", &S::slips), field("sticks", &S::sticks), field("pivots", &S::pivots));
 }
 
 void bind_simulation_options(py::module_& m) {

@@ -357,3 +357,42 @@ def test_the_exact_point_solver_from_python():
                              part=sa.RigidPart(0.01, sa.rectangle_patch(0.04, 0.02, 2, 2)), step=0.01)
     with pytest.raises(sa.InvalidParameter, match="method"):
         sa.simulate_planar(patch, periods=1, method="exact")
+
+
+def test_the_patch_integrator_from_python():
+    # Issue 22 item 4: simulate_planar(method="integrator") runs the patch integrator at the
+    # samples' times. Second methods: for a point part the exact point solver (closed-form arcs,
+    # to 1e-12 at tolerance 1e-12); for a 16-point bar swinging about its rough end, Moreau
+    # converges to it at first order. A rotating table is refused by name.
+    along = sa.ThreePhaseProfile(1.0, 0.084, 2.3, 1.3)
+    across = sa.ThreePhaseProfile(1.0, 0.084, 3.0, 0.9)
+    tight = sa.IntegratorOptions(relative_tolerance=1e-12, absolute_tolerance=1e-14)
+    point = sa.PlanarProblem(along, across, field=sa.UniformPlanarField(1.0),
+                             part=sa.RigidPart(0.01, sa.point_patch()),
+                             law=sa.FrictionLaw(1.3, 1.0), step=1 / 400)
+    exact = sa.simulate_planar(point, periods=2, twist=(0.1, -0.05, 0), every=100, method="exact")
+    run = sa.simulate_planar(point, periods=2, twist=(0.1, -0.05, 0), every=100,
+                             method="integrator", integrator=tight)
+    np.testing.assert_array_equal(run["t"], exact["t"])
+    for key in ("x", "y", "ux", "uy"):
+        np.testing.assert_allclose(run[key], exact[key], rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(run["mode"], exact["mode"])
+    assert run["integration"].steps > 0 and "integration" not in exact
+
+    bar = sa.RigidPart(0.4 * 0.4 / 12, sa.rectangle_patch(0.4, 0.03, 8, 2))
+    rough_end = sa.HalfPlaneStepField(origin_x=0.05, origin_y=0.0, angle=0.0, width=0.02, c_mu=2.5)
+    errors = []
+    for step in (1e-3, 1e-4):
+        problem = sa.PlanarProblem(None, across, field=rough_end, part=bar,
+                                   law=sa.FrictionLaw(1.3, 1.0), step=step)
+        every = round(0.25 / step)
+        ref = sa.simulate_planar(problem, periods=2, every=every, method="integrator",
+                                 integrator=tight)
+        moreau = sa.simulate_planar(problem, periods=2, every=every)
+        errors.append(max(np.abs(ref[k] - moreau[k]).max() for k in ("x", "y", "angle")))
+    assert ref["integration"].pivots > 0
+    assert 4 < errors[0] / errors[1] < 25
+    turning = sa.PlanarProblem(along, rotation=across, field=sa.UniformPlanarField(1.0),
+                               part=bar, step=0.01)
+    with pytest.raises(sa.InvalidParameter, match="method"):
+        sa.simulate_planar(turning, periods=1, method="integrator")

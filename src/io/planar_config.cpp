@@ -352,7 +352,19 @@ PlanarSetup load_planar_config(const std::string& path, const std::vector<std::s
     const std::string method = run.text("method", "time-stepping");
     if (method == "time-stepping") st.method = Method::time_stepping;
     else if (method == "exact") st.method = Method::exact;
-    else throw InvalidParameter(run.key("method"), method, "must be time-stepping or exact");
+    else if (method == "integrator") st.method = Method::integrator;
+    else
+      throw InvalidParameter(run.key("method"), method,
+                             "must be time-stepping, exact or integrator");
+  }
+  // The patch integrator's tolerances (Method::integrator).
+  st.problem.integrator.relative_tolerance = run.number("relative_tolerance", 1e-10);
+  st.problem.integrator.absolute_tolerance = run.number("absolute_tolerance", 1e-12);
+  for (const char* key : {"relative_tolerance", "absolute_tolerance"}) {
+    const double v = std::string(key) == "relative_tolerance"
+                         ? st.problem.integrator.relative_tolerance
+                         : st.problem.integrator.absolute_tolerance;
+    if (!(v > 0 && v < 1)) throw InvalidParameter(run.key(key), v, "must be in (0, 1)");
   }
   st.pose = pose_from(run.list("pose", {0, 0, 0}));
   const std::vector<double> tw = run.list("twist", {0, 0, 0});

@@ -120,8 +120,14 @@ std::vector<KeySpec> make_keys() {
        "initial twist relative to the table (default [0, 0, 0])"},
       {"run", "every", V::number, D::none, {}, {}, "", "simulate: a row every N steps (default 1)"},
       {"run", "method", V::text, D::none, {}, {}, "",
-       "simulate: time-stepping (default) or exact (the exact point solver: a point part at its "
-       "centre on a uniform field, a translating table with piecewise-constant accelerations)"},
+       "simulate: time-stepping (default), exact (the exact point solver: a point part at its "
+       "centre on a uniform field, a translating table with piecewise-constant accelerations) "
+       "or integrator (the patch integrator: any part, a translating table with "
+       "piecewise-constant accelerations)"},
+      {"run", "relative_tolerance", V::number, D::none, {}, {}, "[-]",
+       "simulate, method integrator: relative tolerance in (0, 1) (default 1e-10)"},
+      {"run", "absolute_tolerance", V::number, D::none, {}, {}, "[-]",
+       "simulate, method integrator: absolute tolerance in (0, 1) (default 1e-12)"},
       {"run", "transient", V::number, D::none, {}, {}, "",
        "steady: periods before the fixed-point search (default 0)"},
       {"run", "window", V::number, D::none, {}, {}, "", "not used (the window average before issue 21)"},
@@ -144,7 +150,8 @@ std::vector<KeySpec> make_keys() {
   constexpr std::string_view kSettings[] = {
       "scales.length", "part.mass", "part.rings", "part.sectors", "part.nx", "part.ny",
       "part.subdivisions", "field.nx", "field.ny", "run.step", "run.theta", "run.periods",
-      "run.every", "run.transient", "run.window", "run.steady_periods", "run.tolerance"};
+      "run.every", "run.transient", "run.window", "run.steady_periods", "run.tolerance",
+      "run.relative_tolerance", "run.absolute_tolerance"};
   for (KeySpec& k : keys) {
     const std::string name = qualified_key(k.section, k.name);
     if (k.section == "field_map" || k.section == "stop" ||

@@ -100,9 +100,9 @@ json law_json(const FrictionLaw& law, const OutputUnits& u, double mu) {
 }
 
 json integrator_json(Method method, const IntegratorOptions& options,
-                     const IntegratorStatistics& stats) {
+                     const IntegratorStatistics& stats, const char* stepper) {
   if (method != Method::integrator) return nullptr;
-  return {{"stepper", "Boost.Odeint runge_kutta_dopri5, dense output"},
+  return {{"stepper", stepper},
           {"relative_tolerance", options.relative_tolerance},
           {"absolute_tolerance", options.absolute_tolerance},
           {"steps", stats.steps},

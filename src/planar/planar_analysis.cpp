@@ -70,10 +70,8 @@ void validate(const PlanarProblem& p) {
   steps_per_period(p);
 }
 
-bool exact_point_applies(const PlanarProblem& p) {
-  const ContactPatch& patch = p.part.patch;
-  if (patch.size() != 1 || patch[0].x != 0 || patch[0].y != 0) return false;
-  if (!std::holds_alternative<UniformPlanarField>(p.field) || p.motion.rotation) return false;
+bool patch_integrator_applies(const PlanarProblem& p) {
+  if (p.motion.rotation || p.motion.normal) return false;
   for (const TableProfile* profile : {p.motion.first, p.motion.second}) {
     if (!profile) continue;
     const PiecewisePolynomialProfile* pwp = profile->piecewise_polynomial();
@@ -82,6 +80,12 @@ bool exact_point_applies(const PlanarProblem& p) {
       if (s.jerk != 0) return false;
   }
   return true;
+}
+
+bool exact_point_applies(const PlanarProblem& p) {
+  const ContactPatch& patch = p.part.patch;
+  if (patch.size() != 1 || patch[0].x != 0 || patch[0].y != 0) return false;
+  return std::holds_alternative<UniformPlanarField>(p.field) && patch_integrator_applies(p);
 }
 
 long long steps_per_period(const PlanarProblem& p) {

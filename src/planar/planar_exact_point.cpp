@@ -6,47 +6,16 @@
 #include <limits>
 
 #include "selfalign/error.hpp"
+#include "acceleration_pieces.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 namespace {
 
+using detail::constant_pieces;
+using detail::piece_at;
+using detail::Piece;
 
-// The acceleration of one profile on the segment holding t, and the next switch > t.
-struct Piece {
-  double accel = 0;
-  double next = kInf;
-};
-
-Piece piece_at(const PiecewisePolynomialProfile* p, double t) {
-  if (!p) return {};
-  const auto segs = p->segments();
-  const double P = p->period();
-  double n = std::floor(t / P);
-  std::size_t i = 0;
-  const double tp = t - n * P;
-  while (i + 1 < segs.size() && segs[i + 1].begin <= tp) ++i;
-  const auto end_of = [&](std::size_t j) {
-    return j + 1 < segs.size() ? n * P + segs[j + 1].begin : (n + 1) * P;
-  };
-  while (!(end_of(i) > t)) {  // rounding put t at or past the segment's end: the next one
-    if (++i == segs.size()) i = 0, n += 1;
-  }
-  return {segs[i].accel, end_of(i)};
-}
-
-const PiecewisePolynomialProfile* constant_pieces(const TableProfile* p, const char* name) {
-  if (!p) return nullptr;
-  const PiecewisePolynomialProfile* pp = p->piecewise_polynomial();
-  bool constant = pp != nullptr;
-  if (pp)
-    for (const AccelerationSegment& s : pp->segments()) constant = constant && s.jerk == 0;
-  if (!constant)
-    throw InvalidParameter(name, p->kind(),
-                           "must have piecewise-constant acceleration for the exact planar "
-                           "solver");
-  return pp;
-}
 
 // (w^e - w0^e) / e, its limit ln(w / w0) at e = 0, without cancellation for e near 0.
 double dpow(double w, double w0, double e) {
@@ -70,8 +39,8 @@ long long advance_planar_exact_point(const PlanarTableMotion& motion,
   require_planar_law(law);
   if (!std::isfinite(t_end) || t_end < st.t)
     throw InvalidParameter("t_end", t_end, "must be finite and >= the state's time");
-  const PiecewisePolynomialProfile* p1 = constant_pieces(motion.first, "first");
-  const PiecewisePolynomialProfile* p2 = constant_pieces(motion.second, "second");
+  const PiecewisePolynomialProfile* p1 = constant_pieces(motion.first, "first", "the exact planar solver");
+  const PiecewisePolynomialProfile* p2 = constant_pieces(motion.second, "second", "the exact planar solver");
   const double hold = law.static_coefficient() * field.level;
   const double mu = law.kinetic_forward() * field.level;
   double t = st.t, x = st.x, y = st.y, ux = st.ux, uy = st.uy;

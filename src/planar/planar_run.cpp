@@ -6,6 +6,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/planar/planar_exact_point.hpp"
+#include "selfalign/planar/planar_patch_integrator.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps, kMaxRecordedSamples
 
 namespace selfalign {
@@ -97,6 +98,36 @@ void exact_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist
   out.end = end;
 }
 
+// The patch integrator's run at the samples' times (simulate_planar, Method::integrator).
+void integrated_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist& twist,
+                    long long steps, long long every, const PlanarRunProgress& progress,
+                    PlanarTrajectory& out) {
+  const double h = p.options.step;
+  PlanarPatchState s = make_planar_patch_state(0, pose, twist);
+  PlanarRigidState end = make_planar_rigid_state(p.motion, 0, pose, twist);
+  const auto sample = [&](long long k) {
+    const double t = static_cast<double>(k) * h;
+    advance_planar_integrated(p.motion, p.field, p.law, p.part, p.integrator, s, t,
+                              &out.integration);
+    const PlanarTablePose table = table_pose(p.motion, t);
+    end.t = t, end.step_index = k, end.table = table;
+    end.pose = s.pose, end.twist = s.twist, end.mode = s.mode, end.pivot = s.pivot;
+    out.t.push_back(t);
+    out.x.push_back(s.pose.x), out.y.push_back(s.pose.y), out.angle.push_back(s.pose.angle);
+    out.ux.push_back(s.twist.ux), out.uy.push_back(s.twist.uy), out.omega.push_back(s.twist.omega);
+    out.table_x.push_back(table.x), out.table_y.push_back(table.y);
+    out.table_angle.push_back(table.angle);
+    out.mode.push_back(s.mode);
+    out.pivot.push_back(s.pivot);
+  };
+  sample(0);
+  for (long long k = every; k < steps + every; k += every) {
+    sample(std::min(k, steps));
+    if (progress) progress(std::min(k, steps), steps);
+  }
+  out.end = end;
+}
+
 }  // namespace
 
 PlanarTrajectory simulate_planar(const PlanarProblem& p, const PlanarPose& pose,
@@ -123,8 +154,17 @@ PlanarTrajectory simulate_planar(const PlanarProblem& p, const PlanarPose& pose,
     exact_run(p, pose, twist, steps, every, progress, out);
     return out;
   }
+  if (method == Method::integrator) {
+    if (!patch_integrator_applies(p))
+      throw InvalidParameter("method", "integrator",
+                             "the patch integrator needs a translating table with "
+                             "piecewise-constant accelerations (use time-stepping)");
+    integrated_run(p, pose, twist, steps, every, progress, out);
+    return out;
+  }
   if (method != Method::time_stepping)
-    throw InvalidParameter("method", to_string(method), "must be time-stepping or exact");
+    throw InvalidParameter("method", to_string(method),
+                           "must be time-stepping, exact or integrator");
   Recorder rec(out, every);
   PlanarRigidState s = make_planar_rigid_state(p.motion, 0, pose, twist);
   rec.record(s);

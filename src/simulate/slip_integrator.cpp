@@ -178,6 +178,7 @@ IntegratorStatistics& IntegratorStatistics::operator+=(const IntegratorStatistic
   events += o.events;
   slips += o.slips;
   sticks += o.sticks;
+  pivots += o.pivots;
   return *this;
 }
 
@@ -188,6 +189,7 @@ IntegratorStatistics& IntegratorStatistics::operator-=(const IntegratorStatistic
   events -= o.events;
   slips -= o.slips;
   sticks -= o.sticks;
+  pivots -= o.pivots;
   return *this;
 }
 

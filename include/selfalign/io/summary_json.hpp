@@ -22,9 +22,11 @@ namespace selfalign {
 nlohmann::json law_json(const FrictionLaw& law, const OutputUnits& units, double mu);
 
 /// The slip integrator's provenance: stepper, tolerances, steps, rejected steps, right-hand-side
-/// evaluations and events; null unless method is Method::integrator.
+/// evaluations and events; null unless method is Method::integrator. `stepper` names how the
+/// steps were taken (the 1-D slip integrator's dense output by default).
 nlohmann::json integrator_json(Method method, const IntegratorOptions& options,
-                               const IntegratorStatistics& statistics);
+                               const IntegratorStatistics& statistics,
+                               const char* stepper = "Boost.Odeint runge_kutta_dopri5, dense output");
 
 /// The friction map as JSON: kind "two-region" (x_mu, width, c_mu), "field" (footprint, its
 /// width, the field's node count, whether the exact solver takes it) or "uniform"; lengths in

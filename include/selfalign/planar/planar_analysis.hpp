@@ -14,6 +14,7 @@
 
 #include "selfalign/analysis/sweep.hpp"  // ProgressCallback
 #include "selfalign/planar/planar_rigid.hpp"
+#include "selfalign/simulate/slip_integrator.hpp"  // IntegratorOptions
 
 namespace selfalign {
 
@@ -24,6 +25,7 @@ struct PlanarProblem {
   FrictionLaw law;
   RigidPart part;
   TimeSteppingOptions options;
+  IntegratorOptions integrator;  ///< the patch integrator's tolerances (Method::integrator)
 };
 
 /// Throws InvalidParameter naming the first invalid part (motion, field, law, part, step); the
@@ -37,6 +39,11 @@ long long steps_per_period(const PlanarProblem& problem);
 /// its centre of mass, a uniform field, a table that translates (no rotation) with
 /// piecewise-constant accelerations along both directions.
 bool exact_point_applies(const PlanarProblem& problem);
+
+/// Whether the patch integrator (planar_patch_integrator.hpp) takes the problem: a table that
+/// translates (no rotation, no normal motion) with piecewise-constant accelerations along both
+/// directions; any part, field and planar law.
+bool patch_integrator_applies(const PlanarProblem& problem);
 
 /// Throws InvalidParameter naming `name` when `periods` periods of one run exceed the
 /// time-stepping cap of simulate.hpp (kMaxTimeSteps = 1e9 steps).

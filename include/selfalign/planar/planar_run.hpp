@@ -5,7 +5,9 @@
 /// at t = 0, Moreau's rigid-part stepper (planar_rigid.hpp) advances `steps` steps; the state
 /// is recorded at t = 0, every `every` steps, and at the last step. With Method::exact the
 /// exact point solver (planar_exact_point.hpp) computes the same run where it applies
-/// (exact_point_applies), recorded at the same times (the step h then only sets them).
+/// (exact_point_applies), and with Method::integrator the patch integrator
+/// (planar_patch_integrator.hpp) for any part on a translating table with piecewise-constant
+/// accelerations, recorded at the same times (the step h then only sets them).
 
 #include <cstdint>
 #include <functional>
@@ -13,6 +15,7 @@
 
 #include "selfalign/planar/planar_analysis.hpp"
 #include "selfalign/simulate/method.hpp"
+#include "selfalign/simulate/slip_integrator.hpp"  // IntegratorStatistics
 
 namespace selfalign {
 
@@ -25,6 +28,7 @@ struct PlanarTrajectory {
   std::vector<PatchMode> mode;             ///< how the step that ended there ended
   std::vector<std::int32_t> pivot;         ///< the pivot contact for mode pivot, else -1
   PlanarCensus census;                     ///< every step of the run (not only the samples)
+  IntegratorStatistics integration;        ///< the patch integrator's work (Method::integrator)
   PlanarRigidState end;                    ///< the state after the last step
   std::size_t size() const noexcept { return t.size(); }
 };
@@ -50,7 +54,11 @@ using PlanarRunProgress = std::function<void(long long done, long long total)>;
 /// accelerations; InvalidParameter naming "method" otherwise, and for integrator). An exact run
 /// records the exact state at the sample times: mode stick where the relative velocity is 0,
 /// else slip; the angle turns at the start's constant omega (no torque about a centred point);
-/// the census stays empty (no steps).
+/// the census stays empty (no steps). Method::integrator: the patch integrator
+/// (planar_patch_integrator.hpp) with problem.integrator's tolerances, any part and field on a
+/// translating table with piecewise-constant accelerations (InvalidParameter naming "method"
+/// for a rotating table, else the integrator's own parameter), sampled at the same times with
+/// the current mode and pivot; `integration` holds its work, the census stays empty.
 PlanarTrajectory simulate_planar(const PlanarProblem& problem, const PlanarPose& pose,
                                  const PlanarTwist& twist, long long steps, long long every = 1,
                                  const PlanarRunProgress& progress = {},

@@ -69,6 +69,7 @@ struct IntegratorStatistics {
   long long rhs_evaluations = 0;   ///< right-hand-side evaluations
   long long events = 0;            ///< located events: x' = 0, boundaries, stick breaks
   long long slips = 0, sticks = 0; ///< intervals integrated / held
+  long long pivots = 0;            ///< pivots (the planar patch integrator only)
 
   IntegratorStatistics& operator+=(const IntegratorStatistics& o) noexcept;
   IntegratorStatistics& operator-=(const IntegratorStatistics& o) noexcept;
