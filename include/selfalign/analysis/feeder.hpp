@@ -1,0 +1,103 @@
+#pragma once
+/// \file feeder.hpp
+/// The vibratory feeder (issue 23, first part): a track inclined by theta, driven along a line at
+/// the vibration angle psi to its surface, so that the normal load m (g cos theta + z''(t))
+/// changes over the period and the friction bound with it (docs/feeder.md).
+///
+///  - the classic sinusoidal drive (FeederDrive): x = a0 cos(psi) sin(w t) along the track,
+///    z = a0 sin(psi) sin(w t) along its normal; its machine number K = a0 w^2 / g and throw
+///    number Gamma = K sin(psi) / cos(theta);
+///  - the closed-form onsets (feeder_onsets): the least K at which a part at rest on the track
+///    first slips forward, slips backward, or lifts off, from the stick inequality
+///    |a_x + g sin theta| <= mu_s (g cos theta + a_z);
+///  - the track as a contact-core model (FeederTable, feeder_model): the table's motion along
+///    the track and its normal, gravity and the incline (core::Gravity), one 1-D part; and a
+///    run of it by Moreau's time-stepping (feeder_run): the first event from rest, the mean
+///    conveying velocity over the last period and the stick fraction.
+/// The core integrates no flight yet: a run that reaches lift-off stops there and has no
+/// conveying velocity (NaN).
+
+#include <memory>
+#include <string>
+
+#include "selfalign/core/model.hpp"
+#include "selfalign/friction/friction_law.hpp"
+#include "selfalign/profiles/table_profile.hpp"
+
+namespace selfalign {
+
+/// The sinusoidal feeder drive on an inclined track. Dimensionless as the model: accelerations
+/// in the model's unit (mu_1 g in the paper's, where g = 1 / mu_1).
+struct FeederDrive {
+  double amplitude = 0.0;        ///< a0 along the vibration line [-], > 0
+  double period = 1.0;           ///< 2 pi / w [-], > 0
+  double vibration_angle = 0.0;  ///< psi [rad], in (-pi/2, pi/2)
+  double incline = 0.0;          ///< theta [rad], in (-pi/2, pi/2); > 0: the track rises along +x
+  double g = 1.0;                ///< gravity in model units [-], > 0
+};
+
+/// Throws InvalidParameter naming "amplitude", "period", "vibration_angle" (|psi| >= pi/2),
+/// "incline" (|theta| >= pi/2) or "g".
+void validate(const FeederDrive& drive);
+
+/// K = a0 w^2 / g [-]: the drive's peak acceleration over g.
+double machine_number(const FeederDrive& drive);
+/// Gamma = K sin(psi) / cos(theta) [-]: the part lifts off where |Gamma| > 1.
+double throw_number(const FeederDrive& drive);
+
+/// The onsets as critical machine numbers K (docs/feeder.md): the least K at which a part at
+/// rest on the track, held while |a_x + g sin theta| <= mu_s (g cos theta + a_z), first slips
+/// forward (+x), slips backward, or lifts off (g cos theta + a_z < 0). +inf: never at any K;
+/// 0: the part is not held even at rest (the incline exceeds the friction angle).
+struct FeederOnsets {
+  double forward_slip = 0, backward_slip = 0, lift_off = 0;
+};
+
+/// \param static_friction mu_s, the absolute static coefficient [-] (> 0): s m / g in model
+/// units (s the law's static coefficient, m the friction level). Throws InvalidParameter
+/// naming "vibration_angle", "incline" or "static_friction".
+FeederOnsets feeder_onsets(double vibration_angle, double incline, double static_friction);
+
+/// The drive's table motion (it owns its profiles): along the track (e1 = x) a0 cos(psi)
+/// sin(w t), along its normal a0 sin(psi) sin(w t) (none at psi = 0), and gravity with the
+/// incline (downhill along -x for theta > 0).
+class FeederTable {
+ public:
+  explicit FeederTable(const FeederDrive& drive);
+  const PlanarTableMotion& motion() const noexcept { return motion_; }
+  core::Gravity gravity() const noexcept { return gravity_; }
+  const FeederDrive& drive() const noexcept { return drive_; }
+
+ private:
+  FeederDrive drive_;
+  std::shared_ptr<const TableProfile> along_, normal_;
+  PlanarTableMotion motion_;
+  core::Gravity gravity_;
+};
+
+/// A model of one 1-D part (a point footprint, `law`) on the table's track at the uniform
+/// level `level`, Moreau's step h = period / steps_per_period (>= 2; InvalidParameter naming
+/// "steps_per_period" otherwise). The table must outlive the model.
+core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
+                         long long steps_per_period);
+
+/// The first thing that happens to a part at rest on the track.
+enum class FeederEvent { none, forward_slip, backward_slip, lift_off };
+/// "none", "forward slip", "backward slip", "lift-off".
+const char* feeder_event_name(FeederEvent event) noexcept;
+
+struct FeederRun {
+  FeederEvent first_event = FeederEvent::none;
+  double first_event_time = 0;  ///< the end of the step where it happened [-]; NaN for none
+  bool lifted_off = false;      ///< the run stopped at a lift-off (the core has no flight)
+  /// Mean velocity along the track over the last period (relative to the track, which does
+  /// not advance over a period) [-]; NaN when the run lifted off.
+  double velocity = 0;
+  double stick_fraction = 0;  ///< of the last period's steps; NaN when the run lifted off
+};
+
+/// From rest at x = 0, t = 0, `periods` (>= 1) periods of `period` [-] of the model by the
+/// contact core's Moreau step (core/step.hpp). The model must have one SliderBody.
+FeederRun feeder_run(const core::Model& model, double period, long long periods);
+
+}  // namespace selfalign

@@ -1,0 +1,140 @@
+#include "selfalign/analysis/feeder.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "selfalign/core/state.hpp"
+#include "selfalign/core/step.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/profiles/fourier.hpp"
+#include "selfalign/special_values.hpp"
+
+namespace selfalign {
+namespace {
+
+void require_angle(const char* name, double angle) {
+  if (!(std::abs(angle) < 0.5 * std::numbers::pi))
+    throw InvalidParameter(name, angle, "must be in (-pi/2, pi/2) rad");
+}
+
+// The least K > 0 with K |slope| > rhs (docs/feeder.md): 0 when rhs <= 0 (violated at rest),
+// +inf when the drive does not enter the inequality (slope 0).
+double onset(double rhs, double slope) {
+  if (rhs <= 0) return 0.0;
+  return slope == 0 ? kInf : rhs / std::abs(slope);
+}
+
+}  // namespace
+
+void validate(const FeederDrive& d) {
+  require_positive("amplitude", d.amplitude);
+  require_positive("period", d.period);
+  require_angle("vibration_angle", d.vibration_angle);
+  require_angle("incline", d.incline);
+  require_positive("g", d.g);
+}
+
+double machine_number(const FeederDrive& d) {
+  const double w = 2 * std::numbers::pi / d.period;
+  return d.amplitude * w * w / d.g;
+}
+
+double throw_number(const FeederDrive& d) {
+  return machine_number(d) * std::sin(d.vibration_angle) / std::cos(d.incline);
+}
+
+FeederOnsets feeder_onsets(double psi, double theta, double mu) {
+  require_angle("vibration_angle", psi);
+  require_angle("incline", theta);
+  require_positive("static_friction", mu);
+  // With a_x = -K g cos(psi) s, a_z = -K g sin(psi) s, s = sin(w t) in [-1, 1]:
+  //   forward:  K s (cos psi + mu sin psi) > sin theta + mu cos theta,
+  //   backward: K s (mu sin psi - cos psi) > mu cos theta - sin theta,
+  //   lift-off: K s sin psi > cos theta;
+  // each first met at s = +-1, where |s| = 1.
+  const double c = std::cos(psi), s = std::sin(psi), ct = std::cos(theta), st = std::sin(theta);
+  return {onset(st + mu * ct, c + mu * s), onset(mu * ct - st, mu * s - c), onset(ct, s)};
+}
+
+FeederTable::FeederTable(const FeederDrive& drive) : drive_(drive) {
+  validate(drive);
+  const double psi = drive.vibration_angle, a0 = drive.amplitude;
+  along_ = std::make_shared<FourierProfile>(drive.period, std::vector<double>{0.0},
+                                            std::vector<double>{a0 * std::cos(psi)});
+  if (std::sin(psi) != 0)
+    normal_ = std::make_shared<FourierProfile>(drive.period, std::vector<double>{0.0},
+                                               std::vector<double>{a0 * std::sin(psi)});
+  motion_.first = along_.get();
+  motion_.normal = normal_.get();
+  gravity_ = {drive.g, std::abs(drive.incline), drive.incline > 0 ? -1.0 : 1.0, 0.0};
+}
+
+core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
+                         long long steps_per_period) {
+  if (!(steps_per_period >= 2 && steps_per_period <= 100000000))
+    throw InvalidParameter("steps_per_period", static_cast<double>(steps_per_period),
+                           "must be in [2, 1e8]");
+  core::Model model;
+  model.motion = table.motion();
+  model.field = UniformPlanarField{level};
+  model.bodies = {core::SliderBody{PointFootprint{}, law}};
+  model.options = {table.drive().period / static_cast<double>(steps_per_period), 0.5};
+  model.gravity = table.gravity();
+  core::validate(model);
+  return model;
+}
+
+const char* feeder_event_name(FeederEvent event) noexcept {
+  switch (event) {
+    case FeederEvent::none: return "none";
+    case FeederEvent::forward_slip: return "forward slip";
+    case FeederEvent::backward_slip: return "backward slip";
+    case FeederEvent::lift_off: return "lift-off";
+  }
+  return "none";
+}
+
+FeederRun feeder_run(const core::Model& model, double period, long long periods) {
+  core::validate(model);
+  if (model.bodies.size() != 1 || !std::holds_alternative<core::SliderBody>(model.bodies[0]))
+    throw InvalidParameter("bodies", static_cast<double>(model.bodies.size()),
+                           "the feeder run takes one 1-D part (SliderBody)");
+  require_positive("period", period);
+  if (periods < 1) throw InvalidParameter("periods", static_cast<double>(periods), "must be >= 1");
+  const double n = period / model.options.step;
+  if (!(std::abs(n - std::round(n)) <= 1e-9 * n) || n < 1)
+    throw InvalidParameter("period", period, "must be a whole number of the model's steps");
+  const long long per_period = std::llround(n);
+  const std::vector<PlanarPose> poses(1);
+  const std::vector<PlanarTwist> twists(1);
+  core::State state = core::make_state(model, 0.0, poses, twists);
+  FeederRun run;
+  run.first_event_time = NAN;
+  double x_last = 0;
+  long long sticks = 0;
+  for (long long p = 0; p < periods; ++p) {
+    const bool last = p + 1 == periods;
+    if (last) x_last = state.bodies[0].pose.x;
+    for (long long k = 0; k < per_period; ++k) {
+      if (core::step(model, state, 1) == 0 || state.status == core::StepStatus::lift_off) {
+        run.lifted_off = true;
+        if (run.first_event == FeederEvent::none)
+          run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
+        run.velocity = run.stick_fraction = NAN;
+        return run;
+      }
+      const double u = state.bodies[0].twist.ux;
+      if (run.first_event == FeederEvent::none && u != 0) {
+        run.first_event = u > 0 ? FeederEvent::forward_slip : FeederEvent::backward_slip;
+        run.first_event_time = state.t;
+      }
+      if (last && u == 0) ++sticks;
+    }
+  }
+  run.velocity = (state.bodies[0].pose.x - x_last) / period;
+  run.stick_fraction = static_cast<double>(sticks) / static_cast<double>(per_period);
+  return run;
+}
+
+}  // namespace selfalign
