@@ -16,6 +16,10 @@
 #include <vector>
 
 #include "selfalign/analysis/feeder.hpp"
+#include "selfalign/analysis/feeder_exact.hpp"
+#include "selfalign/friction/friction_map.hpp"
+#include "selfalign/profiles/three_phase.hpp"
+#include "selfalign/simulate/exact.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
@@ -132,6 +136,107 @@ TEST(Feeder, ASquareWaveDriveConveysByTheLoadModulationAsTheClosedFormSays) {
     if (n > 200) EXPECT_LT(error, previous / 5) << n;  // order ~1: ~10x per decade
     previous = error;
   }
+}
+
+// The square wave's two profiles (along the track and along its normal).
+struct SquareWaveTrack {
+  std::vector<double> halves;
+  PiecewisePolynomialProfile along, normal;
+  explicit SquareWaveTrack(const SquareWave& w)
+      : halves{w.T / 2, w.T / 2},
+        along(PiecewisePolynomialProfile::from_accelerations(
+            halves, std::vector<double>{w.A * std::cos(w.psi), -w.A * std::cos(w.psi)})),
+        normal(PiecewisePolynomialProfile::from_accelerations(
+            halves, std::vector<double>{w.A * std::sin(w.psi), -w.A * std::sin(w.psi)})) {}
+  FeederTrack track(const SquareWave& w) const {
+    return {&along, &normal, w.g, w.theta, 1.0, FrictionLaw(w.mu_s, w.mu_k)};
+  }
+};
+
+TEST(FeederExact, WithoutNormalMotionOnALevelTrackItIsTheOneDimensionalExactSolver) {
+  // psi = 0, theta = 0: the paper's model. Sect. 7.2's profile, s = k and s > k, g = 2 (any g:
+  // the bound is s m (g cos 0) / g = s m): the 1-D exact solver's trajectory over 30 periods.
+  const ThreePhaseProfile paper({1.0, 0.084, 3.0, 0.9});
+  const ThreePhaseProfile case3({1.0, 0.084, 2.3, 1.3});
+  for (const ThreePhaseProfile* profile : {&paper, &case3}) {
+    for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.3, 1.0)}) {
+      const UniformFriction one_d;
+      const ExactSetup setup{*profile->piecewise_polynomial(), *one_d.piecewise_affine(), law};
+      ExactState ref = make_exact_state(setup, {0, 0, 0});
+      const FeederTrack track{profile, nullptr, 2.0, 0.0, 1.0, law};
+      FeederExactState s;
+      double worst = 0;
+      for (int p = 1; p <= 30; ++p) {
+        advance_exact(setup, ref, p);
+        advance_feeder_exact(track, s, p);
+        worst = std::max({worst, std::abs(s.x - ref.object.x) / (1 + std::abs(ref.object.x)),
+                          std::abs(s.u - ref.object.xd)});
+      }
+      EXPECT_LT(worst, 1e-12) << law.describe();
+      EXPECT_GT(std::abs(s.x), 1e-2);
+    }
+  }
+}
+
+// Four periods from rest by the exact solver: the state, its statistics, and the distance
+// covered in the fourth (a steady period: the first differs, it starts at rest).
+struct FourPeriods {
+  FeederExactState end;
+  FeederExactStatistics stats;
+  double distance = 0;
+};
+FourPeriods four_periods(const SquareWave& w, const SquareWaveTrack& sq) {
+  FourPeriods r;
+  advance_feeder_exact(sq.track(w), r.end, 3 * w.T, &r.stats);
+  const double x3 = r.end.x;
+  advance_feeder_exact(sq.track(w), r.end, 4 * w.T, &r.stats);
+  r.distance = r.end.x - x3;
+  return r;
+}
+
+TEST(FeederExact, TheSquareWaveDriveConveysAtTheClosedFormSpeed) {
+  const SquareWave w;
+  const SquareWaveTrack sq(w);
+  const FourPeriods r = four_periods(w, sq);
+  if (print()) std::printf("exact square wave: %.15f closed form %.15f\n", r.distance / w.T, w.speed());
+  EXPECT_NEAR(r.distance / w.T, w.speed(), 1e-12);
+  EXPECT_EQ(r.stats.lift_offs, 0);
+}
+
+// Hopping: the same square wave unloads the part below zero in its second half (A sin psi >
+// g cos theta): it lifts off at T/2 with the track's velocity, flies under h'' = -n2 > 0, then
+// h'' = -n1 < 0 from T, and lands at T + tau_L with tau_L = (w2 + sqrt(w2^2 + 2 n1 h2)) / n1,
+// h2 = -n2 (T/2)^2 / 2, w2 = -n2 T/2 (the flight equation of this drive). Friction so high that
+// it is held whenever it is on the track and sticks at landing: the distance per period is the
+// flight's, in closed form: d = c2 (T/2)^2 / 2 + c2 (T/2) tau_L - c1 tau_L^2 / 2
+// with c2 = A cos psi - g sin theta, c1 = A cos psi + g sin theta (no friction in flight).
+TEST(FeederExact, HoppingFliesAndLandsAsTheFlightEquationSays) {
+  SquareWave w;
+  w.A = 2.5, w.psi = 0.6, w.theta = 0.05, w.mu_s = 20, w.mu_k = 20;
+  ASSERT_LT(w.n2(), 0);
+  const double h2 = -0.5 * w.n2() * (w.T / 2) * (w.T / 2), w2 = -w.n2() * w.T / 2;
+  const double tau_l = (w2 + std::sqrt(w2 * w2 + 2 * w.n1() * h2)) / w.n1();
+  ASSERT_LT(tau_l, w.T / 2);
+  const double c2 = w.A * std::cos(w.psi) - w.g * std::sin(w.theta);
+  const double c1 = w.A * std::cos(w.psi) + w.g * std::sin(w.theta);
+  const double d = 0.5 * c2 * (w.T / 2) * (w.T / 2) + c2 * (w.T / 2) * tau_l - 0.5 * c1 * tau_l * tau_l;
+  const SquareWaveTrack sq(w);
+  const FourPeriods r = four_periods(w, sq);
+  const FeederExactState& s = r.end;
+  const FeederExactStatistics& stats = r.stats;
+  if (print()) std::printf("hopping: distance %.15f closed form %.15f, tau_L %.6f, lift-offs %lld landings %lld (stick %lld)\n", r.distance, d, tau_l, stats.lift_offs, stats.landings, stats.stick_landings);
+  EXPECT_NEAR(r.distance, d, 1e-12);
+  EXPECT_EQ(stats.lift_offs, 4);
+  EXPECT_EQ(stats.landings, 3);  // the fourth lands at 4 T + tau_L
+  EXPECT_EQ(stats.stick_landings, 3);
+  // In flight just before the landing, held just after it.
+  FeederExactState before = s, after = s;
+  advance_feeder_exact(sq.track(w), before, 4 * w.T + tau_l - 1e-9);
+  advance_feeder_exact(sq.track(w), after, 4 * w.T + tau_l + 1e-9);
+  EXPECT_EQ(before.mode, FeederMode::flight);
+  EXPECT_GT(before.h, 0);
+  EXPECT_EQ(after.mode, FeederMode::stick);
+  EXPECT_EQ(after.h, 0);
 }
 
 TEST(Feeder, BadInputNamesTheParameter) {

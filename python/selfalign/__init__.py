@@ -184,6 +184,14 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     model_parameters,
     with_parameters,
     planar_model_parameters,
+    FeederDrive,
+    FeederEvent,
+    FeederOnsets,
+    FeederRun,
+    feeder_onsets,
+    feeder_run,
+    machine_number,
+    throw_number,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

@@ -29,6 +29,7 @@ void bind_design(py::module_& m);        // design_process: SI limits -> recomme
 void bind_uncertainty(py::module_& m);   // distributions, Monte Carlo, worst case, design_robust
 void bind_planar(py::module_& m);        // contact patches, planar fields, rigid-part runs (issue 13)
 void bind_parameters(py::module_& m);    // the parameter view: model_parameters, with_parameters
+void bind_feeder(py::module_& m);        // the vibratory feeder: drive, onsets, runs (issue 23)
 
 /// Rules for every class bound above (classes.cpp): an object whose __init__ was not called
 /// raises TypeError when used; pickling under every protocol, or a TypeError. Called last.

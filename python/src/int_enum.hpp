@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "selfalign/analysis/feeder.hpp"
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/jerk_limited_three_phase.hpp"
@@ -94,6 +95,10 @@ struct type_caster<selfalign::ArcEnd> : int_enum_caster<selfalign::ArcEnd> {
 template <>
 struct type_caster<selfalign::JerkLimitedCase0> : int_enum_caster<selfalign::JerkLimitedCase0> {
   static constexpr auto name = const_name("JerkLimitedCase0");
+};
+template <>
+struct type_caster<selfalign::FeederEvent> : int_enum_caster<selfalign::FeederEvent> {
+  static constexpr auto name = const_name("FeederEvent");
 };
 
 }  // namespace pybind11::detail

@@ -26,5 +26,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_uncertainty(m);
   bind_planar(m);
   bind_parameters(m);
+  bind_feeder(m);
   finish_classes(m);
 }

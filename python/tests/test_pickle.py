@@ -170,6 +170,10 @@ EXAMPLES = {
     "PlanarPose": lambda: sa.PlanarPose(0.1, -0.2, 0.3),
     "PlanarTwist": lambda: sa.PlanarTwist(0.1, -0.2, 2.0),
     "PlanarCensus": lambda: sa.PlanarCensus(3, 1, 2),
+    "FeederDrive": lambda: sa.FeederDrive(1e-3, 0.02, 0.3, 0.05, 9.81),
+    "FeederOnsets": lambda: sa.feeder_onsets(0.3, 0.05, 0.5),
+    "FeederRun": lambda: sa.feeder_run(sa.FeederDrive(0.02, vibration_angle=0.3), periods=2,
+                                       steps_per_period=200),
     "PlanarProblem": lambda: sa.PlanarProblem(
         PROFILE, sa.ThreePhaseProfile(0.5, 0.02, 2.5, 1.5), field=example("HalfPlaneStepField"),
         part=example("RigidPart"), law=sa.FrictionLaw(1.2, 1.0), step=0.01, theta=0.6),

@@ -28,11 +28,11 @@ double onset(double rhs, double slope) {
 }  // namespace
 
 void validate(const FeederDrive& d) {
-  require_positive("amplitude", d.amplitude);
-  require_positive("period", d.period);
+  require_positive_moderate("amplitude", d.amplitude);
+  require_positive_moderate("period", d.period);
   require_angle("vibration_angle", d.vibration_angle);
   require_angle("incline", d.incline);
-  require_positive("g", d.g);
+  require_positive_moderate("g", d.g);
 }
 
 double machine_number(const FeederDrive& d) {

@@ -1,0 +1,121 @@
+// The vibratory feeder (analysis/feeder.hpp, docs/feeder.md): the drive, its closed-form
+// onsets, and runs of the contact core.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "record.hpp"
+#include "repr.hpp"
+#include "selfalign/analysis/feeder.hpp"
+#include "selfalign/error.hpp"
+
+namespace selfalign::python {
+
+void bind_feeder(py::module_& m) {
+  py::class_<FeederDrive> drive(m, "FeederDrive", R"doc(
+The sinusoidal feeder drive on an inclined track (docs/feeder.md): x = a0 cos(psi) sin(w t)
+along the track, z = a0 sin(psi) sin(w t) along its normal, w = 2 pi / period, the track
+inclined by `incline` (> 0: rising along +x), gravity `g` in model units (1/mu_1 in the
+paper's; any consistent units, e.g. SI with g = 9.81). Raises InvalidParameter naming
+amplitude, period, vibration_angle (|psi| >= pi/2), incline (|theta| >= pi/2) or g.)doc");
+  drive
+      .def(py::init([](double amplitude, double period, double vibration_angle, double incline,
+                       double g) {
+             FeederDrive d{amplitude, period, vibration_angle, incline, g};
+             validate(d);
+             return d;
+           }),
+           py::arg("amplitude"), py::arg("period") = 1.0, py::arg("vibration_angle") = 0.0,
+           py::arg("incline") = 0.0, py::arg("g") = 1.0)
+      .def_readonly("amplitude", &FeederDrive::amplitude, "a0 along the vibration line [-]")
+      .def_readonly("period", &FeederDrive::period, "2 pi / w [-]")
+      .def_readonly("vibration_angle", &FeederDrive::vibration_angle, "psi [rad]")
+      .def_readonly("incline", &FeederDrive::incline, "theta [rad]")
+      .def_readonly("g", &FeederDrive::g, "gravity in model units [-]")
+      .def("__repr__", [](const FeederDrive& d) {
+        return Repr("FeederDrive")("amplitude", d.amplitude)("period", d.period)(
+                   "vibration_angle", d.vibration_angle)("incline", d.incline)("g", d.g)
+            .str();
+      });
+  def_record(
+      drive,
+      [](double a, double p, double psi, double theta, double g) {
+        FeederDrive d{a, p, psi, theta, g};
+        validate(d);
+        return d;
+      },
+      field("amplitude", &FeederDrive::amplitude), field("period", &FeederDrive::period),
+      field("vibration_angle", &FeederDrive::vibration_angle),
+      field("incline", &FeederDrive::incline), field("g", &FeederDrive::g));
+  m.def("machine_number", &machine_number, py::arg("drive"),
+        "K = a0 w^2 / g: the drive's peak acceleration over g.");
+  m.def("throw_number", &throw_number, py::arg("drive"),
+        "Gamma = K sin(psi) / cos(theta): the part lifts off where |Gamma| > 1.");
+
+  using O = FeederOnsets;
+  py::class_<O> onsets(m, "FeederOnsets", R"doc(
+The onsets as critical machine numbers K (feeder_onsets): +inf never, 0 not held even at rest.)doc");
+  onsets.def_readonly("forward_slip", &O::forward_slip, "K of the first forward slip")
+      .def_readonly("backward_slip", &O::backward_slip, "K of the first backward slip")
+      .def_readonly("lift_off", &O::lift_off, "K of the lift-off (Gamma = 1)")
+      .def("__repr__", [](const O& o) {
+        return Repr("FeederOnsets")("forward_slip", o.forward_slip)(
+                   "backward_slip", o.backward_slip)("lift_off", o.lift_off)
+            .str();
+      });
+  def_record(onsets, field("forward_slip", &O::forward_slip),
+             field("backward_slip", &O::backward_slip), field("lift_off", &O::lift_off));
+  m.def("feeder_onsets", &feeder_onsets, py::arg("vibration_angle"), py::arg("incline"),
+        py::arg("static_friction"), R"doc(
+The closed-form onsets (docs/feeder.md) of a part at rest on the track under the sinusoidal
+drive: the least machine number K at which it first slips forward, slips backward, or lifts
+off. static_friction: the absolute static coefficient mu_s (s m / g in model units). Returns
+FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_friction.)doc");
+
+  bind_int_enum<FeederEvent>(m, "FeederEvent", "The first thing that happens to a part at rest on the track.",
+                             {{"none", FeederEvent::none},
+                              {"forward_slip", FeederEvent::forward_slip},
+                              {"backward_slip", FeederEvent::backward_slip},
+                              {"lift_off", FeederEvent::lift_off}});
+  using R = FeederRun;
+  py::class_<R> run(m, "FeederRun", "A run of a part on the feeder track (feeder_run).");
+  run.def_readonly("first_event", &R::first_event, "FeederEvent")
+      .def_readonly("first_event_time", &R::first_event_time,
+                    "the end of the step where it happened [-]; NaN for none")
+      .def_readonly("lifted_off", &R::lifted_off,
+                    "the run stopped at a lift-off (no flight is integrated yet)")
+      .def_readonly("velocity", &R::velocity,
+                    "mean velocity along the track over the last period [-]; NaN if lifted off")
+      .def_readonly("stick_fraction", &R::stick_fraction,
+                    "of the last period's steps; NaN if lifted off")
+      .def("__repr__", [](const R& r) {
+        return Repr("FeederRun")
+            .raw("first_event", std::string("FeederEvent.") + feeder_event_name(r.first_event))(
+                "first_event_time", r.first_event_time)("lifted_off", r.lifted_off)(
+                "velocity", r.velocity)("stick_fraction", r.stick_fraction)
+            .str();
+      });
+  def_record(run, field("first_event", &R::first_event),
+             field("first_event_time", &R::first_event_time),
+             field("lifted_off", &R::lifted_off), field("velocity", &R::velocity),
+             field("stick_fraction", &R::stick_fraction));
+  m.def(
+      "feeder_run",
+      [](const FeederDrive& drive, const FrictionLaw& law, double level,
+         long long steps_per_period, long long periods) {
+        const FeederTable table(drive);
+        return feeder_run(feeder_model(table, law, level, steps_per_period), drive.period,
+                          periods);
+      },
+      py::arg("drive"), py::arg("law") = FrictionLaw{}, py::kw_only(), py::arg("level") = 1.0,
+      py::arg("steps_per_period") = 2000, py::arg("periods") = 20,
+      py::call_guard<py::gil_scoped_release>(), R"doc(
+A part at rest at x = 0, t = 0 on the drive's track (one 1-D part, the uniform friction level
+`level`, `law`), `periods` periods by the contact core's Moreau step with `steps_per_period`
+steps: the first event, the mean conveying velocity and stick fraction of the last period
+(FeederRun). The friction bound is law coefficient x level x (g cos theta + z'') / g, so the
+absolute coefficient is s level / g. A run that reaches lift-off stops there (no flight yet):
+lifted_off, velocity NaN. Raises InvalidParameter naming the bad argument. Runs without the
+GIL.)doc");
+}
+
+}  // namespace selfalign::python

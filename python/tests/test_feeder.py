@@ -1,0 +1,52 @@
+"""The vibratory feeder from Python (docs/feeder.md): the closed-form onsets by hand, and the
+contact core's run finding them (the second method), in SI units."""
+import math
+
+import pytest
+
+import selfalign as sa
+
+
+def test_onsets_by_hand():
+    # psi = theta = 0: both slips at K = mu_s, no lift-off; Gamma = 1 is the lift-off.
+    o = sa.feeder_onsets(0.0, 0.0, 0.4)
+    assert o.forward_slip == pytest.approx(0.4, rel=1e-15)
+    assert o.backward_slip == pytest.approx(0.4, rel=1e-15)
+    assert math.isinf(o.lift_off)
+    assert sa.feeder_onsets(0.5, 0.1, 0.4).lift_off == pytest.approx(math.cos(0.1) / math.sin(0.5))
+    drive = sa.FeederDrive(amplitude=1e-3, period=0.02, vibration_angle=0.5, incline=0.1, g=9.81)
+    K = 1e-3 * (2 * math.pi / 0.02) ** 2 / 9.81
+    assert sa.machine_number(drive) == pytest.approx(K, rel=1e-14)
+    assert sa.throw_number(drive) == pytest.approx(K * math.sin(0.5) / math.cos(0.1), rel=1e-14)
+
+
+def test_a_run_in_si_units_slips_forward_just_above_the_onset():
+    # A 50 Hz drive at psi = 20 deg on a level track, mu_s = 0.5, mu_k = 0.4, in SI (g = 9.81,
+    # level g so that the friction bound is mu (g cos theta + z'')): nothing at 0.97 times the
+    # forward onset, a forward slip at 1.03 times it, and a positive conveying velocity.
+    psi, mu_s, g, period = math.radians(20), 0.5, 9.81, 0.02
+    onset = sa.feeder_onsets(psi, 0.0, mu_s).forward_slip
+    w = 2 * math.pi / period
+    law = sa.FrictionLaw(mu_s, 0.4)
+    below = sa.feeder_run(sa.FeederDrive(0.97 * onset * g / w**2, period, psi, 0.0, g), law,
+                          level=g, steps_per_period=4000, periods=3)
+    above = sa.feeder_run(sa.FeederDrive(1.5 * onset * g / w**2, period, psi, 0.0, g), law,
+                          level=g, steps_per_period=4000, periods=10)
+    assert below.first_event == sa.FeederEvent.none and below.stick_fraction == 1.0
+    assert above.first_event == sa.FeederEvent.forward_slip
+    assert above.velocity > 0 and not above.lifted_off
+    lifted = sa.feeder_run(sa.FeederDrive(1.03 * sa.feeder_onsets(psi, 0.0, mu_s).lift_off * g / w**2,
+                                          period, psi, 0.0, g), law, level=g, periods=3)
+    assert lifted.lifted_off and math.isnan(lifted.velocity)
+
+
+def test_bad_input_names_the_parameter():
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.FeederDrive(amplitude=1e-3, vibration_angle=math.pi / 2)
+    assert e.value.name == "vibration_angle"
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.feeder_onsets(0.1, 0.0, -1.0)
+    assert e.value.name == "static_friction"
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.feeder_run(sa.FeederDrive(1e-3), steps_per_period=1)
+    assert e.value.name == "steps_per_period"

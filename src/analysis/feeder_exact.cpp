@@ -1,0 +1,134 @@
+#include "selfalign/analysis/feeder_exact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "../planar/acceleration_pieces.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/special_values.hpp"
+
+namespace selfalign {
+namespace {
+
+constexpr const char* kSolver = "the exact feeder solver";
+
+// The first time tau in [0, limit] at which the height h + w tau - n tau^2 / 2 returns to 0
+// (the landing), or +inf. h >= 0; the stable root of the quadratic (no cancellation).
+double landing_time(double h, double w, double n, double limit) {
+  double tau = kInf;
+  if (n > 0) {  // falling back: one root >= 0
+    const double disc = std::sqrt(w * w + 2 * n * h);
+    tau = w >= 0 ? (w + disc) / n : 2 * h / (disc - w);
+  } else if (n == 0) {
+    if (w < 0) tau = -h / w;
+  } else if (w < 0) {  // pushed away (n < 0) but moving down: lands if it reaches 0
+    const double d = w * w + 2 * n * h;  // w^2 - 4 a h with a = -n / 2
+    if (d >= 0) tau = 2 * h / (std::sqrt(d) - w);
+  }
+  return tau <= limit ? tau : kInf;
+}
+
+}  // namespace
+
+void validate(const FeederTrack& k) {
+  detail::constant_pieces(k.along, "along", kSolver);
+  detail::constant_pieces(k.normal, "normal", kSolver);
+  require_positive_moderate("g", k.g);
+  if (!(std::abs(k.incline) < 0.5 * std::numbers::pi))
+    throw InvalidParameter("incline", k.incline, "must be in (-pi/2, pi/2) rad");
+  require_positive_moderate("level", k.level);
+  if (k.law.velocity_dependent())
+    throw InvalidParameter("law", k.law.describe(),
+                           "the exact feeder solver takes a Coulomb law (no Stribeck, no viscous "
+                           "term)");
+}
+
+const char* feeder_mode_name(FeederMode mode) noexcept {
+  switch (mode) {
+    case FeederMode::stick: return "stick";
+    case FeederMode::slip: return "slip";
+    case FeederMode::flight: return "flight";
+  }
+  return "stick";
+}
+
+void advance_feeder_exact(const FeederTrack& k, FeederExactState& st, double t_end,
+                          FeederExactStatistics* statistics) {
+  validate(k);
+  if (!std::isfinite(t_end) || t_end < st.t)
+    throw InvalidParameter("t_end", t_end, "must be finite and >= the state's time");
+  if (!(std::isfinite(st.x) && std::isfinite(st.u) && std::isfinite(st.w) && st.h >= 0 &&
+        std::isfinite(st.h)))
+    throw InvalidParameter("state", st.h, "needs finite values and a height h >= 0");
+  const PiecewisePolynomialProfile* pa = k.along ? k.along->piecewise_polynomial() : nullptr;
+  const PiecewisePolynomialProfile* pn = k.normal ? k.normal->piecewise_polynomial() : nullptr;
+  const double gc = k.g * std::cos(k.incline), gs = k.g * std::sin(k.incline);
+  const double per_load = k.level / k.g;  // friction coefficient x this x n: the bound
+  FeederExactStatistics stats;
+  if (st.h > 0) st.mode = FeederMode::flight;
+  double t = st.t, x = st.x, u = st.u, h = st.h, w = st.w;
+  FeederMode mode = st.mode;
+  while (t < t_end) {
+    const detail::Piece a = detail::piece_at(pa, t), b = detail::piece_at(pn, t);
+    const double end = std::min({a.next, b.next, t_end});
+    const double n = gc + b.accel;  // the normal load per unit mass the track must supply
+    const double f = a.accel + gs;  // the friction force per unit mass that holds the part
+    ++stats.arcs;
+    if (mode == FeederMode::flight) {
+      const double tau_land = landing_time(h, w, n, end - t);
+      const double dur = std::min(tau_land, end - t);
+      x += dur * (u - 0.5 * f * dur);
+      u -= f * dur;
+      h += dur * (w - 0.5 * n * dur);
+      w -= n * dur;
+      t = tau_land <= end - t ? t + tau_land : end;
+      if (tau_land == dur) {  // landing: plastic, Coulomb-bounded tangential impulse
+        const double P = std::max(0.0, -w);
+        h = 0, w = 0;
+        ++stats.landings;
+        const double sigma = u > 0 ? 1.0 : -1.0;
+        if (std::abs(u) <= k.law.static_coefficient() * per_load * P) {
+          u = 0;
+          ++stats.stick_landings;
+        } else {
+          u -= sigma * k.law.kinetic(u > 0 ? 1 : -1) * per_load * P;
+        }
+        mode = u == 0 ? FeederMode::stick : FeederMode::slip;
+      }
+      continue;
+    }
+    if (n < 0) {  // the track falls away faster than gravity: lift-off
+      mode = FeederMode::flight;
+      ++stats.lift_offs;
+      continue;
+    }
+    double sigma;
+    if (u == 0) {
+      if (std::abs(f) <= k.law.static_coefficient() * per_load * n) {
+        mode = FeederMode::stick;
+        t = end;
+        continue;
+      }
+      sigma = f > 0 ? -1.0 : 1.0;  // it slides against the friction it would need
+    } else {
+      sigma = u > 0 ? 1.0 : -1.0;
+    }
+    const double acc = -f - sigma * k.law.kinetic(sigma > 0 ? 1 : -1) * per_load * n;
+    const double tau_stop = u != 0 && acc * sigma < 0 ? -u / acc : kInf;
+    const bool stops = tau_stop <= end - t;
+    const double dur = stops ? tau_stop : end - t;
+    x += dur * (u + 0.5 * acc * dur);
+    u = stops ? 0.0 : u + acc * dur;
+    t = stops ? t + tau_stop : end;
+    mode = FeederMode::slip;
+  }
+  st.t = t, st.x = x, st.u = u, st.h = h, st.w = w;
+  st.mode = mode == FeederMode::slip && u == 0 ? FeederMode::stick : mode;
+  if (statistics) {
+    statistics->arcs += stats.arcs, statistics->lift_offs += stats.lift_offs;
+    statistics->landings += stats.landings, statistics->stick_landings += stats.stick_landings;
+  }
+}
+
+}  // namespace selfalign
