@@ -82,39 +82,45 @@ FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_
       .def_readonly("first_event_time", &R::first_event_time,
                     "the end of the step where it happened [-]; NaN for none")
       .def_readonly("lifted_off", &R::lifted_off,
-                    "the run stopped at a lift-off (no flight is integrated yet)")
+                    "the part left the track (without flight the run stopped there)")
       .def_readonly("velocity", &R::velocity,
-                    "mean velocity along the track over the last period [-]; NaN if lifted off")
+                    "mean velocity along the track over the last period [-]; NaN if the run "
+                    "stopped at a lift-off (flight=False)")
       .def_readonly("stick_fraction", &R::stick_fraction,
-                    "of the last period's steps; NaN if lifted off")
+                    "of the last period's steps: held on the track (NaN if the run stopped)")
+      .def_readonly("flight_fraction", &R::flight_fraction,
+                    "of the last period's steps: ended off the track (NaN if the run stopped)")
       .def("__repr__", [](const R& r) {
         return Repr("FeederRun")
             .raw("first_event", std::string("FeederEvent.") + feeder_event_name(r.first_event))(
                 "first_event_time", r.first_event_time)("lifted_off", r.lifted_off)(
-                "velocity", r.velocity)("stick_fraction", r.stick_fraction)
+                "velocity", r.velocity)("stick_fraction", r.stick_fraction)(
+                "flight_fraction", r.flight_fraction)
             .str();
       });
   def_record(run, field("first_event", &R::first_event),
              field("first_event_time", &R::first_event_time),
              field("lifted_off", &R::lifted_off), field("velocity", &R::velocity),
-             field("stick_fraction", &R::stick_fraction));
+             field("stick_fraction", &R::stick_fraction),
+             field("flight_fraction", &R::flight_fraction));
   m.def(
       "feeder_run",
       [](const FeederDrive& drive, const FrictionLaw& law, double level,
-         long long steps_per_period, long long periods) {
+         long long steps_per_period, long long periods, bool flight) {
         const FeederTable table(drive);
-        return feeder_run(feeder_model(table, law, level, steps_per_period), drive.period,
-                          periods);
+        return feeder_run(feeder_model(table, law, level, steps_per_period, flight),
+                          drive.period, periods);
       },
       py::arg("drive"), py::arg("law") = FrictionLaw{}, py::kw_only(), py::arg("level") = 1.0,
-      py::arg("steps_per_period") = 2000, py::arg("periods") = 20,
+      py::arg("steps_per_period") = 2000, py::arg("periods") = 20, py::arg("flight") = true,
       py::call_guard<py::gil_scoped_release>(), R"doc(
 A part at rest at x = 0, t = 0 on the drive's track (one 1-D part, the uniform friction level
 `level`, `law`), `periods` periods by the contact core's Moreau step with `steps_per_period`
 steps: the first event, the mean conveying velocity and stick fraction of the last period
 (FeederRun). The friction bound is law coefficient x level x (g cos theta + z'') / g, so the
-absolute coefficient is s level / g. A run that reaches lift-off stops there (no flight yet):
-lifted_off, velocity NaN. Raises InvalidParameter naming the bad argument. Runs without the
+absolute coefficient is s level / g. flight=True: lift-off, flight and plastic landing by
+Moreau-Jean (a unilateral normal contact; docs/feeder.md); flight=False: a run that reaches
+lift-off stops there (lifted_off, velocity NaN). Raises InvalidParameter naming the bad argument. Runs without the
 GIL.)doc");
 }
 

@@ -35,9 +35,13 @@ def test_a_run_in_si_units_slips_forward_just_above_the_onset():
     assert below.first_event == sa.FeederEvent.none and below.stick_fraction == 1.0
     assert above.first_event == sa.FeederEvent.forward_slip
     assert above.velocity > 0 and not above.lifted_off
-    lifted = sa.feeder_run(sa.FeederDrive(1.03 * sa.feeder_onsets(psi, 0.0, mu_s).lift_off * g / w**2,
-                                          period, psi, 0.0, g), law, level=g, periods=3)
-    assert lifted.lifted_off and math.isnan(lifted.velocity)
+    hop = sa.FeederDrive(1.03 * sa.feeder_onsets(psi, 0.0, mu_s).lift_off * g / w**2, period, psi,
+                         0.0, g)
+    stopped = sa.feeder_run(hop, law, level=g, periods=3, flight=False)
+    assert stopped.lifted_off and math.isnan(stopped.velocity)
+    hopping = sa.feeder_run(hop, law, level=g, periods=3)  # Moreau-Jean flight
+    assert hopping.lifted_off and hopping.first_event == sa.FeederEvent.forward_slip
+    assert 0 < hopping.flight_fraction < 1 and hopping.velocity > 0
 
 
 def test_bad_input_names_the_parameter():

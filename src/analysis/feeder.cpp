@@ -71,7 +71,7 @@ FeederTable::FeederTable(const FeederDrive& drive) : drive_(drive) {
 }
 
 core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
-                         long long steps_per_period) {
+                         long long steps_per_period, bool flight) {
   if (!(steps_per_period >= 2 && steps_per_period <= 100000000))
     throw InvalidParameter("steps_per_period", static_cast<double>(steps_per_period),
                            "must be in [2, 1e8]");
@@ -81,6 +81,7 @@ core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, doubl
   model.bodies = {core::SliderBody{PointFootprint{}, law}};
   model.options = {table.drive().period / static_cast<double>(steps_per_period), 0.5};
   model.gravity = table.gravity();
+  model.gravity->flight = flight;
   core::validate(model);
   return model;
 }
@@ -112,7 +113,7 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
   FeederRun run;
   run.first_event_time = NAN;
   double x_last = 0;
-  long long sticks = 0;
+  long long sticks = 0, flights = 0;
   for (long long p = 0; p < periods; ++p) {
     const bool last = p + 1 == periods;
     if (last) x_last = state.bodies[0].pose.x;
@@ -121,19 +122,27 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
         run.lifted_off = true;
         if (run.first_event == FeederEvent::none)
           run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
-        run.velocity = run.stick_fraction = NAN;
+        run.velocity = run.stick_fraction = run.flight_fraction = NAN;
         return run;
       }
-      const double u = state.bodies[0].twist.ux;
+      const core::BodyState& b = state.bodies[0];
+      const bool flying = b.height > 0 || b.normal_velocity > 0;
+      if (flying && !run.lifted_off) {
+        run.lifted_off = true;
+        if (run.first_event == FeederEvent::none)
+          run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
+      }
+      const double u = b.twist.ux;
       if (run.first_event == FeederEvent::none && u != 0) {
         run.first_event = u > 0 ? FeederEvent::forward_slip : FeederEvent::backward_slip;
         run.first_event_time = state.t;
       }
-      if (last && u == 0) ++sticks;
+      if (last) sticks += !flying && u == 0, flights += flying;
     }
   }
   run.velocity = (state.bodies[0].pose.x - x_last) / period;
   run.stick_fraction = static_cast<double>(sticks) / static_cast<double>(per_period);
+  run.flight_fraction = static_cast<double>(flights) / static_cast<double>(per_period);
   return run;
 }
 

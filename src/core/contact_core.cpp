@@ -49,6 +49,25 @@ void slider_step(const Model& model, const SliderBody& b, double h, double th,
   }
 }
 
+// Moreau-Jean's normal stage of one body (Gravity::flight, core/model.hpp): the free normal
+// velocity relative to the table w - h g cos(incline) - Δz' (`weight` = h g cos(incline),
+// `dvz` = Δz'); the contact is active where the height at the step's midpoint is <= 0 and that
+// velocity is negative, then the plastic impulse P cancels it; the height moves by the theta
+// rule. Returns the step's loads with this body's normal impulse per unit weight P / g.
+detail::StepLoads normal_contact(double h, double th, double weight, double dvz, double g,
+                                 const detail::StepLoads& loads, BodyState& b) {
+  const double w = b.normal_velocity;
+  const double w_free = w - weight - dvz;
+  const bool active = b.height + 0.5 * h * w <= 0 && w_free < 0;
+  const double w1 = active ? 0.0 : w_free;
+  detail::StepLoads out = loads;
+  out.load = active ? -w_free / g : 0.0;
+  b.height += h * ((1 - th) * w + th * w1);
+  if (active && b.height < 0) b.height = 0;  // plastic: it ends the step on the table
+  b.normal_velocity = w1;
+  return out;
+}
+
 }  // namespace
 
 double slider_level(const Model& model, const SliderBody& b, double x) {
@@ -185,7 +204,8 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
     const PlanarTablePose tb1 = table_pose(model.motion, t1);
     // loads: the step's normal impulse per unit weight; negative: the table falls away faster
     // than gravity, the bodies lift off (no flight phase yet: the run stops before this step)
-    if (model.gravity) {
+    const bool flight = model.gravity && model.gravity->flight;
+    if (model.gravity && !flight) {
       loads.load = pressing + (tb1.vz - s.table.vz) / g;
       if (loads.load < 0) {
         s.status = StepStatus::lift_off;
@@ -194,16 +214,21 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
       }
     }
     // the body stages, block by block
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n; ++i) {
+      // Moreau-Jean's unilateral normal contact (Gravity::flight): this body's normal impulse
+      const detail::StepLoads body_loads =
+          flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g, loads, s.bodies[i])
+                 : loads;
       std::visit(Overloaded{[&](const RigidBody& b) {
                               detail::rigid_body_step(model.field, b.law, b.part, h, th, s.table,
-                                                      tb1, loads, s.bodies[i], s.contacts[i]);
+                                                      tb1, body_loads, s.bodies[i], s.contacts[i]);
                             },
                             [&](const SliderBody& b) {
-                              slider_step(model, b, h, th, s.table, tb1, loads, t1,
+                              slider_step(model, b, h, th, s.table, tb1, body_loads, t1,
                                           static_cast<int>(i), s.bodies[i], observer);
                             }},
                  model.bodies[i]);
+    }
     // checks: the table's motion (a profile that returns NaN), then each body
     if (!(std::isfinite(tb1.x) && std::isfinite(tb1.y) && std::isfinite(tb1.angle) &&
           std::isfinite(tb1.vx) && std::isfinite(tb1.vy) && std::isfinite(tb1.rate))) {

@@ -74,7 +74,10 @@ void rigid_body_step(const PlanarField& field, const FrictionLaw& law, const Rig
                           rel[0] * pvx + rel[1] * pvy + j * rel[2] * u.omega > 0;
   if (sliding_on)
     for (std::size_t i = 0; i < n; ++i) contacts[i].stick_bound = contacts[i].slip_bound;
-  const PatchImpulseResult r = st.solver.solve(contacts.first(n), j, rel);
+  // in flight (core::Gravity::flight: no normal impulse) no friction acts: the free twist
+  PatchImpulseResult r;
+  if (loads.load == 0) r.twist = rel, r.mode = PatchMode::slip;
+  else r = st.solver.solve(contacts.first(n), j, rel);
   // integrate
   const double c1 = std::cos(tb1.angle), s1 = std::sin(tb1.angle);
   const PlanarTwist u1{c1 * r.twist[0] + s1 * r.twist[1], -s1 * r.twist[0] + c1 * r.twist[1],

@@ -14,8 +14,8 @@
 ///    the track and its normal, gravity and the incline (core::Gravity), one 1-D part; and a
 ///    run of it by Moreau's time-stepping (feeder_run): the first event from rest, the mean
 ///    conveying velocity over the last period and the stick fraction.
-/// The core integrates no flight yet: a run that reaches lift-off stops there and has no
-/// conveying velocity (NaN).
+/// With the model's flight (the default) the core integrates lift-off, flight and plastic
+/// landing (Moreau-Jean); without it a run that reaches lift-off stops there.
 
 #include <memory>
 #include <string>
@@ -77,9 +77,11 @@ class FeederTable {
 
 /// A model of one 1-D part (a point footprint, `law`) on the table's track at the uniform
 /// level `level`, Moreau's step h = period / steps_per_period (>= 2; InvalidParameter naming
-/// "steps_per_period" otherwise). The table must outlive the model.
+/// "steps_per_period" otherwise); `flight`: lift-off, flight and plastic landing by
+/// Moreau-Jean (core::Gravity::flight), else a run stops at a lift-off. The table must outlive
+/// the model.
 core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
-                         long long steps_per_period);
+                         long long steps_per_period, bool flight = true);
 
 /// The first thing that happens to a part at rest on the track.
 enum class FeederEvent { none, forward_slip, backward_slip, lift_off };
@@ -89,11 +91,14 @@ const char* feeder_event_name(FeederEvent event) noexcept;
 struct FeederRun {
   FeederEvent first_event = FeederEvent::none;
   double first_event_time = 0;  ///< the end of the step where it happened [-]; NaN for none
-  bool lifted_off = false;      ///< the run stopped at a lift-off (the core has no flight)
+  /// The part left the track. Without the model's flight the run stopped there: velocity and
+  /// fractions are NaN.
+  bool lifted_off = false;
   /// Mean velocity along the track over the last period (relative to the track, which does
-  /// not advance over a period) [-]; NaN when the run lifted off.
+  /// not advance over a period) [-].
   double velocity = 0;
-  double stick_fraction = 0;  ///< of the last period's steps; NaN when the run lifted off
+  double stick_fraction = 0;   ///< of the last period's steps: held on the track
+  double flight_fraction = 0;  ///< of the last period's steps: ended off the track
 };
 
 /// From rest at x = 0, t = 0, `periods` (>= 1) periods of `period` [-] of the model by the

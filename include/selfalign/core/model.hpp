@@ -6,10 +6,9 @@
 /// translational coordinate and its friction level); each with the friction law of its surface
 /// pair with the table; the table's planar motion (planar_table_motion.hpp) and friction field
 /// (planar_field.hpp), its normal motion with gravity and the incline (Gravity); the time step.
-/// The number of bodies is a runtime value. What is not here yet: part-part contacts (the
-/// several-parts issue), flight phases after a lift-off (the feeder issue: the step reports
-/// lift_off and stops), and the parameter view (io/parameter_view.hpp and planar_config.hpp
-/// view the configs).
+/// The number of bodies is a runtime value. Flight after a lift-off is Gravity::flight's
+/// (Moreau-Jean); otherwise the step reports lift_off and stops. What is not here yet:
+/// part-part contacts (the several-parts issue).
 
 #include <optional>
 #include <variant>
@@ -57,14 +56,23 @@ using Body = std::variant<RigidBody, SliderBody>;
 ///   gravity's impulse    h g sin(incline) along `downhill`, in the table's plane,
 /// and its friction impulses are bounded by s m (resp. k m) times the normal impulse over g:
 /// the paper's h s m at incline 0 without normal motion. A step whose normal impulse is
-/// negative lifts the bodies off (the table falls away faster than gravity): the step sets
-/// status lift_off and the run stops there (flight phases are the feeder issue's).
+/// negative lifts the bodies off (the table falls away faster than gravity): without `flight`
+/// the step sets status lift_off and the run stops there. With `flight` (Moreau-Jean, a
+/// unilateral normal contact per body, docs/feeder.md): each body has a height above the table
+/// and its rate (BodyState::height, normal_velocity); over a step its free normal velocity is
+/// w - h g cos(incline) - (z'(t_{k+1}) - z'(t_k)); where the height at the step's midpoint is
+/// <= 0 and that velocity is negative the contact is active and takes the plastic normal
+/// impulse P = -(free velocity) (restitution 0: the body ends the step at the table's normal
+/// velocity), otherwise the body flies (P = 0, no friction impulse); the friction impulses are
+/// bounded by s m P / g, k m P / g, and the height moves by the theta rule. A body resting on
+/// the table gets P = g (h cos(incline) + Δz'/g), the load above, up to rounding.
 struct Gravity {
   /// g in the model's acceleration unit [-] (> 0): in the paper's dimensionless units, where
   /// accelerations are in units of mu_1 g, g = 1 / mu_1.
   double g = 1;
   double incline = 0;                      ///< the plane's angle to the horizontal, [0, pi/2) [rad]
   double downhill_x = 1, downhill_y = 0;   ///< the plane's steepest descent, unit, world axes
+  bool flight = false;  ///< lift-off and landing by Moreau-Jean (false: stop at a lift-off)
 };
 
 struct Model {

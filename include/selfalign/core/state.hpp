@@ -29,6 +29,8 @@ struct BodyState {
   int pivot = -1;                     ///< the pivot contact (mode pivot)
   long long sweeps = 0, newton_steps = 0;  ///< impulse-solver work so far
   PatchImpulseSolver solver;          ///< warm start of the impulse solver
+  /// Height above the table and its rate [-] (Gravity::flight; 0 while in contact).
+  double height = 0, normal_velocity = 0;
 };
 
 struct State {
