@@ -37,6 +37,8 @@ void add_design_command(CLI::App& app);
 void add_montecarlo_command(CLI::App& app);
 /// `selfalign planar simulate|steady|field|stop`: planar rigid-part motion (cmd_planar.cpp).
 void add_planar_command(CLI::App& app);
+/// `selfalign feeder`: a part on a vibratory feeder track, SI (cmd_feeder.cpp).
+void add_feeder_command(CLI::App& app);
 /// `selfalign parameters`: the model's named parameter view, --set NAME=VALUE (cmd_parameters.cpp).
 void add_parameters_command(CLI::App& app);
 /// Hidden `selfalign completion bash|zsh` and `selfalign man`: completion scripts and a man

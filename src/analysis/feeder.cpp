@@ -13,11 +13,6 @@
 namespace selfalign {
 namespace {
 
-void require_angle(const char* name, double angle) {
-  if (!(std::abs(angle) < 0.5 * std::numbers::pi))
-    throw InvalidParameter(name, angle, "must be in (-pi/2, pi/2) rad");
-}
-
 // The least K > 0 with K |slope| > rhs (docs/feeder.md): 0 when rhs <= 0 (violated at rest),
 // +inf when the drive does not enter the inequality (slope 0).
 double onset(double rhs, double slope) {
@@ -27,11 +22,16 @@ double onset(double rhs, double slope) {
 
 }  // namespace
 
+void require_feeder_angle(std::string_view name, double angle) {
+  if (!(std::abs(angle) < 0.5 * std::numbers::pi))
+    throw InvalidParameter(std::string(name), angle, "must be in (-pi/2, pi/2) rad");
+}
+
 void validate(const FeederDrive& d) {
   require_positive_moderate("amplitude", d.amplitude);
   require_positive_moderate("period", d.period);
-  require_angle("vibration_angle", d.vibration_angle);
-  require_angle("incline", d.incline);
+  require_feeder_angle("vibration_angle", d.vibration_angle);
+  require_feeder_angle("incline", d.incline);
   require_positive_moderate("g", d.g);
 }
 
@@ -45,8 +45,8 @@ double throw_number(const FeederDrive& d) {
 }
 
 FeederOnsets feeder_onsets(double psi, double theta, double mu) {
-  require_angle("vibration_angle", psi);
-  require_angle("incline", theta);
+  require_feeder_angle("vibration_angle", psi);
+  require_feeder_angle("incline", theta);
   require_positive("static_friction", mu);
   // With a_x = -K g cos(psi) s, a_z = -K g sin(psi) s, s = sin(w t) in [-1, 1]:
   //   forward:  K s (cos psi + mu sin psi) > sin theta + mu cos theta,

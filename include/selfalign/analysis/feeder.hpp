@@ -19,6 +19,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 
 #include "selfalign/core/model.hpp"
 #include "selfalign/friction/friction_law.hpp"
@@ -39,6 +40,10 @@ struct FeederDrive {
 /// Throws InvalidParameter naming "amplitude", "period", "vibration_angle" (|psi| >= pi/2),
 /// "incline" (|theta| >= pi/2) or "g".
 void validate(const FeederDrive& drive);
+
+/// Throws InvalidParameter naming `name` unless |angle| < pi/2 (a vibration angle or an
+/// incline) [rad].
+void require_feeder_angle(std::string_view name, double angle);
 
 /// K = a0 w^2 / g [-]: the drive's peak acceleration over g.
 double machine_number(const FeederDrive& drive);

@@ -1,0 +1,158 @@
+// `selfalign feeder`: a part on a vibratory feeder track (docs/feeder.md) in SI units: the
+// sinusoidal drive along the vibration angle on an inclined track, its machine and throw
+// numbers, the closed-form onsets, and a run of the contact core (Moreau, with Moreau-Jean
+// flight): first event, conveying velocity, stick and flight fractions.
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "report.hpp"
+#include "selfalign/analysis/feeder.hpp"
+#include "selfalign/error.hpp"
+#include "selfalign/io/run_files.hpp"
+
+namespace selfalign::cli {
+namespace {
+
+using nlohmann::json;
+
+struct FeederFlags {
+  double amplitude = 0, frequency = 0, vibration_angle = 0, incline = 0;
+  double mu_static = 0, mu_kinetic = 0, g = 9.81;
+  long long periods = 20, steps_per_period = 2000;
+  bool no_flight = false, as_json = false;
+  std::optional<std::string> out;
+};
+
+// An onset as its machine number and the amplitude that reaches it at this frequency.
+json onset_json(double K, double g, double w) {
+  if (std::isinf(K)) return {{"machine_number", nullptr}, {"amplitude_m", nullptr}};
+  return {{"machine_number", K}, {"amplitude_m", K * g / (w * w)}};
+}
+
+void run_feeder(const FeederFlags& f) {
+  // Every flag first, by its own name (exit 2, no file).
+  require_positive_moderate("amplitude", f.amplitude);
+  require_positive_moderate("frequency", f.frequency);
+  require_feeder_angle("vibration-angle", f.vibration_angle);
+  require_feeder_angle("incline", f.incline);
+  require_positive_moderate("mu-static", f.mu_static);
+  require_positive_moderate("mu-kinetic", f.mu_kinetic);
+  if (f.mu_kinetic > f.mu_static)
+    throw InvalidParameter("mu-kinetic", f.mu_kinetic,
+                           "must be <= mu-static (" + format_number(f.mu_static) + ")");
+  require_positive_moderate("g", f.g);
+  if (!(f.periods >= 1 && f.periods <= 1000000))
+    throw InvalidParameter("periods", static_cast<double>(f.periods), "must be in [1, 1e6]");
+  if (!(f.steps_per_period >= 2 && f.steps_per_period <= 10000000))
+    throw InvalidParameter("steps-per-period", static_cast<double>(f.steps_per_period),
+                           "must be in [2, 1e7]");
+  if (!(static_cast<double>(f.periods) * static_cast<double>(f.steps_per_period) <= 1e9))
+    throw InvalidParameter("periods", static_cast<double>(f.periods),
+                           "periods x steps-per-period must be at most 1e9");
+  if (f.out) require_output_path("out", *f.out);
+  // SI as the model's units: level g makes the friction bound mu (g cos theta + z'').
+  const FeederDrive drive{f.amplitude, 1.0 / f.frequency, f.vibration_angle, f.incline, f.g};
+  const FeederTable table(drive);
+  const core::Model model = feeder_model(table, FrictionLaw(f.mu_static, f.mu_kinetic), f.g,
+                                         f.steps_per_period, !f.no_flight);
+  const FeederRun run = feeder_run(model, drive.period, f.periods);
+  const FeederOnsets onsets = feeder_onsets(f.vibration_angle, f.incline, f.mu_static);
+  const double w = 2 * std::numbers::pi * f.frequency;
+  const double along = f.amplitude * w * std::cos(f.vibration_angle);  // a0 w cos(psi)
+  json r;
+  r["command"] = "feeder";
+  r["units"] = "si";
+  r["drive"] = {{"amplitude_m", f.amplitude},         {"frequency_hz", f.frequency},
+                {"vibration_angle_rad", f.vibration_angle}, {"incline_rad", f.incline},
+                {"g_m_per_s2", f.g},                  {"mu_static", f.mu_static},
+                {"mu_kinetic", f.mu_kinetic}};
+  r["machine_number"] = machine_number(drive);
+  r["throw_number"] = throw_number(drive);
+  r["onsets"] = {{"forward_slip", onset_json(onsets.forward_slip, f.g, w)},
+                 {"backward_slip", onset_json(onsets.backward_slip, f.g, w)},
+                 {"lift_off", onset_json(onsets.lift_off, f.g, w)}};
+  r["method"] = f.no_flight ? "time-stepping (contact core; stops at a lift-off)"
+                            : "time-stepping (contact core, Moreau-Jean flight)";
+  r["periods"] = f.periods;
+  r["steps_per_period"] = f.steps_per_period;
+  r["first_event"] = feeder_event_name(run.first_event);
+  r["first_event_time_s"] = number_or_null(run.first_event_time);
+  r["lifted_off"] = run.lifted_off;
+  r["velocity_m_per_s"] = number_or_null(run.velocity);
+  r["dimensionless_speed"] = number_or_null(run.velocity / along);
+  r["census"] = {{"stick", number_or_null(run.stick_fraction)},
+                 {"flight", number_or_null(run.flight_fraction)},
+                 {"slip", number_or_null(1 - run.stick_fraction - run.flight_fraction)}};
+  TextTable t;
+  t.row("machine number K, throw number Gamma",
+        table_text(r["machine_number"]) + ", " + table_text(r["throw_number"]));
+  for (const char* kind : {"forward_slip", "backward_slip", "lift_off"})
+    t.row(std::string("onset ") + kind + ": K, amplitude [m]",
+          table_text(r["onsets"][kind]["machine_number"]) + ", " +
+              table_text(r["onsets"][kind]["amplitude_m"]));
+  t.row("first event (at [s])",
+        table_text(r["first_event"]) + " (" + table_text(r["first_event_time_s"]) + ")");
+  t.row("lifted off", table_text(r["lifted_off"]));
+  t.row("conveying velocity [m/s]", table_text(r["velocity_m_per_s"]));
+  t.row("v / (a0 w cos psi)", table_text(r["dimensionless_speed"]));
+  t.row("last period: stick / slip / flight",
+        table_text(r["census"]["stick"]) + " / " + table_text(r["census"]["slip"]) + " / " +
+            table_text(r["census"]["flight"]));
+  t.row("method", table_text(r["method"]));
+  deliver_report(r, t.str(), f.as_json, f.out);
+}
+
+}  // namespace
+
+void add_feeder_command(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "feeder",
+      "A part on a vibratory feeder track in SI units (docs/feeder.md): the track moves along "
+      "a line at the vibration angle to its surface, x = a0 cos(psi) sin(w t), z = a0 sin(psi) "
+      "sin(w t), on an incline; reports the machine number K = a0 w^2 / g and throw number "
+      "Gamma, the closed-form onsets of forward slip, backward slip and lift-off, and a run "
+      "from rest by the contact core (Moreau, Moreau-Jean flight): first event, conveying "
+      "velocity and v / (a0 w cos psi), stick / slip / flight fractions of the last period.");
+  auto f = std::make_shared<FeederFlags>();
+  sub->add_option("--amplitude", f->amplitude, "a0 along the vibration line [m], > 0")
+      ->required()
+      ->group("Drive");
+  sub->add_option("--frequency", f->frequency, "drive frequency [Hz], > 0")
+      ->required()
+      ->group("Drive");
+  sub->add_option("--vibration-angle", f->vibration_angle,
+                  "psi, the drive line's angle to the track [rad], in (-pi/2, pi/2). Default: 0")
+      ->group("Drive");
+  sub->add_option("--incline", f->incline,
+                  "theta, the track's incline [rad], in (-pi/2, pi/2); > 0: the track rises in "
+                  "the conveying direction. Default: 0")
+      ->group("Drive");
+  sub->add_option("--mu-static", f->mu_static, "static friction coefficient, > 0")
+      ->required()
+      ->group("Friction");
+  sub->add_option("--mu-kinetic", f->mu_kinetic, "kinetic friction coefficient, in (0, mu-static]")
+      ->required()
+      ->group("Friction");
+  sub->add_option("--g", f->g, "gravity [m/s^2], > 0. Default: 9.81")->group("Drive");
+  sub->add_option("--periods", f->periods, "periods from rest, in [1, 1e6]. Default: 20")
+      ->group("Solver");
+  sub->add_option("--steps-per-period", f->steps_per_period,
+                  "Moreau steps per period, in [2, 1e7]. Default: 2000")
+      ->group("Solver");
+  sub->add_flag("--no-flight", f->no_flight,
+                "stop at a lift-off instead of integrating the flight (velocity null then)")
+      ->group("Solver");
+  sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table)")
+      ->group("Output");
+  sub->add_option("--out", f->out, "write the JSON report to FILE (nothing printed)")
+      ->type_name("FILE")
+      ->group("Output");
+  sub->callback([f] { run_feeder(*f); });
+}
+
+}  // namespace selfalign::cli

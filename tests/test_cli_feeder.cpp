@@ -1,0 +1,93 @@
+// `selfalign feeder` (apps/selfalign/cmd_feeder.cpp): the SI report against hand values (the
+// horizontal shaker's onset K = mu_s, the lift-off at Gamma = 1, the machine number), the run's
+// first event on either side of the forward onset, and bad input: one line naming the flag,
+// exit code 2, no file.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_sandbox.hpp"
+
+#ifdef SELFALIGN_CLI_PATH
+namespace selfalign {
+namespace {
+namespace cli_feeder_test {  // own names: the tests are built as a unity build
+
+using nlohmann::json;
+using testing::CliSandbox;
+using testing::expect_clean_failure;
+
+std::string text(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+TEST(CliFeeder, ReportsTheOnsetsAndTheRunInSiUnits) {
+  const CliSandbox box;
+  const double f = 50, g = 9.81, mu = 0.5, w = 2 * std::numbers::pi * f;
+  // psi = 0 on a level track: both slips at K = mu_s, i.e. a0 = mu_s g / w^2; no lift-off.
+  const double onset = mu * g / (w * w);
+  for (const double factor : {0.97, 1.03}) {
+    const auto r = box.run({"feeder", "--amplitude", text(factor * onset), "--frequency", "50",
+                            "--mu-static", "0.5", "--mu-kinetic", "0.4", "--periods", "3",
+                            "--steps-per-period", "4000", "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_NEAR(j["machine_number"].get<double>(), factor * mu, 1e-12);
+    EXPECT_NEAR(j["onsets"]["forward_slip"]["amplitude_m"].get<double>(), onset, 1e-15);
+    EXPECT_NEAR(j["onsets"]["backward_slip"]["machine_number"].get<double>(), mu, 1e-15);
+    EXPECT_TRUE(j["onsets"]["lift_off"]["machine_number"].is_null());
+    EXPECT_EQ(j["first_event"], factor < 1 ? "none" : "forward slip");
+    EXPECT_EQ(j["first_event_time_s"].is_null(), factor < 1);
+    EXPECT_FALSE(j["lifted_off"].get<bool>());
+  }
+  // psi = 0.5, theta = 0.1: the lift-off at Gamma = 1, K = cos(theta) / sin(psi); above it the
+  // part hops (Moreau-Jean flight) and still conveys.
+  const double K = 1.5 * std::cos(0.1) / std::sin(0.5);
+  const auto r = box.run({"feeder", "--amplitude", text(K * g / (w * w)), "--frequency", "50",
+                          "--vibration-angle", "0.5", "--incline", "0.1", "--mu-static", "0.6",
+                          "--mu-kinetic", "0.5", "--periods", "10", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_NEAR(j["throw_number"].get<double>(), 1.5, 1e-12);
+  EXPECT_NEAR(j["onsets"]["lift_off"]["machine_number"].get<double>(), K / 1.5, 1e-12);
+  EXPECT_TRUE(j["lifted_off"].get<bool>());
+  EXPECT_GT(j["census"]["flight"].get<double>(), 0);
+  EXPECT_GT(j["velocity_m_per_s"].get<double>(), 0);
+}
+
+TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
+      {{"--amplitude", "0"}, {"amplitude"}},
+      {{"--frequency", "-50"}, {"frequency"}},
+      {{"--vibration-angle", "1.6"}, {"vibration-angle", "pi/2"}},
+      {{"--incline", "-2"}, {"incline", "pi/2"}},
+      {{"--mu-kinetic", "0.9"}, {"mu-kinetic", "mu-static"}},
+      {{"--steps-per-period", "1"}, {"steps-per-period"}},
+  };
+  for (const auto& [change, expected] : cases) {
+    const CliSandbox box;
+    std::vector<std::string> args = {"feeder", "--amplitude", "1e-4", "--frequency", "50",
+                                     "--mu-static", "0.5", "--mu-kinetic", "0.4"};
+    for (std::size_t i = 0; i + 1 < change.size(); i += 2)
+      for (std::size_t k = 1; k + 1 < args.size(); ++k)
+        if (args[k] == change[i]) args[k + 1] = change[i + 1];
+    if (change[0] == "--vibration-angle" || change[0] == "--incline" ||
+        change[0] == "--steps-per-period")
+      args.insert(args.end(), change.begin(), change.end());
+    args.insert(args.end(), {"--out", "report.json"});
+    SCOPED_TRACE(change[0]);
+    expect_clean_failure(box, box.run(args), expected);
+  }
+}
+
+}  // namespace cli_feeder_test
+}  // namespace
+}  // namespace selfalign
+#endif
