@@ -8,9 +8,11 @@
 // uninitialised, as the Python binding and the CLI's table do (first touched by the workers).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
+#include "selfalign/analysis/feeder.hpp"
 #include "selfalign/analysis/sweep.hpp"
 
 namespace bench_sweep {
@@ -83,4 +85,32 @@ BENCHMARK(sweep_grid_columns)
     ->Args({1000, 2, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+// Issue 23: a feeder regime chart over (vibration angle, machine number), n x n cells, each
+// the closed-form regime and a run of the contact core with Moreau-Jean flight (10 periods of
+// 200 steps from rest); target: 200 x 200 on 2 cores <= 2 s. Args: {n, threads}.
+void feeder_chart(benchmark::State& st) {
+  const int n = static_cast<int>(st.range(0));
+  std::vector<double> angles, ks;
+  for (int i = 0; i < n; ++i) angles.push_back(-1.2 + 2.4 * (i + 0.5) / n);
+  for (int i = 0; i < n; ++i) ks.push_back(0.1 * std::pow(100.0, (i + 0.5) / n));  // 0.1 .. 10
+  FeederChartOptions o;
+  o.threads = static_cast<int>(st.range(1));
+  long long hopping = 0;
+  for (auto _ : st) {
+    const auto cells = feeder_regime_chart(angles, ks, o);
+    hopping = 0;
+    for (const auto& c : cells) hopping += c.regime == FeederRegime::hopping;
+    benchmark::DoNotOptimize(cells.data());
+  }
+  st.counters["cells"] = static_cast<double>(n) * n;
+  st.counters["hopping_cells"] = static_cast<double>(hopping);
+  thread_ns_per_cell(st, static_cast<double>(n) * n, o.threads);
+}
+BENCHMARK(feeder_chart)
+    ->ArgNames({"n", "threads"})
+    ->Args({200, 2})
+    ->Args({200, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 }  // namespace bench_sweep

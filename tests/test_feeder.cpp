@@ -296,6 +296,45 @@ TEST(FeederMoreauJean, WithoutALiftOffFlightChangesNothingButRounding) {
   EXPECT_EQ(with.stick_fraction, without.stick_fraction);
 }
 
+TEST(FeederChart, TheSimulatedRunsFallInTheClosedFormRegimes) {
+  // A 4 x 12 chart (psi, K) on a slightly inclined track: wherever K is at least 5 % away from
+  // every onset, the run of the cell (Moreau with flight, 10 periods, 400 steps each) does
+  // what the closed-form regime says: nothing in stick, a lift-off in hopping, conveying
+  // forward where only the forward slip is crossed and backward where only the backward one.
+  // The cells do not depend on the thread count.
+  FeederChartOptions o;
+  o.incline = 0.03, o.mu_static = 0.5, o.mu_kinetic = 0.4, o.steps_per_period = 400;
+  const std::vector<double> angles = {0.0, 0.2, 0.5, 0.9};
+  std::vector<double> ks;
+  for (int i = 0; i < 12; ++i) ks.push_back(0.3 * std::pow(1.35, i));
+  o.threads = 1;
+  const std::vector<FeederChartCell> one = feeder_regime_chart(angles, ks, o);
+  o.threads = 2;
+  const std::vector<FeederChartCell> two = feeder_regime_chart(angles, ks, o);
+  ASSERT_EQ(one.size(), angles.size() * ks.size());
+  int checked = 0, regimes[5] = {};
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    const FeederChartCell& c = one[i];
+    EXPECT_EQ(c.run.velocity, two[i].run.velocity);
+    ASSERT_TRUE(c.failure.empty()) << c.failure;
+    const FeederOnsets on = feeder_onsets(c.vibration_angle, o.incline, o.mu_static);
+    bool clear = true;
+    for (double k : {on.forward_slip, on.backward_slip, on.lift_off})
+      clear = clear && !(std::abs(c.machine_number - k) < 0.05 * k);
+    if (!clear) continue;
+    ++checked, ++regimes[static_cast<int>(c.regime)];
+    SCOPED_TRACE(::testing::Message() << "psi " << c.vibration_angle << " K " << c.machine_number
+                                      << " regime " << feeder_regime_name(c.regime));
+    EXPECT_EQ(c.run.first_event == FeederEvent::none, c.regime == FeederRegime::stick);
+    EXPECT_EQ(c.run.lifted_off, c.regime == FeederRegime::hopping);
+    if (c.regime == FeederRegime::forward) EXPECT_GT(c.run.velocity, 0);
+    if (c.regime == FeederRegime::backward) EXPECT_LT(c.run.velocity, 0);
+  }
+  if (print()) std::printf("chart: %d cells checked: stick %d forward %d backward %d both %d hopping %d\n", checked, regimes[0], regimes[1], regimes[2], regimes[3], regimes[4]);
+  EXPECT_GT(checked, 30);
+  for (int r : {0, 1, 3, 4}) EXPECT_GT(regimes[r], 0) << feeder_regime_name(static_cast<FeederRegime>(r));
+}
+
 TEST(Feeder, BadInputNamesTheParameter) {
   const auto names = [](auto f, const std::string& name) {
     try {

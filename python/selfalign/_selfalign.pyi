@@ -2233,3 +2233,26 @@ def feeder_run(
     periods: int = 20,
     flight: bool = True,
 ) -> FeederRun: ...
+
+class FeederRegime(enum.IntEnum):
+    stick = 0
+    forward = 1
+    backward = 2
+    both = 3
+    hopping = 4
+
+def feeder_regime_chart(
+    vibration_angles: npt.ArrayLike,
+    machine_numbers: npt.ArrayLike,
+    *,
+    incline: float = 0.0,
+    mu_static: float = 0.5,
+    mu_kinetic: float = 0.4,
+    g: float = 1.0,
+    period: float = 1.0,
+    periods: int = 10,
+    steps_per_period: int = 200,
+    flight: bool = True,
+    threads: int = 0,
+    progress: Optional[Callable[[int, int], None]] = None,
+) -> dict[str, npt.NDArray[np.generic]]: ...

@@ -1,8 +1,14 @@
 // The vibratory feeder (analysis/feeder.hpp, docs/feeder.md): the drive, its closed-form
 // onsets, and runs of the contact core.
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <cstdint>
+#include <vector>
+
+#include "arrays.hpp"
 #include "bindings.hpp"
+#include "progress.hpp"
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/feeder.hpp"
@@ -122,6 +128,68 @@ absolute coefficient is s level / g. flight=True: lift-off, flight and plastic l
 Moreau-Jean (a unilateral normal contact; docs/feeder.md); flight=False: a run that reaches
 lift-off stops there (lifted_off, velocity NaN). Raises InvalidParameter naming the bad argument. Runs without the
 GIL.)doc");
+
+  bind_int_enum<FeederRegime>(m, "FeederRegime",
+                              "The regime the closed-form onsets give (feeder_regime_chart).",
+                              {{"stick", FeederRegime::stick},
+                               {"forward", FeederRegime::forward},
+                               {"backward", FeederRegime::backward},
+                               {"both", FeederRegime::both},
+                               {"hopping", FeederRegime::hopping}});
+  m.def(
+      "feeder_regime_chart",
+      [](const py::object& angles_in, const py::object& ks_in, double incline, double mu_static,
+         double mu_kinetic, double g, double period, long long periods,
+         long long steps_per_period, bool flight, int threads, const py::object& progress_in) {
+        const std::vector<double> angles = to_vector(angles_in, "vibration_angles"),
+                                  ks = to_vector(ks_in, "machine_numbers");
+        const PythonProgress progress(progress_in);
+        FeederChartOptions o;
+        o.incline = incline, o.mu_static = mu_static, o.mu_kinetic = mu_kinetic, o.g = g;
+        o.period = period, o.periods = periods, o.steps_per_period = steps_per_period;
+        o.flight = flight, o.threads = threads, o.progress = progress.callback();
+        const std::vector<FeederChartCell> cells =
+            progress.run([&] { return feeder_regime_chart(angles, ks, o); });
+        const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(angles.size()),
+                                             static_cast<py::ssize_t>(ks.size())};
+        py::array_t<double> psi(shape), K(shape), gamma(shape), v(shape), speed(shape),
+            stick(shape), flight_f(shape);
+        py::array_t<std::int8_t> regime(shape), first(shape);
+        py::array_t<bool> lifted(shape), failed(shape);
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+          const FeederChartCell& c = cells[i];
+          psi.mutable_data()[i] = c.vibration_angle, K.mutable_data()[i] = c.machine_number;
+          gamma.mutable_data()[i] = c.throw_number;
+          regime.mutable_data()[i] = static_cast<std::int8_t>(c.regime);
+          first.mutable_data()[i] = static_cast<std::int8_t>(c.run.first_event);
+          v.mutable_data()[i] = c.run.velocity, speed.mutable_data()[i] = c.dimensionless_speed;
+          stick.mutable_data()[i] = c.run.stick_fraction;
+          flight_f.mutable_data()[i] = c.run.flight_fraction;
+          lifted.mutable_data()[i] = c.run.lifted_off, failed.mutable_data()[i] = !c.failure.empty();
+        }
+        py::dict d;
+        d["vibration_angles"] = to_array(std::vector(angles));
+        d["machine_numbers"] = to_array(std::vector(ks));
+        d["vibration_angle"] = psi, d["machine_number"] = K, d["throw_number"] = gamma;
+        d["regime"] = regime, d["first_event"] = first, d["velocity"] = v;
+        d["dimensionless_speed"] = speed, d["stick_fraction"] = stick;
+        d["flight_fraction"] = flight_f, d["lifted_off"] = lifted, d["failed"] = failed;
+        return d;
+      },
+      py::arg("vibration_angles"), py::arg("machine_numbers"), py::kw_only(),
+      py::arg("incline") = 0.0, py::arg("mu_static") = 0.5, py::arg("mu_kinetic") = 0.4,
+      py::arg("g") = 1.0, py::arg("period") = 1.0, py::arg("periods") = 10,
+      py::arg("steps_per_period") = 200, py::arg("flight") = true, py::arg("threads") = 0,
+      py::arg("progress") = py::none(), R"doc(
+The feeder's regime chart (docs/feeder.md) over vibration angles [rad] x machine numbers K
+(array-likes): per cell the closed-form regime (FeederRegime from feeder_onsets) and a run of
+the contact core from rest with Moreau-Jean flight (amplitude K g / w^2, `periods` periods of
+`steps_per_period` steps; the part at the friction level g, so the bound is
+mu (g cos(incline) + z'')). Returns a dict of NumPy arrays shaped (angles, machine numbers):
+vibration_angle, machine_number, throw_number, regime (int8 FeederRegime), first_event (int8
+FeederEvent), velocity (mean over the last period), dimensionless_speed (velocity /
+(a0 w cos psi)), stick_fraction, flight_fraction, lifted_off, failed; and the two axes.
+`progress(done, total)` as the other studies'; Ctrl-C stops it. Runs without the GIL.)doc");
 }
 
 }  // namespace selfalign::python

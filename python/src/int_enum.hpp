@@ -100,5 +100,9 @@ template <>
 struct type_caster<selfalign::FeederEvent> : int_enum_caster<selfalign::FeederEvent> {
   static constexpr auto name = const_name("FeederEvent");
 };
+template <>
+struct type_caster<selfalign::FeederRegime> : int_enum_caster<selfalign::FeederRegime> {
+  static constexpr auto name = const_name("FeederRegime");
+};
 
 }  // namespace pybind11::detail

@@ -54,3 +54,31 @@ def test_bad_input_names_the_parameter():
     with pytest.raises(sa.InvalidParameter) as e:
         sa.feeder_run(sa.FeederDrive(1e-3), steps_per_period=1)
     assert e.value.name == "steps_per_period"
+
+
+def test_the_regime_chart_is_the_closed_form_regimes_and_the_runs():
+    # A 3 x 8 chart: the regime array is feeder_onsets' classification cell by cell (by hand
+    # here), the runs stick exactly where the regime is stick and lift off where it hops.
+    angles = [0.0, 0.3, 0.8]
+    ks = [0.2, 0.4, 0.6, 0.9, 1.3, 2.0, 3.0, 4.5]
+    chart = sa.feeder_regime_chart(angles, ks, incline=0.02, mu_static=0.5, mu_kinetic=0.4,
+                                   steps_per_period=400)
+    assert chart["regime"].shape == (3, 8) and not chart["failed"].any()
+    for i, psi in enumerate(angles):
+        o = sa.feeder_onsets(psi, 0.02, 0.5)
+        for j, K in enumerate(ks):
+            if K >= o.lift_off:
+                expected = sa.FeederRegime.hopping
+            elif K > o.forward_slip and K > o.backward_slip:
+                expected = sa.FeederRegime.both
+            elif K > o.forward_slip:
+                expected = sa.FeederRegime.forward
+            elif K > o.backward_slip:
+                expected = sa.FeederRegime.backward
+            else:
+                expected = sa.FeederRegime.stick
+            assert chart["regime"][i, j] == expected
+            near = any(abs(K - k) < 0.05 * k for k in (o.forward_slip, o.backward_slip, o.lift_off))
+            if not near:
+                assert (chart["first_event"][i, j] == sa.FeederEvent.none) == (expected == sa.FeederRegime.stick)
+                assert bool(chart["lifted_off"][i, j]) == (expected == sa.FeederRegime.hopping)

@@ -4,6 +4,7 @@
 #include <numbers>
 #include <vector>
 
+#include "parallel_cells.hpp"
 #include "selfalign/core/state.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/error.hpp"
@@ -96,6 +97,31 @@ const char* feeder_event_name(FeederEvent event) noexcept {
   return "none";
 }
 
+namespace {
+
+// Watches a feeder run step by step: the first event, and the census of the counted steps.
+struct FeederWatch final : MotionObserver {
+  FeederRun& run;
+  bool counting = false;
+  long long sticks = 0, flights = 0;
+  explicit FeederWatch(FeederRun& r) : run(r) {}
+  void on_step(const core::State& state) override {
+    const core::BodyState& b = state.bodies[0];
+    const bool flying = b.height > 0 || b.normal_velocity > 0;
+    const double u = b.twist.ux;
+    if (run.first_event == FeederEvent::none) {
+      if (flying) run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
+      else if (u != 0)
+        run.first_event = u > 0 ? FeederEvent::forward_slip : FeederEvent::backward_slip,
+        run.first_event_time = state.t;
+    }
+    run.lifted_off = run.lifted_off || flying;
+    if (counting) sticks += !flying && u == 0, flights += flying;
+  }
+};
+
+}  // namespace
+
 FeederRun feeder_run(const core::Model& model, double period, long long periods) {
   core::validate(model);
   if (model.bodies.size() != 1 || !std::holds_alternative<core::SliderBody>(model.bodies[0]))
@@ -112,38 +138,99 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
   core::State state = core::make_state(model, 0.0, poses, twists);
   FeederRun run;
   run.first_event_time = NAN;
+  FeederWatch watch(run);
   double x_last = 0;
-  long long sticks = 0, flights = 0;
   for (long long p = 0; p < periods; ++p) {
-    const bool last = p + 1 == periods;
-    if (last) x_last = state.bodies[0].pose.x;
-    for (long long k = 0; k < per_period; ++k) {
-      if (core::step(model, state, 1) == 0 || state.status == core::StepStatus::lift_off) {
-        run.lifted_off = true;
-        if (run.first_event == FeederEvent::none)
-          run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
-        run.velocity = run.stick_fraction = run.flight_fraction = NAN;
-        return run;
-      }
-      const core::BodyState& b = state.bodies[0];
-      const bool flying = b.height > 0 || b.normal_velocity > 0;
-      if (flying && !run.lifted_off) {
-        run.lifted_off = true;
-        if (run.first_event == FeederEvent::none)
-          run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
-      }
-      const double u = b.twist.ux;
-      if (run.first_event == FeederEvent::none && u != 0) {
-        run.first_event = u > 0 ? FeederEvent::forward_slip : FeederEvent::backward_slip;
-        run.first_event_time = state.t;
-      }
-      if (last) sticks += !flying && u == 0, flights += flying;
+    watch.counting = p + 1 == periods;
+    if (watch.counting) x_last = state.bodies[0].pose.x;
+    core::step(model, state, per_period, &watch);
+    if (state.status == core::StepStatus::lift_off) {  // no flight: the run stops there
+      run.lifted_off = true;
+      if (run.first_event == FeederEvent::none)
+        run.first_event = FeederEvent::lift_off, run.first_event_time = state.t;
+      run.velocity = run.stick_fraction = run.flight_fraction = NAN;
+      return run;
     }
   }
   run.velocity = (state.bodies[0].pose.x - x_last) / period;
-  run.stick_fraction = static_cast<double>(sticks) / static_cast<double>(per_period);
-  run.flight_fraction = static_cast<double>(flights) / static_cast<double>(per_period);
+  run.stick_fraction = static_cast<double>(watch.sticks) / static_cast<double>(per_period);
+  run.flight_fraction = static_cast<double>(watch.flights) / static_cast<double>(per_period);
   return run;
+}
+
+const char* feeder_regime_name(FeederRegime regime) noexcept {
+  switch (regime) {
+    case FeederRegime::stick: return "stick";
+    case FeederRegime::forward: return "forward";
+    case FeederRegime::backward: return "backward";
+    case FeederRegime::both: return "both";
+    case FeederRegime::hopping: return "hopping";
+  }
+  return "stick";
+}
+
+FeederRegime feeder_regime(const FeederOnsets& o, double K) {
+  if (K >= o.lift_off) return FeederRegime::hopping;
+  const bool forward = K > o.forward_slip, backward = K > o.backward_slip;
+  return forward && backward ? FeederRegime::both
+         : forward           ? FeederRegime::forward
+         : backward          ? FeederRegime::backward
+                             : FeederRegime::stick;
+}
+
+std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angles,
+                                                 const std::vector<double>& ks,
+                                                 const FeederChartOptions& o) {
+  require_feeder_angle("incline", o.incline);
+  require_positive_moderate("mu_static", o.mu_static);
+  require_positive_moderate("mu_kinetic", o.mu_kinetic);
+  if (o.mu_kinetic > o.mu_static)
+    throw InvalidParameter("mu_kinetic", o.mu_kinetic, "must be <= mu_static");
+  require_positive_moderate("g", o.g);
+  require_positive_moderate("period", o.period);
+  if (o.periods < 1) throw InvalidParameter("periods", static_cast<double>(o.periods), "must be >= 1");
+  if (angles.empty() || ks.empty())
+    throw InvalidParameter(angles.empty() ? "vibration_angles" : "machine_numbers", "empty",
+                           "needs at least one value");
+  for (double a : angles) require_feeder_angle("vibration_angles", a);
+  for (double k : ks) require_positive_moderate("machine_numbers", k);
+  if (!(static_cast<double>(angles.size()) * static_cast<double>(ks.size()) <= 1e8))
+    throw InvalidParameter("machine_numbers", static_cast<double>(ks.size()),
+                           "the chart must have at most 1e8 cells");
+  // One run's model, checked once (steps_per_period names itself).
+  const FrictionLaw law(o.mu_static, o.mu_kinetic);
+  const double w = 2 * std::numbers::pi / o.period;
+  {
+    const FeederTable probe({1.0, o.period, angles[0], o.incline, o.g});
+    (void)feeder_model(probe, law, o.g, o.steps_per_period, o.flight);
+  }
+  std::vector<FeederChartCell> out(angles.size() * ks.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    FeederChartCell& c = out[i];
+    c.vibration_angle = angles[i / ks.size()], c.machine_number = ks[i % ks.size()];
+    c.throw_number = c.machine_number * std::sin(c.vibration_angle) / std::cos(o.incline);
+    c.regime = feeder_regime(feeder_onsets(c.vibration_angle, o.incline, o.mu_static),
+                             c.machine_number);
+  }
+  SweepOptions so;
+  so.threads = o.threads;
+  so.progress = o.progress;
+  detail::parallel_cells(
+      out.size(), so,
+      [&](std::size_t i) {
+        FeederChartCell& c = out[i];
+        const double a0 = c.machine_number * o.g / (w * w);
+        const FeederTable table({a0, o.period, c.vibration_angle, o.incline, o.g});
+        c.run = feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight), o.period,
+                           o.periods);
+        c.dimensionless_speed = c.run.velocity / (a0 * w * std::cos(c.vibration_angle));
+      },
+      [&](std::size_t i, const std::string& why) {
+        out[i].run.velocity = out[i].run.stick_fraction = out[i].run.flight_fraction = NAN;
+        out[i].dimensionless_speed = NAN;
+        out[i].failure = why;
+      });
+  return out;
 }
 
 }  // namespace selfalign

@@ -21,6 +21,10 @@
 #include <string>
 #include <string_view>
 
+#include <cmath>
+#include <vector>
+
+#include "selfalign/analysis/sweep.hpp"  // ProgressCallback
 #include "selfalign/core/model.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/table_profile.hpp"
@@ -109,5 +113,44 @@ struct FeederRun {
 /// From rest at x = 0, t = 0, `periods` (>= 1) periods of `period` [-] of the model by the
 /// contact core's Moreau step (core/step.hpp). The model must have one SliderBody.
 FeederRun feeder_run(const core::Model& model, double period, long long periods);
+
+/// The regime the closed-form onsets give at machine number K (docs/feeder.md): stick (below
+/// both slips), forward (the forward slip only), backward, both (slips both ways each period),
+/// hopping (at or above the lift-off: flights, whatever else happens).
+enum class FeederRegime { stick, forward, backward, both, hopping };
+/// "stick", "forward", "backward", "both", "hopping".
+const char* feeder_regime_name(FeederRegime regime) noexcept;
+FeederRegime feeder_regime(const FeederOnsets& onsets, double machine_number);
+
+/// A regime chart's common settings: the track and the friction, the runs' length and step.
+struct FeederChartOptions {
+  double incline = 0;                     ///< theta [rad]
+  double mu_static = 0.5, mu_kinetic = 0.4;  ///< absolute coefficients, 0 < k <= s
+  double g = 1;                           ///< [-] (9.81 in SI)
+  double period = 1;                      ///< drive period [-] (s in SI)
+  long long periods = 10;                 ///< from rest; the last one is reported
+  long long steps_per_period = 200;       ///< Moreau's steps
+  bool flight = true;                     ///< Moreau-Jean flight (else runs stop at lift-off)
+  int threads = 0;                        ///< 0: all cores
+  ProgressCallback progress;              ///< (cells done, cells), optional
+};
+
+/// One cell: its drive, the closed-form regime, and the simulated run.
+struct FeederChartCell {
+  double vibration_angle = 0, machine_number = 0, throw_number = 0;
+  FeederRegime regime = FeederRegime::stick;
+  FeederRun run;
+  double dimensionless_speed = NAN;  ///< run.velocity / (a0 w cos psi)
+  std::string failure;               ///< empty when computed (a failed cell keeps NaN numbers)
+};
+
+/// The regime chart over vibration angles x machine numbers (machine number fastest): per cell
+/// the closed-form regime from feeder_onsets and a run of feeder_run (amplitude K g / w^2, the
+/// part at the friction level g so that the bound is mu (g cos theta + z'')), in parallel through
+/// the studies' one loop (results independent of the thread count). Throws InvalidParameter
+/// naming the first bad option or grid value.
+std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& vibration_angles,
+                                                 const std::vector<double>& machine_numbers,
+                                                 const FeederChartOptions& options);
 
 }  // namespace selfalign
