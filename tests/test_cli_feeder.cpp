@@ -1,4 +1,4 @@
-// `selfalign feeder` (apps/selfalign/cmd_feeder.cpp): the SI report against hand values (the
+// `selfalign feeder` and `selfalign regimes` (apps/selfalign/cmd_feeder.cpp, cmd_regimes.cpp): the SI report against hand values (the
 // horizontal shaker's onset K = mu_s, the lift-off at Gamma = 1, the machine number), the run's
 // first event on either side of the forward onset, and bad input: one line naming the flag,
 // exit code 2, no file.
@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -85,6 +86,42 @@ TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
     SCOPED_TRACE(change[0]);
     expect_clean_failure(box, box.run(args), expected);
   }
+}
+
+TEST(CliRegimes, WritesTheChartsCellsWithTheClosedFormRegimes) {
+  // psi = 0 on a level track: both slips at K = mu_s (0.5), no lift-off, so on the geometric
+  // K axis 0.1 .. 10 the cells below 0.5 are stick and the others both; psi = 0.5 adds the
+  // lift-off at K = 1 / sin(0.5).
+  const CliSandbox box;
+  const auto r = box.run({"regimes", "--angle-min", "0", "--angle-max", "0.5", "--angles", "2",
+                          "--machine-numbers", "9", "--mu-static", "0.5", "--mu-kinetic",
+                          "0.4", "--periods", "3", "--csv", "chart.csv", "--json", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j["cells"], 18);
+  const std::vector<std::string> rows = testing::lines(testing::read_text(box.work_file("chart.csv")));
+  ASSERT_EQ(rows.size(), 19u);
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    std::vector<std::string> col;
+    std::stringstream ss(rows[i]);
+    for (std::string c; std::getline(ss, c, ',');) col.push_back(c);
+    ASSERT_EQ(col.size(), 10u) << rows[i];
+    const double psi = std::stod(col[0]), K = std::stod(col[1]);
+    std::string expected = K > 0.5 ? "both" : "stick";
+    if (psi > 0) {
+      const double c = std::cos(psi), s = std::sin(psi);
+      const double kf = 0.5 / (c + 0.5 * s), kb = 0.5 / std::abs(0.5 * s - c), kl = 1 / s;
+      expected = K >= kl ? "hopping" : K > kf && K > kb ? "both" : K > kf ? "forward"
+                 : K > kb ? "backward" : "stick";
+    }
+    EXPECT_EQ(col[3], expected) << rows[i];
+    EXPECT_EQ(col[9], "ok");
+  }
+  // Bad input: one line naming the flag, exit 2, no file.
+  const CliSandbox bad;
+  expect_clean_failure(bad, bad.run({"regimes", "--mu-static", "0.5", "--mu-kinetic", "0.4",
+                                     "--angles", "0", "--csv", "c.csv"}),
+                       {"angles", "[1, 2000]"});
 }
 
 }  // namespace cli_feeder_test

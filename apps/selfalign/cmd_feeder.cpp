@@ -10,6 +10,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "feeder_flags.hpp"
 #include "report.hpp"
 #include "selfalign/analysis/feeder.hpp"
 #include "selfalign/error.hpp"
@@ -39,18 +40,9 @@ void run_feeder(const FeederFlags& f) {
   require_positive_moderate("amplitude", f.amplitude);
   require_positive_moderate("frequency", f.frequency);
   require_feeder_angle("vibration-angle", f.vibration_angle);
-  require_feeder_angle("incline", f.incline);
-  require_positive_moderate("mu-static", f.mu_static);
-  require_positive_moderate("mu-kinetic", f.mu_kinetic);
-  if (f.mu_kinetic > f.mu_static)
-    throw InvalidParameter("mu-kinetic", f.mu_kinetic,
-                           "must be <= mu-static (" + format_number(f.mu_static) + ")");
+  require_feeder_flags(f.incline, f.mu_static, f.mu_kinetic, f.periods, 1000000,
+                       f.steps_per_period, 10000000);
   require_positive_moderate("g", f.g);
-  if (!(f.periods >= 1 && f.periods <= 1000000))
-    throw InvalidParameter("periods", static_cast<double>(f.periods), "must be in [1, 1e6]");
-  if (!(f.steps_per_period >= 2 && f.steps_per_period <= 10000000))
-    throw InvalidParameter("steps-per-period", static_cast<double>(f.steps_per_period),
-                           "must be in [2, 1e7]");
   if (!(static_cast<double>(f.periods) * static_cast<double>(f.steps_per_period) <= 1e9))
     throw InvalidParameter("periods", static_cast<double>(f.periods),
                            "periods x steps-per-period must be at most 1e9");
@@ -132,12 +124,7 @@ void add_feeder_command(CLI::App& app) {
                   "theta, the track's incline [rad], in (-pi/2, pi/2); > 0: the track rises in "
                   "the conveying direction. Default: 0")
       ->group("Drive");
-  sub->add_option("--mu-static", f->mu_static, "static friction coefficient, > 0")
-      ->required()
-      ->group("Friction");
-  sub->add_option("--mu-kinetic", f->mu_kinetic, "kinetic friction coefficient, in (0, mu-static]")
-      ->required()
-      ->group("Friction");
+  add_friction_flags(*sub, f->mu_static, f->mu_kinetic);
   sub->add_option("--g", f->g, "gravity [m/s^2], > 0. Default: 9.81")->group("Drive");
   sub->add_option("--periods", f->periods, "periods from rest, in [1, 1e6]. Default: 20")
       ->group("Solver");
