@@ -61,6 +61,10 @@ TEST(CliFeeder, ReportsTheOnsetsAndTheRunInSiUnits) {
   EXPECT_TRUE(j["lifted_off"].get<bool>());
   EXPECT_GT(j["census"]["flight"].get<double>(), 0);
   EXPECT_GT(j["velocity_m_per_s"].get<double>(), 0);
+  // The classical lift-off phase: N = g cos(theta) (1 - Gamma sin(w t)) turns negative at
+  // sin(w t) = 1 / Gamma; reported to the step (2 pi / 2000 rad) at the end of that step.
+  EXPECT_NEAR(j["lift_off_phase_rad"].get<double>(), std::asin(1 / 1.5),
+              2 * std::numbers::pi / 2000 * 1.5);
 }
 
 TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {

@@ -17,6 +17,9 @@
 
 #include "selfalign/analysis/feeder.hpp"
 #include "selfalign/analysis/feeder_exact.hpp"
+#include "selfalign/core/state.hpp"
+#include "selfalign/core/step.hpp"
+#include "selfalign/planar/contact_patch.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/three_phase.hpp"
 #include "selfalign/simulate/exact.hpp"
@@ -277,10 +280,40 @@ TEST(FeederMoreauJean, ConvergesToTheExactHoppingMotionWithOrderOne) {
     EXPECT_TRUE(run.lifted_off);
     EXPECT_LT(error, 6.0 / static_cast<double>(n)) << n;
     EXPECT_NEAR(run.flight_fraction, (w.T / 2 + tau_l) / w.T, 2.0 / static_cast<double>(n)) << n;
+    // it leaves the track at T/2 (phase pi, the first step whose normal impulse is negative)
+    EXPECT_NEAR(run.lift_off_phase, std::numbers::pi, 2 * std::numbers::pi * 1.5 / static_cast<double>(n)) << n;
+    EXPECT_DOUBLE_EQ(run.flight_angle, 2 * std::numbers::pi * run.flight_fraction);
     if (!errors.empty()) EXPECT_LT(error, errors.back() / 3) << n;
     errors.push_back(error);
   }
   EXPECT_LT(errors[2], errors[0] / 50);  // order >= 0.85 over two decades
+}
+
+TEST(FeederMoreauJean, ARigidPartFliesAsTheOneDimensionalPartDoes) {
+  // A rigid point part and a 4 x 2 rectangle (symmetric: it translates) beside the 1-D part
+  // on the hopping square wave: the same heights, positions and velocities at every period
+  // end (each body has its own normal contact; a rigid part lifts off as a whole).
+  const SquareWave w = hopping_wave();
+  const SquareWaveTrack sq(w);
+  core::Model model = square_wave_model(w, sq, 2000, true);
+  const FrictionLaw law(w.mu_s, w.mu_k);
+  model.bodies.push_back(core::RigidBody{{0.01, point_patch()}, law});
+  model.bodies.push_back(core::RigidBody{{0.02, rectangle_patch(0.2, 0.1, 4, 2)}, law});
+  const std::vector<PlanarPose> poses(3);
+  const std::vector<PlanarTwist> twists(3);
+  core::State s = core::make_state(model, 0.0, poses, twists);
+  double worst = 0, flew = 0;
+  for (int p = 1; p <= 4; ++p) {
+    ASSERT_EQ(core::step(model, s, 2000), 2000);
+    for (std::size_t i = 1; i < 3; ++i)
+      worst = std::max({worst, std::abs(s.bodies[i].pose.x - s.bodies[0].pose.x),
+                        std::abs(s.bodies[i].twist.ux - s.bodies[0].twist.ux),
+                        std::abs(s.bodies[i].height - s.bodies[0].height),
+                        std::abs(s.bodies[i].pose.y) + std::abs(s.bodies[i].pose.angle)});
+    flew = std::max(flew, s.bodies[0].height);
+  }
+  EXPECT_LT(worst, 1e-12);
+  EXPECT_GT(flew, 0);  // the period ends in flight (T/2 < t - kT < T/2 + tau_L is flight)
 }
 
 TEST(FeederMoreauJean, WithoutALiftOffFlightChangesNothingButRounding) {

@@ -77,6 +77,8 @@ void run_feeder(const FeederFlags& f) {
   r["lifted_off"] = run.lifted_off;
   r["velocity_m_per_s"] = number_or_null(run.velocity);
   r["dimensionless_speed"] = number_or_null(run.velocity / along);
+  r["lift_off_phase_rad"] = number_or_null(run.lift_off_phase);
+  r["flight_angle_rad"] = number_or_null(run.flight_angle);
   r["census"] = {{"stick", number_or_null(run.stick_fraction)},
                  {"flight", number_or_null(run.flight_fraction)},
                  {"slip", number_or_null(1 - run.stick_fraction - run.flight_fraction)}};
@@ -90,6 +92,8 @@ void run_feeder(const FeederFlags& f) {
   t.row("first event (at [s])",
         table_text(r["first_event"]) + " (" + table_text(r["first_event_time_s"]) + ")");
   t.row("lifted off", table_text(r["lifted_off"]));
+  t.row("last period: lift-off phase, flight angle [rad]",
+        table_text(r["lift_off_phase_rad"]) + ", " + table_text(r["flight_angle_rad"]));
   t.row("conveying velocity [m/s]", table_text(r["velocity_m_per_s"]));
   t.row("v / (a0 w cos psi)", table_text(r["dimensionless_speed"]));
   t.row("last period: stick / slip / flight",

@@ -96,6 +96,12 @@ FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_
                     "of the last period's steps: held on the track (NaN if the run stopped)")
       .def_readonly("flight_fraction", &R::flight_fraction,
                     "of the last period's steps: ended off the track (NaN if the run stopped)")
+      .def_readonly("lift_off_phase", &R::lift_off_phase,
+                    "w (t - period start) of the last period's first lift-off [rad]; NaN "
+                    "without a flight")
+      .def_readonly("flight_angle", &R::flight_angle,
+                    "2 pi flight_fraction: w times the time off the track [rad]; NaN without a "
+                    "flight")
       .def("__repr__", [](const R& r) {
         return Repr("FeederRun")
             .raw("first_event", std::string("FeederEvent.") + feeder_event_name(r.first_event))(
@@ -108,7 +114,9 @@ FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_
              field("first_event_time", &R::first_event_time),
              field("lifted_off", &R::lifted_off), field("velocity", &R::velocity),
              field("stick_fraction", &R::stick_fraction),
-             field("flight_fraction", &R::flight_fraction));
+             field("flight_fraction", &R::flight_fraction),
+             field("lift_off_phase", &R::lift_off_phase),
+             field("flight_angle", &R::flight_angle));
   m.def(
       "feeder_run",
       [](const FeederDrive& drive, const FrictionLaw& law, double level,

@@ -82,3 +82,20 @@ def test_the_regime_chart_is_the_closed_form_regimes_and_the_runs():
             if not near:
                 assert (chart["first_event"][i, j] == sa.FeederEvent.none) == (expected == sa.FeederRegime.stick)
                 assert bool(chart["lifted_off"][i, j]) == (expected == sa.FeederRegime.hopping)
+
+
+def test_the_regime_chart_figure(tmp_path):
+    # The onset curves are feeder_onsets' values (by hand at psi = 0: K_f = K_b = mu_s, no
+    # lift-off); the figure is written atomically as a PNG.
+    from selfalign import feeder_figures
+
+    curves = feeder_figures.onset_curves([0.0, 0.5], 0.0, 0.5)
+    assert curves["forward_slip"][0] == pytest.approx(0.5) and math.isinf(curves["lift_off"][0])
+    assert curves["lift_off"][1] == pytest.approx(1 / math.sin(0.5))
+    chart = sa.feeder_regime_chart([0.0, 0.4, 0.8], [0.2, 0.6, 1.5, 4.0], mu_static=0.5,
+                                   mu_kinetic=0.4, periods=3)
+    png = tmp_path / "regimes.png"
+    ax = feeder_figures.plot_regime_chart(chart, incline=0.0, mu_static=0.5, path=png)
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert ax.get_xscale() == "log"
+    assert [p.name for p in tmp_path.iterdir()] == ["regimes.png"]

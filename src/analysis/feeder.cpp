@@ -102,7 +102,9 @@ namespace {
 // Watches a feeder run step by step: the first event, and the census of the counted steps.
 struct FeederWatch final : MotionObserver {
   FeederRun& run;
-  bool counting = false;
+  bool counting = false, was_flying = false;
+  double period_start = 0;     // of the counted period
+  double first_lift = NAN;     // the counted period's first lift-off (end of its step)
   long long sticks = 0, flights = 0;
   explicit FeederWatch(FeederRun& r) : run(r) {}
   void on_step(const core::State& state) override {
@@ -116,7 +118,11 @@ struct FeederWatch final : MotionObserver {
         run.first_event_time = state.t;
     }
     run.lifted_off = run.lifted_off || flying;
-    if (counting) sticks += !flying && u == 0, flights += flying;
+    if (counting) {
+      sticks += !flying && u == 0, flights += flying;
+      if (flying && !was_flying && std::isnan(first_lift)) first_lift = state.t - period_start;
+    }
+    was_flying = flying;
   }
 };
 
@@ -142,7 +148,7 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
   double x_last = 0;
   for (long long p = 0; p < periods; ++p) {
     watch.counting = p + 1 == periods;
-    if (watch.counting) x_last = state.bodies[0].pose.x;
+    if (watch.counting) x_last = state.bodies[0].pose.x, watch.period_start = state.t;
     core::step(model, state, per_period, &watch);
     if (state.status == core::StepStatus::lift_off) {  // no flight: the run stops there
       run.lifted_off = true;
@@ -155,6 +161,12 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
   run.velocity = (state.bodies[0].pose.x - x_last) / period;
   run.stick_fraction = static_cast<double>(watch.sticks) / static_cast<double>(per_period);
   run.flight_fraction = static_cast<double>(watch.flights) / static_cast<double>(per_period);
+  if (watch.flights > 0) {
+    run.flight_angle = 2 * std::numbers::pi * run.flight_fraction;
+    // a flight that carries over from the period before starts the period off the track
+    run.lift_off_phase = 2 * std::numbers::pi / period *
+                         (std::isnan(watch.first_lift) ? 0.0 : watch.first_lift);
+  }
   return run;
 }
 

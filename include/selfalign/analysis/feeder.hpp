@@ -108,6 +108,10 @@ struct FeederRun {
   double velocity = 0;
   double stick_fraction = 0;   ///< of the last period's steps: held on the track
   double flight_fraction = 0;  ///< of the last period's steps: ended off the track
+  /// The last period's flight in the feeder literature's angles: the phase w (t - t_period)
+  /// at which the part first left the track in it (the end of that step) [rad], and the flight
+  /// angle 2 pi flight_fraction (w times the time off the track) [rad]; NaN without a flight.
+  double lift_off_phase = NAN, flight_angle = NAN;
 };
 
 /// From rest at x = 0, t = 0, `periods` (>= 1) periods of `period` [-] of the model by the
