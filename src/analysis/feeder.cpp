@@ -232,6 +232,15 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
       [&](std::size_t i) {
         FeederChartCell& c = out[i];
         const double a0 = c.machine_number * o.g / (w * w);
+        if (c.regime == FeederRegime::stick) {
+          // Proven by the onsets: the part at rest is held at every instant, so the run is
+          // known without stepping it (no event, velocity 0, every step a stick).
+          c.run.first_event = FeederEvent::none, c.run.first_event_time = NAN;
+          c.run.lifted_off = false, c.run.velocity = 0, c.run.stick_fraction = 1;
+          c.run.flight_fraction = 0;
+          c.dimensionless_speed = 0;
+          return;
+        }
         const FeederTable table({a0, o.period, c.vibration_angle, o.incline, o.g});
         c.run = feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight), o.period,
                            o.periods);

@@ -150,7 +150,9 @@ struct FeederChartCell {
 
 /// The regime chart over vibration angles x machine numbers (machine number fastest): per cell
 /// the closed-form regime from feeder_onsets and a run of feeder_run (amplitude K g / w^2, the
-/// part at the friction level g so that the bound is mu (g cos theta + z'')), in parallel through
+/// part at the friction level g so that the bound is mu (g cos theta + z'')); a stick cell's run
+/// is known without stepping it (the onsets prove the part is held at every instant: no event,
+/// velocity 0, stick fraction 1, as feeder_run gives it), in parallel through
 /// the studies' one loop (results independent of the thread count). Throws InvalidParameter
 /// naming the first bad option or grid value.
 std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& vibration_angles,
