@@ -368,6 +368,65 @@ TEST(FeederChart, TheSimulatedRunsFallInTheClosedFormRegimes) {
   for (int r : {0, 1, 3, 4}) EXPECT_GT(regimes[r], 0) << feeder_regime_name(static_cast<FeederRegime>(r));
 }
 
+// The part's energy per unit mass in the world: kinetic 1/2 |V|^2 with V = the table's velocity
+// plus the relative one (along the track and its normal), and gravity's potential
+// g (X sin theta + Z cos theta) at the world position (table plus relative).
+double world_energy(const SquareWave& w, const SquareWaveTrack& sq, const FeederExactState& s) {
+  const TableState a = sq.along.state(s.t), n = sq.normal.state(s.t);
+  const double vx = a.yd + s.u, vz = n.yd + s.w;
+  return 0.5 * (vx * vx + vz * vz) +
+         w.g * ((a.y + s.x) * std::sin(w.theta) + (n.y + s.h) * std::cos(w.theta));
+}
+
+TEST(FeederExact, NoArcOrImpactAddsEnergyBeyondTheTablesWork) {
+  // An energy audit independent of the solver's arcs: over intervals of delta = 1e-5, the
+  // impulse the track gave the part is I = ΔV + g (sin theta, cos theta) delta (exact,
+  // landings included), and the track's work is I . V_track at the interval's middle (the
+  // track's velocity is linear on a window: error O(delta^2) per interval, O(delta |I| |a|)
+  // across a landing). So E(t1) - E(t0) - W = -(friction and impact losses) <= 0 up to those
+  // errors. Sliding, hopping with friction that holds at landing, and hopping with sliding
+  // landings (mu = 0.3): each must lose energy somewhere (or in pure stick none).
+  struct Case {
+    SquareWave w;
+    const char* name;
+  };
+  std::vector<Case> cases = {{SquareWave{}, "sliding"}, {hopping_wave(), "hopping, held"}};
+  SquareWave slippery = hopping_wave();
+  slippery.mu_s = 0.3, slippery.mu_k = 0.25;
+  cases.push_back({slippery, "hopping, sliding landings"});
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const SquareWave& w = c.w;
+    const SquareWaveTrack sq(w);
+    const FeederTrack track = sq.track(w);
+    constexpr double delta = 1e-5;
+    FeederExactState s;
+    advance_feeder_exact(track, s, 1.0);  // past the start from rest
+    double worst_gain = -HUGE_VAL, loss = 0;
+    for (int period = 1; period < 3; ++period) {
+      const double E0 = world_energy(w, sq, s);
+      double W = 0;
+      for (int k = 0; k < static_cast<int>(1 / delta); ++k) {
+        const FeederExactState before = s;
+        advance_feeder_exact(track, s, period + (k + 1) * delta);
+        const TableState a0 = sq.along.state(before.t), n0 = sq.normal.state(before.t);
+        const TableState a1 = sq.along.state(s.t), n1 = sq.normal.state(s.t);
+        const TableState am = sq.along.state(0.5 * (before.t + s.t));
+        const TableState nm = sq.normal.state(0.5 * (before.t + s.t));
+        const double ix = (a1.yd + s.u) - (a0.yd + before.u) + w.g * std::sin(w.theta) * (s.t - before.t);
+        const double iz = (n1.yd + s.w) - (n0.yd + before.w) + w.g * std::cos(w.theta) * (s.t - before.t);
+        W += ix * am.yd + iz * nm.yd;
+      }
+      const double gain = world_energy(w, sq, s) - E0 - W;
+      worst_gain = std::max(worst_gain, gain);
+      loss += -gain;
+    }
+    if (print()) std::printf("%s: largest gain per period %.3e, losses over 2 periods %.4f\n", c.name, worst_gain, loss);
+    EXPECT_LT(worst_gain, 1e-6);
+    EXPECT_GT(loss, 1e-3);  // friction or impacts dissipate: the audit sees them
+  }
+}
+
 TEST(Feeder, BadInputNamesTheParameter) {
   const auto names = [](auto f, const std::string& name) {
     try {
