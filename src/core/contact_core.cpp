@@ -197,6 +197,7 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
     loads.gx = pull * gr.downhill_x, loads.gy = pull * gr.downhill_y;
     loads.pulled = true;
   }
+  const bool flight = model.gravity && model.gravity->flight;  // Moreau-Jean's normal stage
   long long taken = 0;
   for (; taken < steps && s.status == StepStatus::ok; ++taken) {
     // kinematics, once for every body
@@ -204,7 +205,6 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
     const PlanarTablePose tb1 = table_pose(model.motion, t1);
     // loads: the step's normal impulse per unit weight; negative: the table falls away faster
     // than gravity, the bodies lift off (no flight phase yet: the run stops before this step)
-    const bool flight = model.gravity && model.gravity->flight;
     if (model.gravity && !flight) {
       loads.load = pressing + (tb1.vz - s.table.vz) / g;
       if (loads.load < 0) {

@@ -13,8 +13,6 @@ namespace selfalign {
 namespace {
 
 using detail::constant_pieces;
-using detail::piece_at;
-using detail::Piece;
 
 
 // (w^e - w0^e) / e, its limit ln(w / w0) at e = 0, without cancellation for e near 0.
@@ -46,10 +44,8 @@ long long advance_planar_exact_point(const PlanarTableMotion& motion,
   double t = st.t, x = st.x, y = st.y, ux = st.ux, uy = st.uy;
   long long arcs = 0;
   while (t < t_end) {
-    const Piece a = piece_at(p1, t), b = piece_at(p2, t);
-    const double Ax = a.accel * motion.e1_x + b.accel * motion.e2_x;
-    const double Ay = a.accel * motion.e1_y + b.accel * motion.e2_y;
-    const double t_next = std::min({a.next, b.next, t_end});
+    const detail::AccelerationWindow window = detail::acceleration_window(motion, p1, p2, t, t_end);
+    const double Ax = window.ax, Ay = window.ay, t_next = window.end;
     const double tau_max = t_next - t;
     const double Fx = -Ax, Fy = -Ay, F = std::hypot(Fx, Fy);
     ++arcs;

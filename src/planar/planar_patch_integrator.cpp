@@ -137,8 +137,18 @@ struct PivotRhs {
   }
 };
 
+// The time after an accepted step ending at t_out: the window's end when the step reached it
+// (to 4 roundings), and the next step: the controller's proposal, except that a step cut short
+// (by an arrival or the window) does not shrink it.
+inline double accepted_time(double t_out, double window_end) {
+  return t_out >= window_end || window_end - t_out <= 4 * kEps * std::abs(window_end) ? window_end
+                                                                                      : t_out;
+}
+inline double next_step(double h, double dt, double proposed) {
+  return h < dt ? std::max(dt, proposed) : proposed;
+}
+
 struct Run {
-  const PlanarTableMotion& motion;
   const PiecewisePolynomialProfile* p1;
   const PiecewisePolynomialProfile* p2;
   const IntegratorOptions& options;
@@ -149,9 +159,9 @@ struct Run {
   IntegratorStatistics stats;
   double budget = 0;  // step attempts allowed in this call
 
-  Run(const PlanarTableMotion& m, const PiecewisePolynomialProfile* a,
-      const PiecewisePolynomialProfile* b, const IntegratorOptions& o, Patch p)
-      : motion(m), p1(a), p2(b), options(o), patch(std::move(p)) {}
+  Run(const PiecewisePolynomialProfile* a, const PiecewisePolynomialProfile* b,
+      const IntegratorOptions& o, Patch p)
+      : p1(a), p2(b), options(o), patch(std::move(p)) {}
 
   void spend() {
     if (static_cast<double>(stats.steps + stats.rejected + stats.events) > budget)
@@ -304,10 +314,8 @@ struct Run {
         dt = 0.5 * h;
         continue;
       }
-      const bool at_end = tt >= window_end || window_end - tt <= 4 * kEps * std::abs(window_end);
-      y = out, dy = dout, t = at_end ? window_end : tt;
-      // The controller's proposal; a step capped by an arrival or the window keeps the step.
-      dt = h < dt ? std::max(dt, hh) : hh;
+      y = out, dy = dout, t = accepted_time(tt, window_end);
+      dt = next_step(h, dt, hh);
     }
     st.t = t, st.pose = {y[0], y[1], y[2]}, st.twist = {y[3], y[4], y[5]};
     st.step_guess = dt;
@@ -425,9 +433,8 @@ struct Run {
         if (n > 0) st.departure[2 * j] = -lx / n, st.departure[2 * j + 1] = -ly / n;
         return;
       }
-      const bool at_end = tt >= window_end || window_end - tt <= 4 * kEps * std::abs(window_end);
-      y = out, dy = dout, t = at_end ? window_end : tt;
-      dt = h < dt ? std::max(dt, hh) : hh;
+      y = out, dy = dout, t = accepted_time(tt, window_end);
+      dt = next_step(h, dt, hh);
     }
     finish(y, t);
   }
@@ -460,8 +467,7 @@ void advance_planar_integrated(const PlanarTableMotion& motion, const PlanarFiel
   require_planar_law(law);
   if (!std::isfinite(t_end) || t_end < st.t)
     throw InvalidParameter("t_end", t_end, "must be finite and >= the state's time");
-  integrated::Run run(motion,
-                     detail::constant_pieces(motion.first, "first", "the patch integrator"),
+  integrated::Run run(detail::constant_pieces(motion.first, "first", "the patch integrator"),
                      detail::constant_pieces(motion.second, "second", "the patch integrator"),
                      options, integrated::Patch(field, part, law));
   run.radius = patch_radius(part.patch);

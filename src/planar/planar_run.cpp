@@ -66,29 +66,20 @@ long long planar_steps_of_duration(const PlanarProblem& p, double duration) {
 
 namespace {
 
-// The exact point solver's run at the samples' times (simulate_planar, Method::exact).
-void exact_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist& twist,
-               long long steps, long long every, const PlanarRunProgress& progress,
-               PlanarTrajectory& out) {
-  const UniformPlanarField& field = std::get<UniformPlanarField>(p.field);
-  const double h = p.options.step;
-  PlanarExactState s{0, pose.x, pose.y, twist.ux, twist.uy};
+// A run of an event-driven solver recorded at the step times k h (every `every` steps and the
+// last), as the stepped runs are: advance(t, end) brings the solver to t and sets end's pose,
+// twist, mode and pivot.
+template <class Advance>
+void sampled_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist& twist,
+                 long long steps, long long every, const PlanarRunProgress& progress,
+                 PlanarTrajectory& out, const Advance& advance) {
+  Recorder rec(out, every);
   PlanarRigidState end = make_planar_rigid_state(p.motion, 0, pose, twist);
   const auto sample = [&](long long k) {
-    const double t = static_cast<double>(k) * h;
-    advance_planar_exact_point(p.motion, field, p.law, s, t);
-    const PlanarTablePose table = table_pose(p.motion, t);
-    end.t = t, end.step_index = k, end.table = table;
-    end.pose = {s.x, s.y, pose.angle + twist.omega * t};
-    end.twist = {s.ux, s.uy, twist.omega};
-    end.mode = s.ux == 0 && s.uy == 0 ? PatchMode::stick : PatchMode::slip;
-    out.t.push_back(t);
-    out.x.push_back(end.pose.x), out.y.push_back(end.pose.y), out.angle.push_back(end.pose.angle);
-    out.ux.push_back(s.ux), out.uy.push_back(s.uy), out.omega.push_back(twist.omega);
-    out.table_x.push_back(table.x), out.table_y.push_back(table.y);
-    out.table_angle.push_back(table.angle);
-    out.mode.push_back(end.mode);
-    out.pivot.push_back(-1);
+    const double t = static_cast<double>(k) * p.options.step;
+    advance(t, end);
+    end.t = t, end.step_index = k, end.table = table_pose(p.motion, t);
+    rec.record(end);
   };
   sample(0);
   for (long long k = every; k < steps + every; k += every) {
@@ -98,34 +89,30 @@ void exact_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist
   out.end = end;
 }
 
-// The patch integrator's run at the samples' times (simulate_planar, Method::integrator).
+// The exact point solver's run (simulate_planar, Method::exact).
+void exact_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist& twist,
+               long long steps, long long every, const PlanarRunProgress& progress,
+               PlanarTrajectory& out) {
+  const UniformPlanarField& field = std::get<UniformPlanarField>(p.field);
+  PlanarExactState s{0, pose.x, pose.y, twist.ux, twist.uy};
+  sampled_run(p, pose, twist, steps, every, progress, out, [&](double t, PlanarRigidState& end) {
+    advance_planar_exact_point(p.motion, field, p.law, s, t);
+    end.pose = {s.x, s.y, pose.angle + twist.omega * t};
+    end.twist = {s.ux, s.uy, twist.omega};
+    end.mode = s.ux == 0 && s.uy == 0 ? PatchMode::stick : PatchMode::slip;
+  });
+}
+
+// The patch integrator's run (simulate_planar, Method::integrator).
 void integrated_run(const PlanarProblem& p, const PlanarPose& pose, const PlanarTwist& twist,
                     long long steps, long long every, const PlanarRunProgress& progress,
                     PlanarTrajectory& out) {
-  const double h = p.options.step;
   PlanarPatchState s = make_planar_patch_state(0, pose, twist);
-  PlanarRigidState end = make_planar_rigid_state(p.motion, 0, pose, twist);
-  const auto sample = [&](long long k) {
-    const double t = static_cast<double>(k) * h;
+  sampled_run(p, pose, twist, steps, every, progress, out, [&](double t, PlanarRigidState& end) {
     advance_planar_integrated(p.motion, p.field, p.law, p.part, p.integrator, s, t,
                               &out.integration);
-    const PlanarTablePose table = table_pose(p.motion, t);
-    end.t = t, end.step_index = k, end.table = table;
     end.pose = s.pose, end.twist = s.twist, end.mode = s.mode, end.pivot = s.pivot;
-    out.t.push_back(t);
-    out.x.push_back(s.pose.x), out.y.push_back(s.pose.y), out.angle.push_back(s.pose.angle);
-    out.ux.push_back(s.twist.ux), out.uy.push_back(s.twist.uy), out.omega.push_back(s.twist.omega);
-    out.table_x.push_back(table.x), out.table_y.push_back(table.y);
-    out.table_angle.push_back(table.angle);
-    out.mode.push_back(s.mode);
-    out.pivot.push_back(s.pivot);
-  };
-  sample(0);
-  for (long long k = every; k < steps + every; k += every) {
-    sample(std::min(k, steps));
-    if (progress) progress(std::min(k, steps), steps);
-  }
-  out.end = end;
+  });
 }
 
 }  // namespace
