@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "../planar/acceleration_pieces.hpp"
+#include "feeder_exact_detail.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/special_values.hpp"
 
@@ -29,11 +30,26 @@ double landing_time(double h, double w, double n, double limit) {
   return tau <= limit ? tau : kInf;
 }
 
+
+// True when the profile (null: none) has piecewise-constant acceleration, false when it is
+// smooth; throws InvalidParameter naming `name` when it is neither.
+bool constant_family(const TableProfile* p, const char* name) {
+  if (!p || !p->smooth()) return (detail::constant_pieces(p, name, kSolver), true);
+  return false;
+}
+
 }  // namespace
 
 void validate(const FeederTrack& k) {
-  detail::constant_pieces(k.along, "along", kSolver);
-  detail::constant_pieces(k.normal, "normal", kSolver);
+  if (k.along && k.normal && k.along->smooth() && !k.normal->smooth())
+    throw InvalidParameter("normal", k.normal->kind(),
+                           "must be smooth like the motion along the track for " +
+                               std::string(kSolver));
+  if (k.along && k.normal && !k.along->smooth() && k.normal->smooth())
+    throw InvalidParameter("along", k.along->kind(),
+                           "must be smooth like the normal motion for " + std::string(kSolver));
+  constant_family(k.along, "along");
+  constant_family(k.normal, "normal");
   require_positive_moderate("g", k.g);
   if (!(std::abs(k.incline) < 0.5 * std::numbers::pi))
     throw InvalidParameter("incline", k.incline, "must be in (-pi/2, pi/2) rad");
@@ -42,6 +58,8 @@ void validate(const FeederTrack& k) {
     throw InvalidParameter("law", k.law.describe(),
                            "the exact feeder solver takes a Coulomb law (no Stribeck, no viscous "
                            "term)");
+  if (!(k.restitution >= 0 && k.restitution <= 1))
+    throw InvalidParameter("restitution", k.restitution, "must be in [0, 1]");
 }
 
 const char* feeder_mode_name(FeederMode mode) noexcept {
@@ -53,27 +71,22 @@ const char* feeder_mode_name(FeederMode mode) noexcept {
   return "stick";
 }
 
-void advance_feeder_exact(const FeederTrack& k, FeederExactState& st, double t_end,
-                          FeederExactStatistics* statistics) {
-  validate(k);
-  if (!std::isfinite(t_end) || t_end < st.t)
-    throw InvalidParameter("t_end", t_end, "must be finite and >= the state's time");
-  if (!(std::isfinite(st.x) && std::isfinite(st.u) && std::isfinite(st.w) && st.h >= 0 &&
-        std::isfinite(st.h)))
-    throw InvalidParameter("state", st.h, "needs finite values and a height h >= 0");
+namespace {
+
+// The piecewise-constant family: on each window between switches of either profile every
+// quantity is constant, so every arc is a parabola (header).
+void advance_feeder_constant(const FeederTrack& k, FeederExactState& st, double t_end,
+                             FeederExactStatistics& stats) {
   const PiecewisePolynomialProfile* pa = k.along ? k.along->piecewise_polynomial() : nullptr;
   const PiecewisePolynomialProfile* pn = k.normal ? k.normal->piecewise_polynomial() : nullptr;
-  const double gc = k.g * std::cos(k.incline), gs = k.g * std::sin(k.incline);
-  const double per_load = k.level / k.g;  // friction coefficient x this x n: the bound
-  FeederExactStatistics stats;
-  if (st.h > 0) st.mode = FeederMode::flight;
+  const detail::FeederConstants c(k);
   double t = st.t, x = st.x, u = st.u, h = st.h, w = st.w;
-  FeederMode mode = st.mode;
+  FeederMode mode = h > 0 ? FeederMode::flight : st.mode;
   while (t < t_end) {
     const detail::Piece a = detail::piece_at(pa, t), b = detail::piece_at(pn, t);
     const double end = std::min({a.next, b.next, t_end});
-    const double n = gc + b.accel;  // the normal load per unit mass the track must supply
-    const double f = a.accel + gs;  // the friction force per unit mass that holds the part
+    const double n = c.gc + b.accel;  // the normal load per unit mass the track must supply
+    const double f = a.accel + c.gs;  // the friction force per unit mass that holds the part
     ++stats.arcs;
     if (mode == FeederMode::flight) {
       const double tau_land = landing_time(h, w, n, end - t);
@@ -82,39 +95,34 @@ void advance_feeder_exact(const FeederTrack& k, FeederExactState& st, double t_e
       u -= f * dur;
       h += dur * (w - 0.5 * n * dur);
       w -= n * dur;
+      detail::record_census(stats, mode, dur);
       t = tau_land <= end - t ? t + tau_land : end;
-      if (tau_land == dur) {  // landing: plastic, Coulomb-bounded tangential impulse
-        const double P = std::max(0.0, -w);
-        h = 0, w = 0;
-        ++stats.landings;
-        const double sigma = u > 0 ? 1.0 : -1.0;
-        if (std::abs(u) <= k.law.static_coefficient() * per_load * P) {
-          u = 0;
-          ++stats.stick_landings;
-        } else {
-          u -= sigma * k.law.kinetic(u > 0 ? 1 : -1) * per_load * P;
-        }
-        mode = u == 0 ? FeederMode::stick : FeederMode::slip;
+      if (tau_land == dur) {  // landing
+        h = 0;
+        if (!detail::feeder_landing(c, t, n, u, w, stats))
+          mode = u == 0 ? FeederMode::stick : FeederMode::slip;
       }
       continue;
     }
     if (n < 0) {  // the track falls away faster than gravity: lift-off
       mode = FeederMode::flight;
-      ++stats.lift_offs;
+      detail::record_lift_off(stats, t);
       continue;
     }
     double sigma;
     if (u == 0) {
-      if (std::abs(f) <= k.law.static_coefficient() * per_load * n) {
+      if (std::abs(f) <= c.static_bound(n)) {
         mode = FeederMode::stick;
+        detail::record_census(stats, mode, end - t);
         t = end;
         continue;
       }
       sigma = f > 0 ? -1.0 : 1.0;  // it slides against the friction it would need
+      detail::record_slip_start(stats, t, static_cast<int>(sigma));
     } else {
       sigma = u > 0 ? 1.0 : -1.0;
     }
-    const double acc = -f - sigma * k.law.kinetic(sigma > 0 ? 1 : -1) * per_load * n;
+    const double acc = -f - sigma * c.kinetic(sigma > 0 ? 1 : -1, n);
     const double tau_stop = u != 0 && acc * sigma < 0 ? -u / acc : kInf;
     const bool stops = tau_stop <= end - t;
     const double dur = stops ? tau_stop : end - t;
@@ -122,13 +130,29 @@ void advance_feeder_exact(const FeederTrack& k, FeederExactState& st, double t_e
     u = stops ? 0.0 : u + acc * dur;
     t = stops ? t + tau_stop : end;
     mode = FeederMode::slip;
+    detail::record_census(stats, mode, dur);
   }
   st.t = t, st.x = x, st.u = u, st.h = h, st.w = w;
   st.mode = mode == FeederMode::slip && u == 0 ? FeederMode::stick : mode;
-  if (statistics) {
-    statistics->arcs += stats.arcs, statistics->lift_offs += stats.lift_offs;
-    statistics->landings += stats.landings, statistics->stick_landings += stats.stick_landings;
-  }
+}
+
+}  // namespace
+
+void advance_feeder_exact(const FeederTrack& k, FeederExactState& st, double t_end,
+                          FeederExactStatistics* statistics) {
+  validate(k);
+  if (!std::isfinite(t_end) || t_end < st.t)
+    throw InvalidParameter("t_end", t_end, "must be finite and >= the state's time");
+  if (!(std::isfinite(st.x) && std::isfinite(st.u) && std::isfinite(st.w) && st.h >= 0 &&
+        std::isfinite(st.h)))
+    throw InvalidParameter("state", st.h, "needs finite values and a height h >= 0");
+  FeederExactStatistics local;
+  FeederExactStatistics& stats = statistics ? *statistics : local;
+  const bool smooth = (k.along && k.along->smooth()) || (k.normal && k.normal->smooth());
+  if (smooth)
+    detail::advance_feeder_smooth(k, st, t_end, stats);
+  else
+    advance_feeder_constant(k, st, t_end, stats);
 }
 
 }  // namespace selfalign

@@ -1,31 +1,41 @@
 #pragma once
 /// \file feeder_exact.hpp
-/// The exact event-driven feeder solver (issue 23, item 3, first part): a 1-D part on a track
-/// inclined by theta whose accelerations along the track, a_x(t), and along its normal, a_z(t),
-/// are piecewise constant (PiecewisePolynomialProfile without jerk), with a uniform friction
-/// level, a Coulomb law (static >= kinetic, direction-dependent kinetic coefficients), lift-off
-/// and plastic landing (docs/feeder.md). On each window between switches of either profile every
-/// quantity is constant, so every arc is a parabola in closed form:
-///   contact (h = 0):  normal load per unit mass n = g cos(theta) + a_z; the needed friction
-///                     f = a_x + g sin(theta); stick (u = 0 exactly) while |f| <= s m n / g,
-///                     else slip u' = -f - sigma k_sigma m n / g, its stop at u = 0 in closed
-///                     form; n < 0 lifts the part off (at the window's start: n is constant);
+/// The exact event-driven feeder solver (issue 23, item 3): a 1-D part on a track inclined by
+/// theta whose table moves along the track, x_T(t), and along its normal, z_T(t), with a
+/// uniform friction level, a Coulomb law (static >= kinetic, direction-dependent kinetic
+/// coefficients), lift-off, flight and landing with Newton restitution e (docs/feeder.md).
+/// Per unit mass: the normal load n = g cos(theta) + z_T'', the friction the track must supply
+/// to hold the part f = x_T'' + g sin(theta), the bound s m n / g (m the level).
+///   contact (h = 0):  stick (u = 0 exactly) while |f| <= s m n / g; else slip
+///                     u' = -f - sigma k_sigma m n / g until u = 0; n < 0 lifts the part off;
 ///   flight:           h'' = -n (the part falls with g cos(theta), the track accelerates by
-///                     a_z), u' = -f (no friction); landing at the first root of the quadratic
-///                     h(t) = 0, in closed form (the stable root formula);
-///   landing:          plastic (restitution 0): the normal impulse per unit mass P = -h' and a
-///                     Coulomb-bounded tangential impulse: the part sticks if |u| <= s m P / g,
-///                     else u loses k m P / g.
+///                     z_T''), u' = -f (no friction); landing at the first root of h;
+///   landing:          Newton restitution: the normal impulse per unit mass P = -(1 + e) h'
+///                     (the rate leaves as -e h') and a Coulomb-bounded tangential impulse: the
+///                     part sticks if |u| <= s m P / g, else u loses k m P / g. With e > 0 the
+///                     bounces shorten geometrically under a positive load; once a bounce would
+///                     last under 64 roundings of t the contact closes (the accumulation point).
+/// Two drive families, each in closed form (both directions of one family):
+///   piecewise-constant accelerations (PiecewisePolynomialProfile without jerk): every arc a
+///     parabola, every event a closed-form root (the stable quadratic root for a landing);
+///   smooth motions (Fourier series: the classic sinusoidal drive, two-frequency drives; any
+///     SmoothMotion): every arc closed-form in the motion (u = u0 - (x_T'(t) - x_T'(t0)) - ...,
+///     h likewise with z_T), every event (a stick break, a velocity zero, a lift-off n = 0, a
+///     landing h = 0) isolated by the safe steps of the smooth 1-D solver, the certified scan
+///     (smooth_exact.hpp): no root is stepped over, and the scan converges onto each.
 /// u is the velocity relative to the track along it, x the position on the track, h the height
 /// above it and w = h'. Units: the model's (g = 1 / mu_1 in the paper's); theta > 0 rises along +x.
+
+#include <cmath>
 
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
 
-/// The track: its piecewise-constant accelerations (borrowed; null: none along that direction),
-/// gravity, incline, uniform friction level and law.
+/// The track: its motion along it and along its normal (borrowed; null: none along that
+/// direction; both piecewise-constant accelerations or both smooth), gravity, incline, uniform
+/// friction level, law and the landing's restitution.
 struct FeederTrack {
   const TableProfile* along = nullptr;   ///< x(t) along the track
   const TableProfile* normal = nullptr;  ///< z(t) along its normal
@@ -33,10 +43,12 @@ struct FeederTrack {
   double incline = 0;                    ///< theta [rad], in (-pi/2, pi/2)
   double level = 1;                      ///< m [-], > 0
   FrictionLaw law;                       ///< Coulomb (no Stribeck, no viscous term)
+  double restitution = 0;                ///< Newton's e at a landing [-], in [0, 1]; 0: plastic
 };
 
-/// Throws InvalidParameter naming "along"/"normal" (not piecewise-constant acceleration), "g",
-/// "incline", "level" or "law" (velocity-dependent).
+/// Throws InvalidParameter naming "along"/"normal" (neither piecewise-constant acceleration nor
+/// smooth, or one of each), "g", "incline", "level", "law" (velocity-dependent) or
+/// "restitution" (outside [0, 1]).
 void validate(const FeederTrack& track);
 
 /// contact_stick, contact_slip or flight.
@@ -54,6 +66,13 @@ struct FeederExactState {
 /// What the solver did (accumulated over calls).
 struct FeederExactStatistics {
   long long arcs = 0, lift_offs = 0, landings = 0, stick_landings = 0;
+  long long rebounds = 0;  ///< landings after which the part flies on (e > 0)
+  /// Time spent held, sliding and off the track [-].
+  double stick_time = 0, slip_time = 0, flight_time = 0;
+  /// The first lift-off and the first slip from rest (with its direction, +1 forward along +x
+  /// or -1) recorded into these statistics; NaN and 0 when none.
+  double first_lift_off = NAN, first_slip = NAN;
+  int first_slip_direction = 0;
 };
 
 /// Advances to t_end (>= state.t, finite). A state in contact (h = 0, w = 0) with u = 0 sticks
