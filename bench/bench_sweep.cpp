@@ -86,8 +86,9 @@ BENCHMARK(sweep_grid_columns)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 // Issue 23: a feeder regime chart over (vibration angle, machine number), n x n cells, each
-// the closed-form regime and a run of the contact core with Moreau-Jean flight (10 periods of
-// 200 steps from rest); target: 200 x 200 on 2 cores <= 2 s. Args: {n, threads}.
+// the closed-form regime and a run of 10 periods from rest: by the exact feeder solver
+// (moreau 0, the chart's default) or the contact core with Moreau-Jean flight (moreau 1, 200
+// steps per period); target: 200 x 200 on 2 cores <= 2 s. Args: {n, threads, moreau}.
 void feeder_chart(benchmark::State& st) {
   const int n = static_cast<int>(st.range(0));
   std::vector<double> angles, ks;
@@ -95,6 +96,7 @@ void feeder_chart(benchmark::State& st) {
   for (int i = 0; i < n; ++i) ks.push_back(0.1 * std::pow(100.0, (i + 0.5) / n));  // 0.1 .. 10
   FeederChartOptions o;
   o.threads = static_cast<int>(st.range(1));
+  o.method = st.range(2) == 0 ? Method::exact : Method::time_stepping;
   long long hopping = 0;
   for (auto _ : st) {
     const auto cells = feeder_regime_chart(angles, ks, o);
@@ -107,9 +109,11 @@ void feeder_chart(benchmark::State& st) {
   thread_ns_per_cell(st, static_cast<double>(n) * n, o.threads);
 }
 BENCHMARK(feeder_chart)
-    ->ArgNames({"n", "threads"})
-    ->Args({200, 2})
-    ->Args({200, 1})
+    ->ArgNames({"n", "threads", "moreau"})
+    ->Args({200, 2, 0})
+    ->Args({200, 1, 0})
+    ->Args({200, 2, 1})
+    ->Args({200, 1, 1})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -130,6 +130,27 @@ TEST(FeederSmoothExact, WithoutNormalMotionOnALevelTrackItIsTheOneDimensionalSmo
   }
 }
 
+TEST(FeederSmoothExact, TheExactRunReportsTheFlightInTheLiteraturesAngles) {
+  // feeder_run_exact on the hopping drive of the flight-equation test (Gamma = 2, mu = 20):
+  // the last period's lift-off phase is asin(1 / Gamma) and its flight angle the flight
+  // equation's, to 1e-12 rad; the first event is the short slip before the first lift-off
+  // (docs/feeder.md: a part slips before it lifts off when cos(psi + theta) > 0), forward.
+  const FeederTable table(drive_at_throw(2.0, 0.6, 0.05));
+  const FeederRun run = feeder_run_exact(table, FrictionLaw(20.0, 20.0), 1.0, 4);
+  const double phi0 = std::asin(0.5);
+  EXPECT_NEAR(run.lift_off_phase, phi0, 1e-12);
+  EXPECT_NEAR(run.flight_angle, static_cast<double>(landing_phase(2.0L)) - phi0, 1e-12);
+  EXPECT_TRUE(run.lifted_off);
+  EXPECT_EQ(run.first_event, FeederEvent::forward_slip);
+  EXPECT_LT(run.first_event_time, phi0 / (2 * kPi));
+  EXPECT_GT(run.velocity, 0);
+  // without flight the run stops at the lift-off: its numbers are absent, not 0
+  const FeederRun grounded = feeder_run_exact(table, FrictionLaw(20.0, 20.0), 1.0, 4, 0.0, false);
+  EXPECT_TRUE(grounded.lifted_off);
+  EXPECT_TRUE(std::isnan(grounded.velocity));
+  EXPECT_TRUE(std::isnan(grounded.stick_fraction));
+}
+
 // The exact solver's mean velocity over the last of `periods` periods.
 double exact_speed(const FeederTrack& track, int periods) {
   FeederExactState s;

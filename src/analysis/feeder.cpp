@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "parallel_cells.hpp"
+#include "selfalign/analysis/feeder_exact.hpp"
 #include "selfalign/core/state.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/error.hpp"
@@ -170,6 +171,56 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
   return run;
 }
 
+FeederRun feeder_run_exact(const FeederTable& table, const FrictionLaw& law, double level,
+                           long long periods, double restitution, bool flight) {
+  if (periods < 1) throw InvalidParameter("periods", static_cast<double>(periods), "must be >= 1");
+  const FeederDrive& d = table.drive();
+  FeederTrack track{table.motion().first, table.motion().normal, d.g, d.incline, level, law};
+  track.restitution = restitution;
+  validate(track);
+  FeederRun run;
+  FeederExactState state;
+  FeederExactStatistics all, last;
+  double x_last = 0;
+  for (long long p = 0; p < periods; ++p) {
+    const bool counting = p + 1 == periods;
+    if (counting) x_last = state.x;
+    FeederExactStatistics now;
+    advance_feeder_exact(track, state, static_cast<double>(p + 1) * d.period, &now);
+    if (std::isnan(all.first_lift_off)) all.first_lift_off = now.first_lift_off;
+    if (std::isnan(all.first_slip))
+      all.first_slip = now.first_slip, all.first_slip_direction = now.first_slip_direction;
+    all.lift_offs += now.lift_offs;
+    if (counting) last = now;
+    if (!flight && all.lift_offs > 0) break;
+  }
+  const bool lifts = !std::isnan(all.first_lift_off);
+  const bool slips = !std::isnan(all.first_slip);
+  run.first_event_time = NAN;
+  if (lifts && (!slips || all.first_lift_off < all.first_slip))
+    run.first_event = FeederEvent::lift_off, run.first_event_time = all.first_lift_off;
+  else if (slips)
+    run.first_event = all.first_slip_direction > 0 ? FeederEvent::forward_slip
+                                                   : FeederEvent::backward_slip,
+    run.first_event_time = all.first_slip;
+  run.lifted_off = lifts;
+  if (!flight && lifts) {  // as feeder_run without the model's flight: the run stops there
+    run.velocity = run.stick_fraction = run.flight_fraction = NAN;
+    return run;
+  }
+  run.velocity = (state.x - x_last) / d.period;
+  run.stick_fraction = last.stick_time / d.period;
+  run.flight_fraction = last.flight_time / d.period;
+  if (last.flight_time > 0) {
+    run.flight_angle = 2 * std::numbers::pi * run.flight_fraction;
+    // a flight that carries over from the period before starts the period off the track
+    const double start = static_cast<double>(periods - 1) * d.period;
+    run.lift_off_phase = 2 * std::numbers::pi / d.period *
+                         (std::isnan(last.first_lift_off) ? 0.0 : last.first_lift_off - start);
+  }
+  return run;
+}
+
 const char* feeder_regime_name(FeederRegime regime) noexcept {
   switch (regime) {
     case FeederRegime::stick: return "stick";
@@ -209,6 +260,8 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
   if (!(static_cast<double>(angles.size()) * static_cast<double>(ks.size()) <= 1e8))
     throw InvalidParameter("machine_numbers", static_cast<double>(ks.size()),
                            "the chart must have at most 1e8 cells");
+  if (o.method != Method::exact && o.method != Method::time_stepping)
+    throw InvalidParameter("method", to_string(o.method), "must be exact or time-stepping");
   // One run's model, checked once (steps_per_period names itself).
   const FrictionLaw law(o.mu_static, o.mu_kinetic);
   const double w = 2 * std::numbers::pi / o.period;
@@ -242,8 +295,10 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
           return;
         }
         const FeederTable table({a0, o.period, c.vibration_angle, o.incline, o.g});
-        c.run = feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight), o.period,
-                           o.periods);
+        c.run = o.method == Method::exact
+                    ? feeder_run_exact(table, law, o.g, o.periods, 0.0, o.flight)
+                    : feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight),
+                                 o.period, o.periods);
         c.dimensionless_speed = c.run.velocity / (a0 * w * std::cos(c.vibration_angle));
       },
       [&](std::size_t i, const std::string& why) {

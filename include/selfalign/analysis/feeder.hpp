@@ -28,6 +28,7 @@
 #include "selfalign/core/model.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/table_profile.hpp"
+#include "selfalign/simulate/method.hpp"
 
 namespace selfalign {
 
@@ -118,6 +119,17 @@ struct FeederRun {
 /// contact core's Moreau step (core/step.hpp). The model must have one SliderBody.
 FeederRun feeder_run(const core::Model& model, double period, long long periods);
 
+/// The same run by the exact feeder solver (feeder_exact.hpp) on the table's sinusoidal drive:
+/// the part (`law` at the uniform `level`) from rest at x = 0, t = 0 for `periods` (>= 1)
+/// periods, landings with Newton's `restitution` e in [0, 1]. The numbers are feeder_run's
+/// without the step: the first event at its exact time, the last period's mean velocity, its
+/// stick and flight fractions of the period's time, the lift-off phase of its first lift-off
+/// and its flight angle. `flight` false: as feeder_run without the model's flight, a run that
+/// lifts off stops in that period (velocity and fractions NaN). Throws InvalidParameter as
+/// validate(FeederTrack) and naming "periods".
+FeederRun feeder_run_exact(const FeederTable& table, const FrictionLaw& law, double level,
+                           long long periods, double restitution = 0, bool flight = true);
+
 /// The regime the closed-form onsets give at machine number K (docs/feeder.md): stick (below
 /// both slips), forward (the forward slip only), backward, both (slips both ways each period),
 /// hopping (at or above the lift-off: flights, whatever else happens).
@@ -133,8 +145,11 @@ struct FeederChartOptions {
   double g = 1;                           ///< [-] (9.81 in SI)
   double period = 1;                      ///< drive period [-] (s in SI)
   long long periods = 10;                 ///< from rest; the last one is reported
-  long long steps_per_period = 200;       ///< Moreau's steps
-  bool flight = true;                     ///< Moreau-Jean flight (else runs stop at lift-off)
+  long long steps_per_period = 200;       ///< Moreau's steps (time-stepping only)
+  bool flight = true;                     ///< flight and landing (else runs stop at lift-off)
+  /// Method::exact (feeder_run_exact, plastic landing; the default) or Method::time_stepping
+  /// (feeder_run: Moreau, Moreau-Jean flight, steps_per_period steps).
+  Method method = Method::exact;
   int threads = 0;                        ///< 0: all cores
   ProgressCallback progress;              ///< (cells done, cells), optional
 };
@@ -149,12 +164,12 @@ struct FeederChartCell {
 };
 
 /// The regime chart over vibration angles x machine numbers (machine number fastest): per cell
-/// the closed-form regime from feeder_onsets and a run of feeder_run (amplitude K g / w^2, the
-/// part at the friction level g so that the bound is mu (g cos theta + z'')); a stick cell's run
-/// is known without stepping it (the onsets prove the part is held at every instant: no event,
-/// velocity 0, stick fraction 1, as feeder_run gives it), in parallel through
-/// the studies' one loop (results independent of the thread count). Throws InvalidParameter
-/// naming the first bad option or grid value.
+/// the closed-form regime from feeder_onsets and a run of feeder_run_exact or feeder_run
+/// (options.method; amplitude K g / w^2, the part at the friction level g so that the bound is
+/// mu (g cos theta + z'')); a stick cell's run is known without running it (the onsets prove
+/// the part is held at every instant: no event, velocity 0, stick fraction 1, as both runs
+/// give it), in parallel through the studies' one loop (results independent of the thread
+/// count). Throws InvalidParameter naming the first bad option or grid value.
 std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& vibration_angles,
                                                  const std::vector<double>& machine_numbers,
                                                  const FeederChartOptions& options);
