@@ -73,7 +73,7 @@ FeederTable::FeederTable(const FeederDrive& drive) : drive_(drive) {
 }
 
 core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
-                         long long steps_per_period, bool flight) {
+                         long long steps_per_period, bool flight, double restitution) {
   if (!(steps_per_period >= 2 && steps_per_period <= 100000000))
     throw InvalidParameter("steps_per_period", static_cast<double>(steps_per_period),
                            "must be in [2, 1e8]");
@@ -84,6 +84,7 @@ core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, doubl
   model.options = {table.drive().period / static_cast<double>(steps_per_period), 0.5};
   model.gravity = table.gravity();
   model.gravity->flight = flight;
+  model.gravity->restitution = restitution;
   core::validate(model);
   return model;
 }

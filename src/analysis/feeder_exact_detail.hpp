@@ -29,18 +29,21 @@ struct FeederConstants {
 
 // The landing at time t (w < 0 the rate of approach, n the normal load there): Newton's
 // restitution, P = -(1 + e) w, the rate leaves as -e w; the tangential impulse is
-// Coulomb-bounded: the part sticks (u = 0) if |u| <= s m P / g, else u loses k m P / g. A
-// rebound that would last under 64 roundings of t under a positive load is the accumulation
-// point of the bounces: the contact closes (w = 0). Returns true when the part flies on.
+// Coulomb-bounded by the kinetic cone, as on the sliding arcs (the static coefficient holds a
+// part at rest, it does not stop a sliding one): the part stops (u = 0) if |u| <= k m P / g,
+// else u loses k m P / g. A part that arrives at rest relative to the track (u = 0) needs no
+// tangential impulse and stays at rest. A rebound that would last under 64 roundings of t
+// under a positive load is the accumulation point of the bounces: the contact closes (w = 0).
+// Returns true when the part flies on.
 inline bool feeder_landing(const FeederConstants& c, double t, double n, double& u, double& w,
                            FeederExactStatistics& stats) {
   const double P = (1 + c.restitution) * std::max(0.0, -w);
   ++stats.landings;
-  if (std::abs(u) <= c.static_bound(P)) {
+  const int sigma = u > 0 ? 1 : -1;
+  if (std::abs(u) <= c.kinetic(sigma, P)) {
     u = 0;
     ++stats.stick_landings;
   } else {
-    const int sigma = u > 0 ? 1 : -1;
     u -= sigma * c.kinetic(sigma, P);
   }
   w = c.restitution * std::max(0.0, -w);

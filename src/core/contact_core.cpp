@@ -52,18 +52,20 @@ void slider_step(const Model& model, const SliderBody& b, double h, double th,
 // Moreau-Jean's normal stage of one body (Gravity::flight, core/model.hpp): the free normal
 // velocity relative to the table w - h g cos(incline) - Δz' (`weight` = h g cos(incline),
 // `dvz` = Δz'); the contact is active where the height at the step's midpoint is <= 0 and that
-// velocity is negative, then the plastic impulse P cancels it; the height moves by the theta
-// rule. Returns the step's loads with this body's normal impulse per unit weight P / g.
+// velocity is below Newton's target -e min(w, 0) (e = Gravity::restitution; 0: plastic), then
+// the impulse P brings it to the target; the height moves by the theta rule. Returns the step's
+// loads with this body's normal impulse per unit weight P / g.
 detail::StepLoads normal_contact(double h, double th, double weight, double dvz, double g,
-                                 const detail::StepLoads& loads, BodyState& b) {
+                                 double e, const detail::StepLoads& loads, BodyState& b) {
   const double w = b.normal_velocity;
   const double w_free = w - weight - dvz;
-  const bool active = b.height + 0.5 * h * w <= 0 && w_free < 0;
-  const double w1 = active ? 0.0 : w_free;
+  const double target = -e * std::min(w, 0.0);
+  const bool active = b.height + 0.5 * h * w <= 0 && w_free < target;
+  const double w1 = active ? target : w_free;
   detail::StepLoads out = loads;
-  out.load = active ? -w_free / g : 0.0;
+  out.load = active ? (target - w_free) / g : 0.0;
   b.height += h * ((1 - th) * w + th * w1);
-  if (active && b.height < 0) b.height = 0;  // plastic: it ends the step on the table
+  if (active && b.height < 0) b.height = 0;  // it ends the step on the table
   b.normal_velocity = w1;
   return out;
 }
@@ -103,6 +105,8 @@ void validate(const Model& m) {
     if (!(g.incline >= 0 && g.incline < std::numbers::pi / 2))
       throw InvalidParameter("gravity.incline", g.incline, "must be in [0, pi/2) rad");
     require_unit_vector("gravity.downhill", g.downhill_x, g.downhill_y);
+    if (!(g.restitution >= 0 && g.restitution <= 1))
+      throw InvalidParameter("gravity.restitution", g.restitution, "must be in [0, 1]");
   } else if (m.motion.normal) {
     throw InvalidParameter("motion.normal", m.motion.normal->kind(),
                            "the table's normal motion changes the normal load: give the model "
@@ -217,7 +221,8 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
     for (std::size_t i = 0; i < n; ++i) {
       // Moreau-Jean's unilateral normal contact (Gravity::flight): this body's normal impulse
       const detail::StepLoads body_loads =
-          flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g, loads, s.bodies[i])
+          flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
+                                  model.gravity->restitution, loads, s.bodies[i])
                  : loads;
       std::visit(Overloaded{[&](const RigidBody& b) {
                               detail::rigid_body_step(model.field, b.law, b.part, h, th, s.table,

@@ -87,11 +87,13 @@ class FeederTable {
 
 /// A model of one 1-D part (a point footprint, `law`) on the table's track at the uniform
 /// level `level`, Moreau's step h = period / steps_per_period (>= 2; InvalidParameter naming
-/// "steps_per_period" otherwise); `flight`: lift-off, flight and plastic landing by
-/// Moreau-Jean (core::Gravity::flight), else a run stops at a lift-off. The table must outlive
+/// "steps_per_period" otherwise); `flight`: lift-off, flight and landing by Moreau-Jean
+/// (core::Gravity::flight) with Newton's `restitution` e in [0, 1] (InvalidParameter naming
+/// "gravity.restitution" otherwise), else a run stops at a lift-off. The table must outlive
 /// the model.
 core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
-                         long long steps_per_period, bool flight = true);
+                         long long steps_per_period, bool flight = true,
+                         double restitution = 0);
 
 /// The first thing that happens to a part at rest on the track.
 enum class FeederEvent { none, forward_slip, backward_slip, lift_off };

@@ -11,8 +11,9 @@
 ///   flight:           h'' = -n (the part falls with g cos(theta), the track accelerates by
 ///                     z_T''), u' = -f (no friction); landing at the first root of h;
 ///   landing:          Newton restitution: the normal impulse per unit mass P = -(1 + e) h'
-///                     (the rate leaves as -e h') and a Coulomb-bounded tangential impulse: the
-///                     part sticks if |u| <= s m P / g, else u loses k m P / g. With e > 0 the
+///                     (the rate leaves as -e h') and a tangential impulse bounded by the
+///                     kinetic cone, as on the sliding arcs: the part stops if
+///                     |u| <= k m P / g, else u loses k m P / g. With e > 0 the
 ///                     bounces shorten geometrically under a positive load; once a bounce would
 ///                     last under 64 roundings of t the contact closes (the accumulation point).
 /// Two drive families, each in closed form (both directions of one family):

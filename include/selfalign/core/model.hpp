@@ -73,6 +73,9 @@ struct Gravity {
   double incline = 0;                      ///< the plane's angle to the horizontal, [0, pi/2) [rad]
   double downhill_x = 1, downhill_y = 0;   ///< the plane's steepest descent, unit, world axes
   bool flight = false;  ///< lift-off and landing by Moreau-Jean (false: stop at a lift-off)
+  /// Newton's restitution e at a landing, in [0, 1] (0: plastic): Moreau-Jean's active contact
+  /// drives the relative normal velocity to -e times the step's incoming one.
+  double restitution = 0;
 };
 
 struct Model {
