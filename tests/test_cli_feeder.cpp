@@ -49,22 +49,27 @@ TEST(CliFeeder, ReportsTheOnsetsAndTheRunInSiUnits) {
     EXPECT_FALSE(j["lifted_off"].get<bool>());
   }
   // psi = 0.5, theta = 0.1: the lift-off at Gamma = 1, K = cos(theta) / sin(psi); above it the
-  // part hops (Moreau-Jean flight) and still conveys.
+  // part hops and still conveys. The classical lift-off phase: N = g cos(theta) (1 - Gamma
+  // sin(w t)) turns negative at sin(w t) = 1 / Gamma: exact (the default) to 1e-9 rad, and by
+  // time-stepping to the step (2 pi / 2000 rad) at the end of that step.
   const double K = 1.5 * std::cos(0.1) / std::sin(0.5);
-  const auto r = box.run({"feeder", "--amplitude", text(K * g / (w * w)), "--frequency", "50",
-                          "--vibration-angle", "0.5", "--incline", "0.1", "--mu-static", "0.6",
-                          "--mu-kinetic", "0.5", "--periods", "10", "--json"});
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  const json j = json::parse(r.out);
-  EXPECT_NEAR(j["throw_number"].get<double>(), 1.5, 1e-12);
-  EXPECT_NEAR(j["onsets"]["lift_off"]["machine_number"].get<double>(), K / 1.5, 1e-12);
-  EXPECT_TRUE(j["lifted_off"].get<bool>());
-  EXPECT_GT(j["census"]["flight"].get<double>(), 0);
-  EXPECT_GT(j["velocity_m_per_s"].get<double>(), 0);
-  // The classical lift-off phase: N = g cos(theta) (1 - Gamma sin(w t)) turns negative at
-  // sin(w t) = 1 / Gamma; reported to the step (2 pi / 2000 rad) at the end of that step.
-  EXPECT_NEAR(j["lift_off_phase_rad"].get<double>(), std::asin(1 / 1.5),
-              2 * std::numbers::pi / 2000 * 1.5);
+  for (const std::string method : {"exact", "time-stepping"}) {
+    SCOPED_TRACE(method);
+    const auto r = box.run({"feeder", "--amplitude", text(K * g / (w * w)), "--frequency", "50",
+                            "--vibration-angle", "0.5", "--incline", "0.1", "--mu-static", "0.6",
+                            "--mu-kinetic", "0.5", "--periods", "10", "--method", method,
+                            "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_NEAR(j["throw_number"].get<double>(), 1.5, 1e-12);
+    EXPECT_NEAR(j["onsets"]["lift_off"]["machine_number"].get<double>(), K / 1.5, 1e-12);
+    EXPECT_TRUE(j["lifted_off"].get<bool>());
+    EXPECT_GT(j["census"]["flight"].get<double>(), 0);
+    EXPECT_GT(j["velocity_m_per_s"].get<double>(), 0);
+    EXPECT_NEAR(j["lift_off_phase_rad"].get<double>(), std::asin(1 / 1.5),
+                method == "exact" ? 1e-9 : 2 * std::numbers::pi / 2000 * 1.5);
+    EXPECT_EQ(j["steps_per_period"].is_null(), method == "exact");
+  }
 }
 
 TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
@@ -75,17 +80,30 @@ TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
       {{"--incline", "-2"}, {"incline", "pi/2"}},
       {{"--mu-kinetic", "0.9"}, {"mu-kinetic", "mu-static"}},
       {{"--steps-per-period", "1"}, {"steps-per-period"}},
+      {{"--restitution", "1.5"}, {"restitution", "[0, 1]"}},
+      {{"--method", "integrator"}, {"method", "exact or time-stepping"}},
+      // Gamma = a0 w^2 sin(0.5) / g = 4.8 > 1 with lift-off forbidden
+      {{"--amplitude", "1e-3", "--vibration-angle", "0.5", "--no-flight"},
+       {"amplitude", "no-flight", "negative"}},
   };
   for (const auto& [change, expected] : cases) {
     const CliSandbox box;
     std::vector<std::string> args = {"feeder", "--amplitude", "1e-4", "--frequency", "50",
                                      "--mu-static", "0.5", "--mu-kinetic", "0.4"};
-    for (std::size_t i = 0; i + 1 < change.size(); i += 2)
-      for (std::size_t k = 1; k + 1 < args.size(); ++k)
-        if (args[k] == change[i]) args[k + 1] = change[i + 1];
-    if (change[0] == "--vibration-angle" || change[0] == "--incline" ||
-        change[0] == "--steps-per-period")
-      args.insert(args.end(), change.begin(), change.end());
+    std::vector<std::string> extra;
+    for (std::size_t i = 0; i < change.size(); ++i) {
+      bool replaced = false;
+      for (std::size_t k = 1; i + 1 < change.size() && k + 1 < args.size(); ++k)
+        if (args[k] == change[i]) args[k + 1] = change[i + 1], replaced = true;
+      if (replaced) {
+        ++i;
+      } else {
+        extra.push_back(change[i]);
+        if (i + 1 < change.size() && change[i + 1].rfind("--", 0) != 0)
+          extra.push_back(change[++i]);
+      }
+    }
+    args.insert(args.end(), extra.begin(), extra.end());
     args.insert(args.end(), {"--out", "report.json"});
     SCOPED_TRACE(change[0]);
     expect_clean_failure(box, box.run(args), expected);
@@ -96,10 +114,13 @@ TEST(CliRegimes, WritesTheChartsCellsWithTheClosedFormRegimes) {
   // psi = 0 on a level track: both slips at K = mu_s (0.5), no lift-off, so on the geometric
   // K axis 0.1 .. 10 the cells below 0.5 are stick and the others both; psi = 0.5 adds the
   // lift-off at K = 1 / sin(0.5).
+  for (const std::string method : {"exact", "time-stepping"}) {
+  SCOPED_TRACE(method);
   const CliSandbox box;
   const auto r = box.run({"regimes", "--angle-min", "0", "--angle-max", "0.5", "--angles", "2",
                           "--machine-numbers", "9", "--mu-static", "0.5", "--mu-kinetic",
-                          "0.4", "--periods", "3", "--csv", "chart.csv", "--json", "--quiet"});
+                          "0.4", "--periods", "3", "--csv", "chart.csv", "--json", "--quiet",
+                          "--method", method});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json j = json::parse(r.out);
   EXPECT_EQ(j["cells"], 18);
@@ -121,11 +142,16 @@ TEST(CliRegimes, WritesTheChartsCellsWithTheClosedFormRegimes) {
     EXPECT_EQ(col[3], expected) << rows[i];
     EXPECT_EQ(col[9], "ok");
   }
+  EXPECT_NE(j["method"].get<std::string>().find(method == "exact" ? "exact" : "Moreau"), std::string::npos);
+  }
   // Bad input: one line naming the flag, exit 2, no file.
   const CliSandbox bad;
   expect_clean_failure(bad, bad.run({"regimes", "--mu-static", "0.5", "--mu-kinetic", "0.4",
                                      "--angles", "0", "--csv", "c.csv"}),
                        {"angles", "[1, 2000]"});
+  expect_clean_failure(bad, bad.run({"regimes", "--mu-static", "0.5", "--mu-kinetic", "0.4",
+                                     "--restitution", "-1", "--csv", "c.csv"}),
+                       {"restitution", "[0, 1]"});
 }
 
 }  // namespace cli_feeder_test

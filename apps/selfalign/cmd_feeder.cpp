@@ -1,7 +1,7 @@
 // `selfalign feeder`: a part on a vibratory feeder track (docs/feeder.md) in SI units: the
 // sinusoidal drive along the vibration angle on an inclined track, its machine and throw
-// numbers, the closed-form onsets, and a run of the contact core (Moreau, with Moreau-Jean
-// flight): first event, conveying velocity, stick and flight fractions.
+// numbers, the closed-form onsets, and a run by the exact feeder solver (or the contact core:
+// Moreau, Moreau-Jean flight): first event, conveying velocity, stick and flight fractions.
 
 #include <cmath>
 #include <memory>
@@ -25,6 +25,8 @@ struct FeederFlags {
   double amplitude = 0, frequency = 0, vibration_angle = 0, incline = 0;
   double mu_static = 0, mu_kinetic = 0, g = 9.81;
   long long periods = 20, steps_per_period = 2000;
+  std::string method = "exact";
+  double restitution = 0;
   bool no_flight = false, as_json = false;
   std::optional<std::string> out;
 };
@@ -46,13 +48,27 @@ void run_feeder(const FeederFlags& f) {
   if (!(static_cast<double>(f.periods) * static_cast<double>(f.steps_per_period) <= 1e9))
     throw InvalidParameter("periods", static_cast<double>(f.periods),
                            "periods x steps-per-period must be at most 1e9");
+  const Method method = feeder_method(f.method);
+  require_restitution(f.restitution);
   if (f.out) require_output_path("out", *f.out);
   // SI as the model's units: level g makes the friction bound mu (g cos theta + z'').
   const FeederDrive drive{f.amplitude, 1.0 / f.frequency, f.vibration_angle, f.incline, f.g};
+  // Without flight the normal load must stay >= 0: |Gamma| <= 1 (docs/feeder.md, onsets).
+  if (f.no_flight && std::abs(throw_number(drive)) > 1)
+    throw InvalidParameter(
+        "amplitude", f.amplitude,
+        "makes the normal load m (g cos theta + z'') negative (throw number Gamma = " +
+            format_number(throw_number(drive)) + " > 1) while --no-flight forbids a lift-off; "
+            "must be <= " + format_number(f.amplitude / std::abs(throw_number(drive))) +
+            " m, or drop --no-flight");
   const FeederTable table(drive);
-  const core::Model model = feeder_model(table, FrictionLaw(f.mu_static, f.mu_kinetic), f.g,
-                                         f.steps_per_period, !f.no_flight);
-  const FeederRun run = feeder_run(model, drive.period, f.periods);
+  const FrictionLaw law(f.mu_static, f.mu_kinetic);
+  const FeederRun run =
+      method == Method::exact
+          ? feeder_run_exact(table, law, f.g, f.periods, f.restitution, !f.no_flight)
+          : feeder_run(feeder_model(table, law, f.g, f.steps_per_period, !f.no_flight,
+                                    f.restitution),
+                       drive.period, f.periods);
   const FeederOnsets onsets = feeder_onsets(f.vibration_angle, f.incline, f.mu_static);
   const double w = 2 * std::numbers::pi * f.frequency;
   const double along = f.amplitude * w * std::cos(f.vibration_angle);  // a0 w cos(psi)
@@ -68,10 +84,14 @@ void run_feeder(const FeederFlags& f) {
   r["onsets"] = {{"forward_slip", onset_json(onsets.forward_slip, f.g, w)},
                  {"backward_slip", onset_json(onsets.backward_slip, f.g, w)},
                  {"lift_off", onset_json(onsets.lift_off, f.g, w)}};
-  r["method"] = f.no_flight ? "time-stepping (contact core; stops at a lift-off)"
-                            : "time-stepping (contact core, Moreau-Jean flight)";
+  r["method"] = method == Method::exact
+                    ? "exact (event-driven: closed-form arcs, certified events)"
+                    : "time-stepping (contact core: Moreau, Moreau-Jean flight)";
+  r["flight"] = !f.no_flight;
+  r["restitution"] = f.restitution;
   r["periods"] = f.periods;
-  r["steps_per_period"] = f.steps_per_period;
+  r["steps_per_period"] =
+      method == Method::exact ? json(nullptr) : json(f.steps_per_period);
   r["first_event"] = feeder_event_name(run.first_event);
   r["first_event_time_s"] = number_or_null(run.first_event_time);
   r["lifted_off"] = run.lifted_off;
@@ -112,8 +132,9 @@ void add_feeder_command(CLI::App& app) {
       "a line at the vibration angle to its surface, x = a0 cos(psi) sin(w t), z = a0 sin(psi) "
       "sin(w t), on an incline; reports the machine number K = a0 w^2 / g and throw number "
       "Gamma, the closed-form onsets of forward slip, backward slip and lift-off, and a run "
-      "from rest by the contact core (Moreau, Moreau-Jean flight): first event, conveying "
-      "velocity and v / (a0 w cos psi), stick / slip / flight fractions of the last period.");
+      "from rest (exact by default; --method time-stepping: the contact core, Moreau-Jean "
+      "flight): first event, conveying velocity and v / (a0 w cos psi), stick / slip / flight "
+      "fractions of the last period, its lift-off phase and flight angle.");
   auto f = std::make_shared<FeederFlags>();
   sub->add_option("--amplitude", f->amplitude, "a0 along the vibration line [m], > 0")
       ->required()
@@ -132,11 +153,12 @@ void add_feeder_command(CLI::App& app) {
   sub->add_option("--g", f->g, "gravity [m/s^2], > 0. Default: 9.81")->group("Drive");
   sub->add_option("--periods", f->periods, "periods from rest, in [1, 1e6]. Default: 20")
       ->group("Solver");
+  add_feeder_solver_flags(*sub, f->method, f->restitution);
   sub->add_option("--steps-per-period", f->steps_per_period,
-                  "Moreau steps per period, in [2, 1e7]. Default: 2000")
+                  "Moreau steps per period (time-stepping), in [2, 1e7]. Default: 2000")
       ->group("Solver");
   sub->add_flag("--no-flight", f->no_flight,
-                "stop at a lift-off instead of integrating the flight (velocity null then)")
+                "forbid lift-off: a drive whose throw number exceeds 1 is refused (exit 2)")
       ->group("Solver");
   sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table)")
       ->group("Output");

@@ -1,6 +1,6 @@
 // `selfalign regimes`: the feeder's regime chart (docs/feeder.md) over vibration angles x
-// machine numbers: the closed-form regime of each cell and a run of the contact core with
-// Moreau-Jean flight, as CSV rows and a JSON summary.
+// machine numbers: the closed-form regime of each cell and a run by the exact feeder solver
+// (or the contact core with Moreau-Jean flight), as CSV rows and a JSON summary.
 
 #include <cmath>
 #include <memory>
@@ -28,6 +28,8 @@ struct RegimesFlags {
   long long ks = 25;
   double incline = 0, mu_static = 0, mu_kinetic = 0;
   long long periods = 10, steps_per_period = 200;
+  std::string method = "exact";
+  double restitution = 0;
   int threads = 0;
   bool as_json = false, quiet = false;
   std::optional<std::string> out, csv;
@@ -53,6 +55,8 @@ void run_regimes(const RegimesFlags& f) {
   require_positive_moderate("k-max", f.k_max);
   require_feeder_flags(f.incline, f.mu_static, f.mu_kinetic, f.periods, 10000,
                        f.steps_per_period, 100000);
+  const Method method = feeder_method(f.method);
+  require_restitution(f.restitution);
   if (f.threads < 0) throw InvalidParameter("threads", f.threads, "must be >= 0");
   require_report_paths(f.out, ExtraFile{"csv", f.csv});
   const std::vector<double> angles = axis(f.angle_min, f.angle_max, f.angles, false);
@@ -60,6 +64,7 @@ void run_regimes(const RegimesFlags& f) {
   FeederChartOptions o;
   o.incline = f.incline, o.mu_static = f.mu_static, o.mu_kinetic = f.mu_kinetic;
   o.periods = f.periods, o.steps_per_period = f.steps_per_period, o.threads = f.threads;
+  o.method = method, o.restitution = f.restitution;
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
   o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
   const std::vector<FeederChartCell> cells = feeder_regime_chart(angles, ks, o);
@@ -85,8 +90,12 @@ void run_regimes(const RegimesFlags& f) {
                           {"spacing", "geometric"}};
   r["incline_rad"] = f.incline;
   r["mu_static"] = f.mu_static, r["mu_kinetic"] = f.mu_kinetic;
-  r["method"] = "closed-form regimes; runs by the contact core with Moreau-Jean flight";
-  r["periods"] = f.periods, r["steps_per_period"] = f.steps_per_period;
+  r["method"] = method == Method::exact
+                    ? "closed-form regimes; runs by the exact feeder solver"
+                    : "closed-form regimes; runs by the contact core with Moreau-Jean flight";
+  r["restitution"] = f.restitution;
+  r["periods"] = f.periods;
+  r["steps_per_period"] = method == Method::exact ? json(nullptr) : json(f.steps_per_period);
   r["cells"] = cells.size();
   r["regimes"] = json::object();
   for (int k = 0; k < 5; ++k) r["regimes"][feeder_regime_name(static_cast<FeederRegime>(k))] = counts[k];
@@ -108,9 +117,10 @@ void add_regimes_command(CLI::App& app) {
       "regimes",
       "The vibratory feeder's regime chart (docs/feeder.md) over vibration angles (linear) x "
       "machine numbers K = a0 w^2 / g (geometric): per cell the closed-form regime (stick, "
-      "forward, backward, both, hopping) and a run from rest by the contact core with "
-      "Moreau-Jean flight (dimensionless speed v / (a0 w cos psi), stick and flight "
-      "fractions of the last period); rows to --csv, the summary as a table or JSON.");
+      "forward, backward, both, hopping) and a run from rest, exact by default (--method "
+      "time-stepping: the contact core with Moreau-Jean flight): dimensionless speed "
+      "v / (a0 w cos psi), stick and flight fractions of the last period; rows to --csv, the "
+      "summary as a table or JSON.");
   auto f = std::make_shared<RegimesFlags>();
   sub->add_option("--angle-min", f->angle_min, "least vibration angle [rad]. Default: 0")
       ->group("Chart");
@@ -127,8 +137,9 @@ void add_regimes_command(CLI::App& app) {
   add_friction_flags(*sub, f->mu_static, f->mu_kinetic);
   sub->add_option("--periods", f->periods, "periods from rest per cell, in [1, 1e4]. Default: 10")
       ->group("Solver");
+  add_feeder_solver_flags(*sub, f->method, f->restitution);
   sub->add_option("--steps-per-period", f->steps_per_period,
-                  "Moreau steps per period, in [2, 1e5]. Default: 200")
+                  "Moreau steps per period (time-stepping), in [2, 1e5]. Default: 200")
       ->group("Solver");
   sub->add_option("--threads", f->threads, "worker threads, >= 0 (0: all cores). Default: 0")
       ->group("Solver");

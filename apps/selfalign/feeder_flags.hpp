@@ -8,6 +8,7 @@
 
 #include "selfalign/analysis/feeder.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/simulate/method.hpp"
 
 namespace selfalign::cli {
 
@@ -38,6 +39,30 @@ inline void add_friction_flags(CLI::App& sub, double& mu_static, double& mu_kine
   sub.add_option("--mu-kinetic", mu_kinetic, "kinetic friction coefficient, in (0, mu-static]")
       ->required()
       ->group("Friction");
+}
+
+/// The feeder runs' method: "exact" (the exact feeder solver, feeder_run_exact) or
+/// "time-stepping" (the contact core, Moreau-Jean). InvalidParameter naming "method" otherwise.
+inline Method feeder_method(const std::string& text) {
+  if (text == "exact") return Method::exact;
+  if (text == "time-stepping") return Method::time_stepping;
+  throw InvalidParameter("method", text, "must be exact or time-stepping");
+}
+
+/// Adds --method (default exact) and --restitution (default 0), group "Solver".
+inline void add_feeder_solver_flags(CLI::App& sub, std::string& method, double& restitution) {
+  sub.add_option("--method", method,
+                 "exact (event-driven: closed-form arcs, certified events; the default) or "
+                 "time-stepping (the contact core: Moreau, Moreau-Jean flight)")
+      ->group("Solver");
+  sub.add_option("--restitution", restitution,
+                 "Newton's restitution e at a landing, in [0, 1] (0: plastic). Default: 0")
+      ->group("Solver");
+}
+
+/// --restitution in [0, 1]. InvalidParameter naming it otherwise.
+inline void require_restitution(double e) {
+  if (!(e >= 0 && e <= 1)) throw InvalidParameter("restitution", e, "must be in [0, 1]");
 }
 
 }  // namespace selfalign::cli

@@ -2236,6 +2236,8 @@ def feeder_run(
     steps_per_period: int = 2000,
     periods: int = 20,
     flight: bool = True,
+    method: Method | str = ...,
+    restitution: float = 0.0,
 ) -> FeederRun: ...
 
 class FeederRegime(enum.IntEnum):
@@ -2257,6 +2259,8 @@ def feeder_regime_chart(
     periods: int = 10,
     steps_per_period: int = 200,
     flight: bool = True,
+    method: Method | str = ...,
+    restitution: float = 0.0,
     threads: int = 0,
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> dict[str, npt.NDArray[np.generic]]: ...

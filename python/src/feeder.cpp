@@ -120,22 +120,32 @@ FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_
   m.def(
       "feeder_run",
       [](const FeederDrive& drive, const FrictionLaw& law, double level,
-         long long steps_per_period, long long periods, bool flight) {
+         long long steps_per_period, long long periods, bool flight, Method method,
+         double restitution) {
         const FeederTable table(drive);
-        return feeder_run(feeder_model(table, law, level, steps_per_period, flight),
-                          drive.period, periods);
+        if (method == Method::exact)
+          return feeder_run_exact(table, law, level, periods, restitution, flight);
+        if (method != Method::time_stepping)
+          throw InvalidParameter("method", to_string(method), "must be exact or time-stepping");
+        return feeder_run(
+            feeder_model(table, law, level, steps_per_period, flight, restitution),
+            drive.period, periods);
       },
       py::arg("drive"), py::arg("law") = FrictionLaw{}, py::kw_only(), py::arg("level") = 1.0,
       py::arg("steps_per_period") = 2000, py::arg("periods") = 20, py::arg("flight") = true,
+      py::arg("method") = Method::exact, py::arg("restitution") = 0.0,
       py::call_guard<py::gil_scoped_release>(), R"doc(
 A part at rest at x = 0, t = 0 on the drive's track (one 1-D part, the uniform friction level
-`level`, `law`), `periods` periods by the contact core's Moreau step with `steps_per_period`
-steps: the first event, the mean conveying velocity and stick fraction of the last period
-(FeederRun). The friction bound is law coefficient x level x (g cos theta + z'') / g, so the
-absolute coefficient is s level / g. flight=True: lift-off, flight and plastic landing by
-Moreau-Jean (a unilateral normal contact; docs/feeder.md); flight=False: a run that reaches
-lift-off stops there (lifted_off, velocity NaN). Raises InvalidParameter naming the bad argument. Runs without the
-GIL.)doc");
+`level`, `law`) for `periods` periods: the first event, the mean conveying velocity of the last
+period, its stick and flight fractions, lift-off phase and flight angle (FeederRun). The
+friction bound is law coefficient x level x (g cos theta + z'') / g, so the absolute
+coefficient is s level / g. method=Method.exact (the default; "exact"): the exact feeder
+solver (closed-form arcs, events by the certified scan, exact event times); 
+method=Method.time_stepping ("time-stepping"): the contact core's Moreau step with
+`steps_per_period` steps, flight by Moreau-Jean. Landings with Newton's `restitution` e in
+[0, 1] (0: plastic) and a tangential impulse within the kinetic cone. flight=False: a run that
+reaches lift-off stops there (lifted_off, velocity NaN). Raises InvalidParameter naming the bad
+argument. Runs without the GIL.)doc");
 
   bind_int_enum<FeederRegime>(m, "FeederRegime",
                               "The regime the closed-form onsets give (feeder_regime_chart).",
@@ -148,7 +158,8 @@ GIL.)doc");
       "feeder_regime_chart",
       [](const py::object& angles_in, const py::object& ks_in, double incline, double mu_static,
          double mu_kinetic, double g, double period, long long periods,
-         long long steps_per_period, bool flight, int threads, const py::object& progress_in) {
+         long long steps_per_period, bool flight, Method method, double restitution, int threads,
+         const py::object& progress_in) {
         const std::vector<double> angles = to_vector(angles_in, "vibration_angles"),
                                   ks = to_vector(ks_in, "machine_numbers");
         const PythonProgress progress(progress_in);
@@ -156,6 +167,7 @@ GIL.)doc");
         o.incline = incline, o.mu_static = mu_static, o.mu_kinetic = mu_kinetic, o.g = g;
         o.period = period, o.periods = periods, o.steps_per_period = steps_per_period;
         o.flight = flight, o.threads = threads, o.progress = progress.callback();
+        o.method = method, o.restitution = restitution;
         const std::vector<FeederChartCell> cells =
             progress.run([&] { return feeder_regime_chart(angles, ks, o); });
         const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(angles.size()),
@@ -187,13 +199,15 @@ GIL.)doc");
       py::arg("vibration_angles"), py::arg("machine_numbers"), py::kw_only(),
       py::arg("incline") = 0.0, py::arg("mu_static") = 0.5, py::arg("mu_kinetic") = 0.4,
       py::arg("g") = 1.0, py::arg("period") = 1.0, py::arg("periods") = 10,
-      py::arg("steps_per_period") = 200, py::arg("flight") = true, py::arg("threads") = 0,
+      py::arg("steps_per_period") = 200, py::arg("flight") = true,
+      py::arg("method") = Method::exact, py::arg("restitution") = 0.0, py::arg("threads") = 0,
       py::arg("progress") = py::none(), R"doc(
 The feeder's regime chart (docs/feeder.md) over vibration angles [rad] x machine numbers K
-(array-likes): per cell the closed-form regime (FeederRegime from feeder_onsets) and a run of
-the contact core from rest with Moreau-Jean flight (amplitude K g / w^2, `periods` periods of
-`steps_per_period` steps; the part at the friction level g, so the bound is
-mu (g cos(incline) + z'')). Returns a dict of NumPy arrays shaped (angles, machine numbers):
+(array-likes): per cell the closed-form regime (FeederRegime from feeder_onsets) and a run from
+rest of `periods` periods (amplitude K g / w^2; the part at the friction level g, so the bound
+is mu (g cos(incline) + z'')): by the exact feeder solver (method=Method.exact, the default) or
+the contact core with Moreau-Jean flight and `steps_per_period` steps
+(Method.time_stepping); landings with Newton's `restitution`. Returns a dict of NumPy arrays shaped (angles, machine numbers):
 vibration_angle, machine_number, throw_number, regime (int8 FeederRegime), first_event (int8
 FeederEvent), velocity (mean over the last period), dimensionless_speed (velocity /
 (a0 w cos psi)), stick_fraction, flight_fraction, lifted_off, failed; and the two axes.

@@ -20,7 +20,8 @@ def test_onsets_by_hand():
     assert sa.throw_number(drive) == pytest.approx(K * math.sin(0.5) / math.cos(0.1), rel=1e-14)
 
 
-def test_a_run_in_si_units_slips_forward_just_above_the_onset():
+@pytest.mark.parametrize("method", ["exact", "time-stepping"])
+def test_a_run_in_si_units_slips_forward_just_above_the_onset(method):
     # A 50 Hz drive at psi = 20 deg on a level track, mu_s = 0.5, mu_k = 0.4, in SI (g = 9.81,
     # level g so that the friction bound is mu (g cos theta + z'')): nothing at 0.97 times the
     # forward onset, a forward slip at 1.03 times it, and a positive conveying velocity.
@@ -29,19 +30,23 @@ def test_a_run_in_si_units_slips_forward_just_above_the_onset():
     w = 2 * math.pi / period
     law = sa.FrictionLaw(mu_s, 0.4)
     below = sa.feeder_run(sa.FeederDrive(0.97 * onset * g / w**2, period, psi, 0.0, g), law,
-                          level=g, steps_per_period=4000, periods=3)
+                          level=g, steps_per_period=4000, periods=3, method=method)
     above = sa.feeder_run(sa.FeederDrive(1.5 * onset * g / w**2, period, psi, 0.0, g), law,
-                          level=g, steps_per_period=4000, periods=10)
+                          level=g, steps_per_period=4000, periods=10, method=method)
     assert below.first_event == sa.FeederEvent.none and below.stick_fraction == 1.0
     assert above.first_event == sa.FeederEvent.forward_slip
     assert above.velocity > 0 and not above.lifted_off
     hop = sa.FeederDrive(1.03 * sa.feeder_onsets(psi, 0.0, mu_s).lift_off * g / w**2, period, psi,
                          0.0, g)
-    stopped = sa.feeder_run(hop, law, level=g, periods=3, flight=False)
+    stopped = sa.feeder_run(hop, law, level=g, periods=3, flight=False, method=method)
     assert stopped.lifted_off and math.isnan(stopped.velocity)
-    hopping = sa.feeder_run(hop, law, level=g, periods=3)  # Moreau-Jean flight
+    hopping = sa.feeder_run(hop, law, level=g, periods=3, method=method)
     assert hopping.lifted_off and hopping.first_event == sa.FeederEvent.forward_slip
     assert 0 < hopping.flight_fraction < 1 and hopping.velocity > 0
+    # the classical lift-off phase asin(1 / Gamma): exactly, or to 1.5 steps (2000 per period)
+    gamma = sa.throw_number(hop)
+    assert hopping.lift_off_phase == pytest.approx(
+        math.asin(1 / gamma), abs=1e-9 if method == "exact" else 2 * math.pi * 1.5 / 2000)
 
 
 def test_bad_input_names_the_parameter():
@@ -52,8 +57,14 @@ def test_bad_input_names_the_parameter():
         sa.feeder_onsets(0.1, 0.0, -1.0)
     assert e.value.name == "static_friction"
     with pytest.raises(sa.InvalidParameter) as e:
-        sa.feeder_run(sa.FeederDrive(1e-3), steps_per_period=1)
+        sa.feeder_run(sa.FeederDrive(1e-3), steps_per_period=1, method="time-stepping")
     assert e.value.name == "steps_per_period"
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.feeder_run(sa.FeederDrive(1e-3), restitution=1.5)
+    assert e.value.name == "restitution"
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.feeder_run(sa.FeederDrive(1e-3), method="integrator")
+    assert e.value.name == "method"
 
 
 def test_the_regime_chart_is_the_closed_form_regimes_and_the_runs():

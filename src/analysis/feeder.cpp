@@ -210,8 +210,12 @@ FeederRun feeder_run_exact(const FeederTable& table, const FrictionLaw& law, dou
     return run;
   }
   run.velocity = (state.x - x_last) / d.period;
-  run.stick_fraction = last.stick_time / d.period;
-  run.flight_fraction = last.flight_time / d.period;
+  // fractions of the counted window as the solver's times cover it (a period held throughout
+  // is a stick fraction of exactly 1)
+  const double window = static_cast<double>(periods) * d.period -
+                        static_cast<double>(periods - 1) * d.period;
+  run.stick_fraction = last.stick_time / window;
+  run.flight_fraction = last.flight_time / window;
   if (last.flight_time > 0) {
     run.flight_angle = 2 * std::numbers::pi * run.flight_fraction;
     // a flight that carries over from the period before starts the period off the track
@@ -261,6 +265,8 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
   if (!(static_cast<double>(angles.size()) * static_cast<double>(ks.size()) <= 1e8))
     throw InvalidParameter("machine_numbers", static_cast<double>(ks.size()),
                            "the chart must have at most 1e8 cells");
+  if (!(o.restitution >= 0 && o.restitution <= 1))
+    throw InvalidParameter("restitution", o.restitution, "must be in [0, 1]");
   if (o.method != Method::exact && o.method != Method::time_stepping)
     throw InvalidParameter("method", to_string(o.method), "must be exact or time-stepping");
   // One run's model, checked once (steps_per_period names itself).
@@ -297,8 +303,9 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
         }
         const FeederTable table({a0, o.period, c.vibration_angle, o.incline, o.g});
         c.run = o.method == Method::exact
-                    ? feeder_run_exact(table, law, o.g, o.periods, 0.0, o.flight)
-                    : feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight),
+                    ? feeder_run_exact(table, law, o.g, o.periods, o.restitution, o.flight)
+                    : feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight,
+                                              o.restitution),
                                  o.period, o.periods);
         c.dimensionless_speed = c.run.velocity / (a0 * w * std::cos(c.vibration_angle));
       },

@@ -152,6 +152,7 @@ struct FeederChartOptions {
   /// Method::exact (feeder_run_exact, plastic landing; the default) or Method::time_stepping
   /// (feeder_run: Moreau, Moreau-Jean flight, steps_per_period steps).
   Method method = Method::exact;
+  double restitution = 0;                 ///< Newton's e at landings, in [0, 1]
   int threads = 0;                        ///< 0: all cores
   ProgressCallback progress;              ///< (cells done, cells), optional
 };
