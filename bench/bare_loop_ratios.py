@@ -24,6 +24,8 @@ PAIRS = [
     ("time_stepping_per_step/case1_uniform", "bare_time_stepping_per_step/case1_uniform_inlined"),
     ("time_stepping_per_step/case3_uniform", "bare_time_stepping_per_step/case3_uniform_inlined"),
     ("planar_point_per_step", "bare_planar_point_per_step"),
+    ("feeder_exact_per_period/sliding", "bare_feeder_exact_per_period/sliding"),
+    ("feeder_exact_per_period/hopping", "bare_feeder_exact_per_period/hopping"),
 ]
 FLOORS = [
     ("exact_per_period/case1_uniform", "floor_exact_per_period/case1_uniform"),
