@@ -25,6 +25,7 @@
 #include "selfalign/simulate/exact.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
+#include "selfalign/special_values.hpp"
 
 namespace selfalign {
 namespace {
@@ -158,25 +159,40 @@ struct SquareWaveTrack {
 
 TEST(FeederExact, WithoutNormalMotionOnALevelTrackItIsTheOneDimensionalExactSolver) {
   // psi = 0, theta = 0: the paper's model. Sect. 7.2's profile, s = k and s > k, g = 2 (any g:
-  // the bound is s m (g cos 0) / g = s m): the 1-D exact solver's trajectory over 30 periods.
+  // the bound is s m (g cos 0) / g = s m): the 1-D exact solver's trajectory over 30 periods,
+  // on a uniform level and on a friction step (1 -> 2.5 at a place the part walks through,
+  // without a transition width: the slip's boundary event).
   const ThreePhaseProfile paper({1.0, 0.084, 3.0, 0.9});
   const ThreePhaseProfile case3({1.0, 0.084, 2.3, 1.3});
   for (const ThreePhaseProfile* profile : {&paper, &case3}) {
     for (const FrictionLaw& law : {FrictionLaw{}, FrictionLaw(1.3, 1.0)}) {
-      const UniformFriction one_d;
-      const ExactSetup setup{*profile->piecewise_polynomial(), *one_d.piecewise_affine(), law};
-      ExactState ref = make_exact_state(setup, {0, 0, 0});
-      const FeederTrack track{profile, nullptr, 2.0, 0.0, 1.0, law};
-      FeederExactState s;
-      double worst = 0;
-      for (int p = 1; p <= 30; ++p) {
-        advance_exact(setup, ref, p);
-        advance_feeder_exact(track, s, p);
-        worst = std::max({worst, std::abs(s.x - ref.object.x) / (1 + std::abs(ref.object.x)),
-                          std::abs(s.u - ref.object.xd)});
+      for (const bool stepped : {false, true}) {
+        SCOPED_TRACE(::testing::Message() << law.describe() << (stepped ? ", step" : ""));
+        // the step at half the distance walked on the uniform level in 30 periods
+        const UniformFriction one_d;
+        FeederExactState probe;
+        advance_feeder_exact({profile, nullptr, 2.0, 0.0, 1.0, law}, probe, 30.0);
+        const AffinePiece pieces[2] = {{-kInf, 0.5 * probe.x, 1.0, 0.0},
+                                       {0.5 * probe.x, kInf, 2.5, 0.0}};
+        const PiecewiseAffineFriction step(pieces);
+        const PiecewiseAffineFriction& level = stepped ? step : *one_d.piecewise_affine();
+        const ExactSetup setup{*profile->piecewise_polynomial(), level, law};
+        ExactState ref = make_exact_state(setup, {0, 0, 0});
+        FeederTrack track{profile, nullptr, 2.0, 0.0, 1.0, law};
+        if (stepped) track.field = &step;
+        FeederExactState s;
+        double worst = 0;
+        for (int p = 1; p <= 30; ++p) {
+          advance_exact(setup, ref, p);
+          advance_feeder_exact(track, s, p);
+          worst = std::max({worst, std::abs(s.x - ref.object.x) / (1 + std::abs(ref.object.x)),
+                            std::abs(s.u - ref.object.xd)});
+        }
+        if (print()) std::printf("%s%s: end %.6f (uniform %.6f), worst %.2e\n", law.describe().c_str(), stepped ? " step" : "", s.x, probe.x, worst);
+        EXPECT_LT(worst, 1e-12);
+        EXPECT_GT(std::abs(s.x), 1e-2);
+        if (stepped) EXPECT_GT(std::abs(s.x), std::abs(0.5 * probe.x));  // it crossed the step
       }
-      EXPECT_LT(worst, 1e-12) << law.describe();
-      EXPECT_GT(std::abs(s.x), 1e-2);
     }
   }
 }

@@ -20,6 +20,7 @@
 #include "selfalign/analysis/feeder.hpp"
 #include "selfalign/analysis/feeder_exact.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/fourier.hpp"
 #include "selfalign/simulate/smooth_exact.hpp"
@@ -108,25 +109,35 @@ TEST(FeederSmoothExact, HoppingFliesAsTheBouncingBallFlightEquationSays) {
 TEST(FeederSmoothExact, WithoutNormalMotionOnALevelTrackItIsTheOneDimensionalSmoothSolver) {
   // psi = 0, theta = 0: a two-harmonic Fourier table along the track, constant load. The 1-D
   // smooth exact solver (advance_smooth, its own arcs and certificates) is the reference;
-  // s = k and s > k.
+  // s = k and s > k, on a uniform level and on a friction step (0.7 -> 1.75 half way along the
+  // uniform run, no transition width: the slip's boundary event by the certified scan).
   const FourierProfile profile(1.0, {0.0, 0.03}, {0.25, 0.0});
   const AffinePiece uniform[1] = {{-kInf, kInf, 0.7, 0.0}};
   const PiecewiseAffineFriction level(uniform);
   for (const FrictionLaw& law : {FrictionLaw(1.0, 1.0), FrictionLaw(1.3, 1.0)}) {
-    SCOPED_TRACE(law.describe());
-    const FeederTrack track{&profile, nullptr, 1.0, 0.0, 0.7, law};
-    ObjectState ref;
-    FeederExactState s;
-    double worst_x = 0, worst_v = 0;
-    for (int p = 1; p <= 20; ++p) {
-      advance_smooth({profile, level, law}, ref, p);
-      advance_feeder_exact(track, s, p);
-      worst_x = std::max(worst_x, std::abs(ref.x - s.x) / (1 + std::abs(ref.x)));
-      worst_v = std::max(worst_v, std::abs(ref.xd - s.u));
+    for (const bool stepped : {false, true}) {
+      SCOPED_TRACE(::testing::Message() << law.describe() << (stepped ? ", step" : ""));
+      FeederExactState probe;
+      advance_feeder_exact({&profile, nullptr, 1.0, 0.0, 0.7, law}, probe, 20.0);
+      const AffinePiece pieces[2] = {{-kInf, 0.5 * probe.x, 0.7, 0.0},
+                                     {0.5 * probe.x, kInf, 1.75, 0.0}};
+      const PiecewiseAffineFriction step(pieces);
+      FeederTrack track{&profile, nullptr, 1.0, 0.0, 0.7, law};
+      if (stepped) track.field = &step;
+      ObjectState ref;
+      FeederExactState s;
+      double worst_x = 0, worst_v = 0;
+      for (int p = 1; p <= 20; ++p) {
+        advance_smooth({profile, stepped ? step : level, law}, ref, p);
+        advance_feeder_exact(track, s, p);
+        worst_x = std::max(worst_x, std::abs(ref.x - s.x) / (1 + std::abs(ref.x)));
+        worst_v = std::max(worst_v, std::abs(ref.xd - s.u));
+      }
+      if (print()) std::printf("%s%s: end %.6f (uniform %.6f) worst position %.2e velocity %.2e\n", law.describe().c_str(), stepped ? " step" : "", s.x, probe.x, worst_x, worst_v);
+      EXPECT_LT(worst_x, 1e-12);
+      EXPECT_LT(worst_v, 1e-12);
+      if (stepped) EXPECT_GT(std::abs(s.x - probe.x), 0.1);  // the step changed the motion
     }
-    if (print()) std::printf("%s: worst position %.2e velocity %.2e\n", law.describe().c_str(), worst_x, worst_v);
-    EXPECT_LT(worst_x, 1e-12);
-    EXPECT_LT(worst_v, 1e-12);
   }
 }
 
@@ -309,6 +320,54 @@ TEST(FeederExact, ASlidingLandingIsStoppedOnlyByTheKineticImpulse) {
     advance_feeder_exact(track, s, 1.05);
     EXPECT_NEAR(s.u, u0 > 0.4 ? 0.03 : 0.0, 1e-15) << u0;
     EXPECT_NEAR(s.x, u0 > 0.4 ? u0 + 0.05 * 0.05 - 0.2 * 0.05 * 0.05 : u0, 1e-15) << u0;
+  }
+}
+
+TEST(FeederStop, APartStopsPastTheFrictionStepAndMoreauConvergesToWhere) {
+  // The sliding drive (psi = 0.35, theta = 0.02, K = 1.5, mu 0.5 / 0.4) conveys forward on the
+  // smooth track; from x_mu = 0.2 on, the level is 7 times higher (mu 3.5 / 2.8), where the
+  // closed-form onsets hold a part at rest at this K (K_f(3.5) = 3.8, K_b(3.5) = 13: stick
+  // regime), so the part that slides in must stop for good. The exact run stops past x_mu; the
+  // contact core's stopping run converges to its end position and stop time with order ~1.
+  const FeederTable table(sliding_drive());
+  const FrictionLaw law(0.5, 0.4);
+  const FrictionField field = FrictionField::steps({0.2}, {1.0, 7.0});
+  const FeederOnsets rough = feeder_onsets(0.35, 0.02, 3.5);
+  ASSERT_EQ(feeder_regime(rough, 1.5), FeederRegime::stick);
+  const FeederStop exact = feeder_stop_exact(table, law, field, 0.0, 100);
+  ASSERT_TRUE(exact.stopped);
+  EXPECT_GT(exact.end_position, 0.2);
+  EXPECT_FALSE(exact.lifted_off);
+  EXPECT_LT(exact.stop_time, static_cast<double>(exact.periods - 1));  // held through the last
+  std::vector<double> errors;
+  for (const long long n : {500LL, 5000LL, 50000LL, 500000LL}) {
+    const FeederStop run = feeder_stop(feeder_model(table, law, field, n, true), 1.0, 0.0, 100);
+    ASSERT_TRUE(run.stopped) << n;
+    const double error = std::abs(run.end_position - exact.end_position);
+    if (print()) std::printf("stop %lld steps: end %.12f exact %.12f error %.2e; time %.9f exact %.12f\n", n, run.end_position, exact.end_position, error, run.stop_time, exact.stop_time);
+    // measured 2.8e-4, 6.5e-6, 1.6e-6, 1.9e-7 (end) and 3.2e-4, 1.2e-4, 3.8e-5, 2.2e-6 (time:
+    // the end of the last moving step, within a few steps of the exact stop)
+    EXPECT_LT(error, 1.0 / static_cast<double>(n)) << n;
+    EXPECT_LT(std::abs(run.stop_time - exact.stop_time), 4.0 / static_cast<double>(n)) << n;
+    EXPECT_EQ(run.periods, exact.periods);
+    errors.push_back(error);
+  }
+  EXPECT_LT(errors[3], errors[0] / 100);
+  // A hopping drive (Gamma = 1.3) lifts the part off every period, rough or not: it never
+  // stops; its numbers are absent, not 0.
+  const FeederTable hopping(drive_at_throw(1.3, 0.5, 0.02));
+  const FeederStop never = feeder_stop_exact(hopping, law, FrictionField::steps({0.2}, {1.0, 3.0}), 0.0, 20);
+  EXPECT_FALSE(never.stopped);
+  EXPECT_TRUE(never.lifted_off);
+  EXPECT_TRUE(std::isnan(never.end_position));
+  EXPECT_TRUE(std::isnan(never.stop_time));
+  EXPECT_EQ(never.periods, 20);
+  // a ramp (a transition width) is not piecewise constant: refused by name
+  try {
+    (void)feeder_stop_exact(table, law, FrictionField::ramps({0.2, 0.3}, {1.0, 7.0}), 0.0, 10);
+    ADD_FAILURE() << "a ramp was accepted";
+  } catch (const InvalidParameter& e) {
+    EXPECT_EQ(e.name(), "field");
   }
 }
 

@@ -72,14 +72,17 @@ FeederTable::FeederTable(const FeederDrive& drive) : drive_(drive) {
   gravity_ = {drive.g, std::abs(drive.incline), drive.incline > 0 ? -1.0 : 1.0, 0.0};
 }
 
-core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
-                         long long steps_per_period, bool flight, double restitution) {
+namespace {
+
+// feeder_model's body with the field given.
+core::Model track_model(const FeederTable& table, const FrictionLaw& law, PlanarField field,
+                        long long steps_per_period, bool flight, double restitution) {
   if (!(steps_per_period >= 2 && steps_per_period <= 100000000))
     throw InvalidParameter("steps_per_period", static_cast<double>(steps_per_period),
                            "must be in [2, 1e8]");
   core::Model model;
   model.motion = table.motion();
-  model.field = UniformPlanarField{level};
+  model.field = std::move(field);
   model.bodies = {core::SliderBody{PointFootprint{}, law}};
   model.options = {table.drive().period / static_cast<double>(steps_per_period), 0.5};
   model.gravity = table.gravity();
@@ -87,6 +90,20 @@ core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, doubl
   model.gravity->restitution = restitution;
   core::validate(model);
   return model;
+}
+
+}  // namespace
+
+core::Model feeder_model(const FeederTable& table, const FrictionLaw& law, double level,
+                         long long steps_per_period, bool flight, double restitution) {
+  return track_model(table, law, UniformPlanarField{level}, steps_per_period, flight,
+                     restitution);
+}
+
+core::Model feeder_model(const FeederTable& table, const FrictionLaw& law,
+                         const FrictionField& field, long long steps_per_period, bool flight,
+                         double restitution) {
+  return track_model(table, law, AxisField{field}, steps_per_period, flight, restitution);
 }
 
 const char* feeder_event_name(FeederEvent event) noexcept {
@@ -130,17 +147,27 @@ struct FeederWatch final : MotionObserver {
 
 }  // namespace
 
+namespace {
+
+// The model's steps in one period (InvalidParameter naming "period" unless it is a whole number
+// of them).
+long long steps_in(const core::Model& model, double period) {
+  require_positive("period", period);
+  const double n = period / model.options.step;
+  if (!(std::abs(n - std::round(n)) <= 1e-9 * n) || n < 1)
+    throw InvalidParameter("period", period, "must be a whole number of the model's steps");
+  return std::llround(n);
+}
+
+}  // namespace
+
 FeederRun feeder_run(const core::Model& model, double period, long long periods) {
   core::validate(model);
   if (model.bodies.size() != 1 || !std::holds_alternative<core::SliderBody>(model.bodies[0]))
     throw InvalidParameter("bodies", static_cast<double>(model.bodies.size()),
                            "the feeder run takes one 1-D part (SliderBody)");
-  require_positive("period", period);
   if (periods < 1) throw InvalidParameter("periods", static_cast<double>(periods), "must be >= 1");
-  const double n = period / model.options.step;
-  if (!(std::abs(n - std::round(n)) <= 1e-9 * n) || n < 1)
-    throw InvalidParameter("period", period, "must be a whole number of the model's steps");
-  const long long per_period = std::llround(n);
+  const long long per_period = steps_in(model, period);
   const std::vector<PlanarPose> poses(1);
   const std::vector<PlanarTwist> twists(1);
   core::State state = core::make_state(model, 0.0, poses, twists);
@@ -224,6 +251,90 @@ FeederRun feeder_run_exact(const FeederTable& table, const FrictionLaw& law, dou
                          (std::isnan(last.first_lift_off) ? 0.0 : last.first_lift_off - start);
   }
   return run;
+}
+
+FeederStop feeder_stop_exact(const FeederTable& table, const FrictionLaw& law,
+                             const FrictionField& field, double start, long long max_periods,
+                             double restitution) {
+  if (!std::isfinite(start)) throw InvalidParameter("start", start, "must be finite");
+  if (max_periods < 1)
+    throw InvalidParameter("max_periods", static_cast<double>(max_periods), "must be >= 1");
+  const FieldFriction level(field, PointFootprint{});
+  if (!level.piecewise_affine())
+    throw InvalidParameter("field", "ramps", "must be piecewise constant (steps)");
+  const FeederDrive& d = table.drive();
+  FeederTrack track{table.motion().first, table.motion().normal, d.g, d.incline, d.g, law};
+  track.restitution = restitution;
+  track.field = level.piecewise_affine();
+  FeederExactState state;
+  state.x = start;
+  FeederStop out;
+  double last_motion = NAN;
+  for (long long p = 0; p < max_periods; ++p) {
+    FeederExactStatistics now;
+    advance_feeder_exact(track, state, static_cast<double>(p + 1) * d.period, &now);
+    out.periods = p + 1;
+    out.lifted_off = out.lifted_off || now.lift_offs > 0;
+    if (!std::isnan(now.last_motion)) last_motion = now.last_motion;
+    // held through the whole period, at rest on the track at its start and end
+    if (now.slip_time == 0 && now.flight_time == 0 && now.lift_offs == 0 &&
+        state.mode == FeederMode::stick && state.u == 0 && state.h == 0) {
+      out.stopped = true;
+      out.end_position = state.x;
+      out.stop_time = std::isnan(last_motion) ? 0.0 : last_motion;
+      return out;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// Watches a stopping run step by step: whether the counted period moved, and the end of the
+// last step that moved.
+struct FeederStopWatch final : MotionObserver {
+  bool moved = false, lifted = false;
+  double last_motion = NAN;
+  void on_step(const core::State& state) override {
+    const core::BodyState& b = state.bodies[0];
+    const bool flying = b.height > 0 || b.normal_velocity > 0;
+    if (flying || b.twist.ux != 0) moved = true, last_motion = state.t;
+    lifted = lifted || flying;
+  }
+};
+
+}  // namespace
+
+FeederStop feeder_stop(const core::Model& model, double period, double start,
+                       long long max_periods) {
+  core::validate(model);
+  if (model.bodies.size() != 1 || !std::holds_alternative<core::SliderBody>(model.bodies[0]))
+    throw InvalidParameter("bodies", static_cast<double>(model.bodies.size()),
+                           "the feeder run takes one 1-D part (SliderBody)");
+  if (!std::isfinite(start)) throw InvalidParameter("start", start, "must be finite");
+  if (max_periods < 1)
+    throw InvalidParameter("max_periods", static_cast<double>(max_periods), "must be >= 1");
+  const long long per_period = steps_in(model, period);
+  std::vector<PlanarPose> poses(1);
+  poses[0].x = start;
+  const std::vector<PlanarTwist> twists(1);
+  core::State state = core::make_state(model, 0.0, poses, twists);
+  FeederStop out;
+  FeederStopWatch watch;
+  for (long long p = 0; p < max_periods; ++p) {
+    watch.moved = false;
+    core::step(model, state, per_period, &watch);
+    out.periods = p + 1;
+    out.lifted_off = watch.lifted;
+    if (state.status != core::StepStatus::ok) return out;  // stopped at a lift-off
+    if (!watch.moved) {
+      out.stopped = true;
+      out.end_position = state.bodies[0].pose.x;
+      out.stop_time = std::isnan(watch.last_motion) ? 0.0 : watch.last_motion;
+      return out;
+    }
+  }
+  return out;
 }
 
 const char* feeder_regime_name(FeederRegime regime) noexcept {

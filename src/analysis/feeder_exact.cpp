@@ -12,6 +12,7 @@
 namespace selfalign {
 namespace {
 
+using detail::FeederConstants;
 constexpr const char* kSolver = "the exact feeder solver";
 
 // The first time tau in [0, limit] at which the height h + w tau - n tau^2 / 2 returns to 0
@@ -60,6 +61,12 @@ void validate(const FeederTrack& k) {
                            "term)");
   if (!(k.restitution >= 0 && k.restitution <= 1))
     throw InvalidParameter("restitution", k.restitution, "must be in [0, 1]");
+  if (k.field)
+    for (const AffinePiece& p : k.field->pieces())
+      if (p.slope != 0 || !(p.bound_at_begin > 0 && p.bound_at_begin <= 1e50))
+        throw InvalidParameter("field", p.slope != 0 ? "a sloped piece" : "a level <= 0",
+                               "the exact feeder solver takes a piecewise-constant level > 0 "
+                               "(a friction step without a transition width)");
 }
 
 const char* feeder_mode_name(FeederMode mode) noexcept {
@@ -95,11 +102,11 @@ void advance_feeder_constant(const FeederTrack& k, FeederExactState& st, double 
       u -= f * dur;
       h += dur * (w - 0.5 * n * dur);
       w -= n * dur;
-      detail::record_census(stats, mode, dur);
+      detail::record_census(stats, mode, dur, t + dur);
       t = tau_land <= end - t ? t + tau_land : end;
       if (tau_land == dur) {  // landing
         h = 0;
-        if (!detail::feeder_landing(c, t, n, u, w, stats))
+        if (!detail::feeder_landing(c, t, x, n, u, w, stats))
           mode = u == 0 ? FeederMode::stick : FeederMode::slip;
       }
       continue;
@@ -111,9 +118,9 @@ void advance_feeder_constant(const FeederTrack& k, FeederExactState& st, double 
     }
     double sigma;
     if (u == 0) {
-      if (std::abs(f) <= c.static_bound(n)) {
+      if (std::abs(f) <= c.static_bound(n, c.level_at(x))) {
         mode = FeederMode::stick;
-        detail::record_census(stats, mode, end - t);
+        detail::record_census(stats, mode, end - t, end);
         t = end;
         continue;
       }
@@ -122,15 +129,23 @@ void advance_feeder_constant(const FeederTrack& k, FeederExactState& st, double 
     } else {
       sigma = u > 0 ? 1.0 : -1.0;
     }
-    const double acc = -f - sigma * c.kinetic(sigma > 0 ? 1 : -1, n);
+    const int dir = sigma > 0 ? 1 : -1;
+    const FeederConstants::SlipPiece piece = c.slip_piece(x, dir);
+    const double acc = -f - sigma * c.kinetic(dir, n, piece.m);
     const double tau_stop = u != 0 && acc * sigma < 0 ? -u / acc : kInf;
-    const bool stops = tau_stop <= end - t;
-    const double dur = stops ? tau_stop : end - t;
-    x += dur * (u + 0.5 * acc * dur);
+    // the boundary ahead: sigma x rises at sigma u > 0 with sigma acc (closed form, eq. 21's
+    // reach); from rest the slip starts with sigma u = 0 and sigma acc > 0
+    const double tau_reach = std::isinf(piece.boundary)
+                                 ? kInf
+                                 : detail::parabolic_reach(sigma * u, sigma * acc,
+                                                           sigma * (piece.boundary - x));
+    const double dur = std::min({tau_stop, tau_reach, end - t});
+    const bool stops = dur == tau_stop, reaches = !stops && dur == tau_reach;
+    x = reaches ? piece.boundary : x + dur * (u + 0.5 * acc * dur);
     u = stops ? 0.0 : u + acc * dur;
-    t = stops ? t + tau_stop : end;
+    t = dur == end - t && !stops && !reaches ? end : t + dur;
     mode = FeederMode::slip;
-    detail::record_census(stats, mode, dur);
+    detail::record_census(stats, mode, dur, t);
   }
   st.t = t, st.x = x, st.u = u, st.h = h, st.w = w;
   st.mode = mode == FeederMode::slip && u == 0 ? FeederMode::stick : mode;

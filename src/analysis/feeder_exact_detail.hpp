@@ -3,31 +3,62 @@
 // piecewise-constant drives, feeder_smooth_exact.cpp for smooth ones): the track's constants,
 // the landing (Newton restitution with a Coulomb-bounded tangential impulse) and the census.
 
+#include <algorithm>
 #include <cmath>
 
 #include "selfalign/analysis/feeder_exact.hpp"
-#include "../simulate/arc_events.hpp"  // time_resolution
+#include "../simulate/arc_events.hpp"  // time_resolution, parabolic_reach
+#include "selfalign/special_values.hpp"
 
 namespace selfalign::detail {
 
-// Per unit mass: g cos(theta), g sin(theta), and the friction bound per unit of normal load and
-// of coefficient (m / g).
+// Per unit mass: g cos(theta), g sin(theta); the friction bound per unit of normal load, of
+// coefficient and of level (1 / g); the level along the track.
 struct FeederConstants {
-  double gc, gs, per_load;
+  double gc, gs, inv_g;
   const FrictionLaw* law;
   double restitution;
+  const PiecewiseAffineFriction* field;
+  double level;
   explicit FeederConstants(const FeederTrack& k)
       : gc(k.g * std::cos(k.incline)),
         gs(k.g * std::sin(k.incline)),
-        per_load(k.level / k.g),
+        inv_g(1 / k.g),
         law(&k.law),
-        restitution(k.restitution) {}
-  double static_bound(double n) const { return law->static_coefficient() * per_load * n; }
-  // The kinetic friction per unit mass opposing a slip in direction sigma under load n.
-  double kinetic(int sigma, double n) const { return law->kinetic(sigma) * per_load * n; }
+        restitution(k.restitution),
+        field(k.field),
+        level(k.level) {}
+  // The static bound s m n / g and the kinetic friction k_sigma m n / g on level m, load n.
+  double static_bound(double n, double m) const {
+    return law->static_coefficient() * m * inv_g * n;
+  }
+  double kinetic(int sigma, double n, double m) const { return law->kinetic(sigma) * m * inv_g * n; }
+  // The level of the piece holding x (a stick, a landing; right-continuous).
+  double level_at(double x) const { return field ? field->bound(x) : level; }
+  // The piece a slip in direction sigma from x runs on (moving left from a boundary: the piece
+  // below it): its level and the boundary ahead (+-inf: none).
+  struct SlipPiece {
+    double m, boundary;
+  };
+  SlipPiece slip_piece(double x, int sigma) const {
+    if (!field) return {level, sigma * kInf};
+    const auto pieces = field->pieces();
+    std::size_t i = field->piece_index(x);
+    if (sigma < 0 && i > 0 && x == pieces[i].begin) --i;
+    return {pieces[i].bound_at_begin, sigma > 0 ? pieces[i].end : pieces[i].begin};
+  }
+  // The largest kinetic friction per unit load anywhere (a bound for the scan of x).
+  double kinetic_bound_per_load() const {
+    double m = level;
+    if (field) {
+      m = 0;
+      for (const AffinePiece& p : field->pieces()) m = std::max(m, p.bound_at_begin);
+    }
+    return std::max(law->kinetic(1), law->kinetic(-1)) * m * inv_g;
+  }
 };
 
-// The landing at time t (w < 0 the rate of approach, n the normal load there): Newton's
+// The landing at time t and place x (w < 0 the rate of approach, n the normal load there): Newton's
 // restitution, P = -(1 + e) w, the rate leaves as -e w; the tangential impulse is
 // Coulomb-bounded by the kinetic cone, as on the sliding arcs (the static coefficient holds a
 // part at rest, it does not stop a sliding one): the part stops (u = 0) if |u| <= k m P / g,
@@ -35,16 +66,17 @@ struct FeederConstants {
 // tangential impulse and stays at rest. A rebound that would last under 64 roundings of t
 // under a positive load is the accumulation point of the bounces: the contact closes (w = 0).
 // Returns true when the part flies on.
-inline bool feeder_landing(const FeederConstants& c, double t, double n, double& u, double& w,
-                           FeederExactStatistics& stats) {
+inline bool feeder_landing(const FeederConstants& c, double t, double x, double n, double& u,
+                           double& w, FeederExactStatistics& stats) {
   const double P = (1 + c.restitution) * std::max(0.0, -w);
   ++stats.landings;
   const int sigma = u > 0 ? 1 : -1;
-  if (std::abs(u) <= c.kinetic(sigma, P)) {
+  const double stop = c.kinetic(sigma, P, c.level_at(x));
+  if (std::abs(u) <= stop) {
     u = 0;
     ++stats.stick_landings;
   } else {
-    u -= sigma * c.kinetic(sigma, P);
+    u -= sigma * stop;
   }
   w = c.restitution * std::max(0.0, -w);
   if (w > 0 && n > 0 && 2 * w / n <= 64 * time_resolution(t)) w = 0;
@@ -52,10 +84,13 @@ inline bool feeder_landing(const FeederConstants& c, double t, double n, double&
   return w > 0;
 }
 
-inline void record_census(FeederExactStatistics& stats, FeederMode mode, double duration) {
+// An arc of `duration` in `mode` that ended at t_end.
+inline void record_census(FeederExactStatistics& stats, FeederMode mode, double duration,
+                          double t_end) {
   (mode == FeederMode::stick   ? stats.stick_time
    : mode == FeederMode::slip  ? stats.slip_time
                                : stats.flight_time) += duration;
+  if (mode != FeederMode::stick && duration > 0) stats.last_motion = t_end;
 }
 
 inline void record_lift_off(FeederExactStatistics& stats, double t) {

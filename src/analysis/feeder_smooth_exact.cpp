@@ -55,11 +55,12 @@ constexpr long long kMaxFeederSteps = 100'000'000;
 struct SmoothTrack {
   const SmoothMotion* along;
   const SmoothMotion* normal;
-  double X3 = 0, X4 = 0, Z2 = 0, Z3 = 0, Z4 = 0;
+  double X2 = 0, X3 = 0, X4 = 0, Z2 = 0, Z3 = 0, Z4 = 0;
   explicit SmoothTrack(const FeederTrack& k)
       : along(k.along ? k.along->smooth() : nullptr),
         normal(k.normal ? k.normal->smooth() : nullptr) {
-    if (along) X3 = along->jerk_bound(), X4 = along->snap_bound();
+    if (along) X2 = k.along->peak_acceleration(), X3 = along->jerk_bound(),
+               X4 = along->snap_bound();
     if (normal) Z2 = k.normal->peak_acceleration(), Z3 = normal->jerk_bound(),
                 Z4 = normal->snap_bound();
   }
@@ -83,7 +84,7 @@ struct Solver {
 
   // Held until a margin closes (a break: breaking = the slip's direction) or t_end.
   void stick(double t_end) {
-    const double sm = c.law->static_coefficient() * c.per_load;
+    const double sm = c.static_bound(1.0, c.level_at(x));
     const double B = sm * T.Z4 + T.X4;
     const double t0 = t;
     D4 dx = T.x(t), dz = T.z(t);
@@ -111,21 +112,31 @@ struct Solver {
       }
       dx = T.x(t), dz = T.z(t);
     }
-    record_census(stats, FeederMode::stick, t - t0);
+    record_census(stats, FeederMode::stick, t - t0, t);
     mode = FeederMode::stick;
   }
 
-  // One slip in direction sigma until u = 0, a lift-off (n = 0) or t_end.
+  // One slip in direction sigma until u = 0, a lift-off (n = 0), the boundary of its friction
+  // piece or t_end.
   void slip(int sigma, double t_end) {
-    const double cc = sigma * c.kinetic(sigma, 1.0);
+    const FeederConstants::SlipPiece piece = c.slip_piece(x, sigma);
+    const double cc = sigma * c.kinetic(sigma, 1.0, piece.m);
     const double Bg = T.X3 + std::abs(cc) * T.Z3, Bg1 = T.X4 + std::abs(cc) * T.Z4;
+    // sigma (boundary - x) >= 0 falls at |u| with curvature |u'| <= Bx
+    const bool bounded = std::isfinite(piece.boundary);
+    const double Bx = T.X2 + std::abs(c.gs) + std::abs(cc) * (c.gc + T.Z2);
     const double t0 = t, x0 = x, u0 = u;
     const D4 dx0 = T.x(t0), dz0 = T.z(t0);
     const bool from_rest = u0 == 0;
     double tau = 0;
     D4 dx = dx0, dz = dz0;
-    enum { horizon, velocity_zero, lift_off } end = horizon;
+    enum { horizon, velocity_zero, lift_off, boundary } end = horizon;
     double g = sigma * u0;
+    const auto place = [&](double tau_, const D4& dx, const D4& dz) {
+      return x0 + u0 * tau_ - taylor_gap(dx, dx0, tau_) - 0.5 * c.gs * tau_ * tau_ -
+             cc * (0.5 * c.gc * tau_ * tau_ + taylor_gap(dz, dz0, tau_));
+    };
+    double ahead = bounded ? sigma * (piece.boundary - x0) : kInf;
     for (long long i = 0;; ++i) {
       if (i == kMaxFeederSteps) exceed_feeder_budget(t0 + tau);
       const double n = c.gc + dz[2];
@@ -137,7 +148,8 @@ struct Solver {
                                            std::max(2 * quadratic, 1e-300));
       const double dg = std::max({quadratic, local, g1 >= 0 ? safe_step(g1, g2, Bg1) : 0.0});
       const double dn = T.normal ? safe_step(n, dz[3], T.Z4) : kInf;
-      const double step = std::min(dg, dn);
+      const double db = bounded ? safe_step(ahead, -g, Bx) : kInf;
+      const double step = std::min({dg, dn, db});
       const double now = t0 + tau;
       if (now + step >= t_end) {
         tau = t_end - t0;
@@ -147,11 +159,20 @@ struct Solver {
       tau += step;
       dx = T.x(t0 + tau), dz = T.z(t0 + tau);
       g = sigma * (u0 - (dx[1] - dx0[1]) - c.gs * tau - cc * (c.gc * tau + dz[1] - dz0[1]));
+      if (bounded) ahead = sigma * (piece.boundary - place(tau, dx, dz));
+      if (bounded && !(ahead > 0)) {  // rounding put the point at the boundary
+        end = boundary;
+        break;
+      }
       if (!(g > 0)) {
         end = velocity_zero;
         break;
       }
       if (step <= time_resolution(now)) {
+        if (db <= dg && db <= dn) {  // converged onto the boundary (x moves at |u| > 0)
+          end = boundary;
+          break;
+        }
         if (dg <= dn && g1 < 0) {
           end = velocity_zero;
           break;
@@ -166,12 +187,11 @@ struct Solver {
       }
     }
     t = t0 + tau;
-    x = x0 + u0 * tau - taylor_gap(dx, dx0, tau) - 0.5 * c.gs * tau * tau -
-        cc * (0.5 * c.gc * tau * tau + taylor_gap(dz, dz0, tau));
+    x = end == boundary ? piece.boundary : place(tau, dx, dz);
     u = end == velocity_zero ? 0.0
                              : u0 - (dx[1] - dx0[1]) - c.gs * tau -
                                    cc * (c.gc * tau + dz[1] - dz0[1]);
-    record_census(stats, FeederMode::slip, tau);
+    record_census(stats, FeederMode::slip, tau, t);
     mode = FeederMode::slip;
     if (end == lift_off) {
       mode = FeederMode::flight;
@@ -230,9 +250,9 @@ struct Solver {
     u = u0 - c.gs * tau - (dx[1] - dx0[1]);
     w = rate(tau, dz);
     h = lands ? 0.0 : std::max(0.0, height(tau, dz));
-    record_census(stats, FeederMode::flight, tau);
+    record_census(stats, FeederMode::flight, tau, t);
     mode = FeederMode::flight;
-    if (lands && !feeder_landing(c, t, c.gc + dz[2], u, w, stats))
+    if (lands && !feeder_landing(c, t, x, c.gc + dz[2], u, w, stats))
       mode = u == 0 ? FeederMode::stick : FeederMode::slip;
   }
 };
@@ -267,7 +287,7 @@ void advance_feeder_smooth(const FeederTrack& k, FeederExactState& st, double t_
       record_slip_start(stats, s.t, sigma);
     } else {
       const double f = dx[2] + c.gs;
-      if (std::abs(f) <= c.static_bound(n)) {
+      if (std::abs(f) <= c.static_bound(n, c.level_at(s.x))) {
         s.stick(t_end);
         continue;
       }

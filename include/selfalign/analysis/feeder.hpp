@@ -26,6 +26,7 @@
 
 #include "selfalign/analysis/sweep.hpp"  // ProgressCallback
 #include "selfalign/core/model.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/profiles/table_profile.hpp"
 #include "selfalign/simulate/method.hpp"
@@ -131,6 +132,40 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
 /// validate(FeederTrack) and naming "periods".
 FeederRun feeder_run_exact(const FeederTable& table, const FrictionLaw& law, double level,
                            long long periods, double restitution = 0, bool flight = true);
+
+/// Stopping on a vibrating feeder track: the part, released at rest at `start` on the track
+/// whose friction level along it is `field` (for the law's coefficients to be absolute, the
+/// level g where the track is smooth and c_mu g where it is rough, as `level` in feeder_run),
+/// runs period by period until it is held through a whole period: the drive is periodic, so
+/// it stays there (stopped). A part that moves in every one of `max_periods` periods has not
+/// stopped: end_position and stop_time are NaN (a result, not an error).
+struct FeederStop {
+  bool stopped = false;
+  double end_position = NAN;  ///< x on the track where it rests [-]; NaN: not stopped
+  double stop_time = NAN;     ///< the instant it last moved, from the release [-]; NaN: not stopped
+  long long periods = 0;      ///< periods run (the stopping one included)
+  bool lifted_off = false;    ///< it left the track at some time
+};
+
+/// By the exact feeder solver: `field` must be piecewise constant (FrictionField::steps: a
+/// friction step without a transition width; InvalidParameter naming "field" otherwise),
+/// landings with Newton's `restitution`. Throws InvalidParameter naming "start" (not finite),
+/// "max_periods" (< 1) or as validate(FeederTrack).
+FeederStop feeder_stop_exact(const FeederTable& table, const FrictionLaw& law,
+                             const FrictionField& field, double start, long long max_periods,
+                             double restitution = 0);
+
+/// The same by the contact core (Moreau, Moreau-Jean flight) on `model` (feeder_model with the
+/// field): held through a period means every step of it a stick on the track; stop_time is the
+/// end of the last step that moved. The model must have one SliderBody.
+FeederStop feeder_stop(const core::Model& model, double period, double start,
+                       long long max_periods);
+
+/// A model of one 1-D part on the track with the friction level `field` along it (an AxisField
+/// at the track's origin, e1 = x), otherwise as feeder_model above.
+core::Model feeder_model(const FeederTable& table, const FrictionLaw& law,
+                         const FrictionField& field, long long steps_per_period,
+                         bool flight = true, double restitution = 0);
 
 /// The regime the closed-form onsets give at machine number K (docs/feeder.md): stick (below
 /// both slips), forward (the forward slip only), backward, both (slips both ways each period),

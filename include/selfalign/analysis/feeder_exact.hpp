@@ -30,6 +30,7 @@
 #include <cmath>
 
 #include "selfalign/friction/friction_law.hpp"
+#include "selfalign/friction/friction_map.hpp"
 #include "selfalign/profiles/piecewise_polynomial.hpp"
 
 namespace selfalign {
@@ -42,14 +43,20 @@ struct FeederTrack {
   const TableProfile* normal = nullptr;  ///< z(t) along its normal
   double g = 1;                          ///< [-], > 0
   double incline = 0;                    ///< theta [rad], in (-pi/2, pi/2)
-  double level = 1;                      ///< m [-], > 0
+  double level = 1;                      ///< m [-], > 0 (where `field` is null)
   FrictionLaw law;                       ///< Coulomb (no Stribeck, no viscous term)
   double restitution = 0;                ///< Newton's e at a landing [-], in [0, 1]; 0: plastic
+  /// The friction level along the track m(x) (borrowed; null: the uniform `level`), piecewise
+  /// constant: a friction step without a transition width, e.g. FieldFriction(FrictionField::
+  /// steps({x_mu}, {m1, m2}), PointFootprint{}).piecewise_affine(). A slip that reaches a
+  /// boundary is an event (closed form on piecewise-constant drives, the certified scan on
+  /// smooth ones); a stick or a landing takes the level of the piece holding x (right-continuous).
+  const PiecewiseAffineFriction* field = nullptr;
 };
 
 /// Throws InvalidParameter naming "along"/"normal" (neither piecewise-constant acceleration nor
-/// smooth, or one of each), "g", "incline", "level", "law" (velocity-dependent) or
-/// "restitution" (outside [0, 1]).
+/// smooth, or one of each), "g", "incline", "level", "law" (velocity-dependent),
+/// "restitution" (outside [0, 1]) or "field" (a sloped piece, or a level <= 0 or beyond 1e50).
 void validate(const FeederTrack& track);
 
 /// contact_stick, contact_slip or flight.
@@ -74,6 +81,9 @@ struct FeederExactStatistics {
   /// or -1) recorded into these statistics; NaN and 0 when none.
   double first_lift_off = NAN, first_slip = NAN;
   int first_slip_direction = 0;
+  /// The end of the last slip or flight recorded (NaN: none): where a part comes to rest, the
+  /// instant it stopped.
+  double last_motion = NAN;
 };
 
 /// Advances to t_end (>= state.t, finite). A state in contact (h = 0, w = 0) with u = 0 sticks
