@@ -72,6 +72,45 @@ TEST(CliFeeder, ReportsTheOnsetsAndTheRunInSiUnits) {
   }
 }
 
+TEST(CliFeeder, StopsPastAFrictionStepOrSaysItDidNot) {
+  // 50 Hz, psi = 0.35, theta = 0.02, K = 1.5 (a0 = 1.5 g / w^2): sliding forward at mu 0.5/0.4;
+  // from 10 mm on the friction is 7 times higher, where the onsets hold a part at this K
+  // (rough_regime stick): it stops past the step. The exact end position is the contact core's
+  // limit (tests/test_feeder_smooth_exact.cpp, FeederStop); here the report's fields.
+  const CliSandbox box;
+  const double w = 2 * std::numbers::pi * 50, g = 9.81;
+  const std::vector<std::string> base = {
+      "feeder", "--amplitude", text(1.5 * g / (w * w)), "--frequency", "50",
+      "--vibration-angle", "0.35", "--incline", "0.02", "--mu-static", "0.5", "--mu-kinetic",
+      "0.4", "--step-position", "0.01", "--c-mu", "7", "--json"};
+  const auto r = box.run(base);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out)["stop"];
+  EXPECT_TRUE(j["stopped"].get<bool>());
+  EXPECT_EQ(j["rough_regime"], "stick");
+  EXPECT_GT(j["past_step_m"].get<double>(), 0);
+  EXPECT_NEAR(j["end_position_m"].get<double>() - 0.01, j["past_step_m"].get<double>(), 1e-15);
+  EXPECT_GT(j["stop_time_s"].get<double>(), 0);
+  // Gamma = 1.3 lifts the part off every period: it never stops (null, not 0).
+  const double K = 1.3 * std::cos(0.02) / std::sin(0.35);
+  std::vector<std::string> hop = base;
+  hop[2] = text(K * g / (w * w));
+  hop.insert(hop.end(), {"--max-periods", "30"});
+  const auto h = box.run(hop);
+  ASSERT_EQ(h.exit_code, 0) << h.err;
+  const json k = json::parse(h.out)["stop"];
+  EXPECT_FALSE(k["stopped"].get<bool>());
+  EXPECT_TRUE(k["end_position_m"].is_null());
+  EXPECT_TRUE(k["stop_time_s"].is_null());
+  EXPECT_EQ(k["periods"], 30);
+  // bad input: one line naming the flag, exit 2, no file
+  const CliSandbox bad;
+  std::vector<std::string> args = base;
+  args[args.size() - 2] = "0";  // --c-mu 0
+  args.insert(args.end(), {"--out", "r.json"});
+  expect_clean_failure(bad, bad.run(args), {"c-mu", "(0, 1e6]"});
+}
+
 TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
       {{"--amplitude", "0"}, {"amplitude"}},

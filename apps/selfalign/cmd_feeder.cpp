@@ -27,6 +27,9 @@ struct FeederFlags {
   long long periods = 20, steps_per_period = 2000;
   std::string method = "exact";
   double restitution = 0;
+  std::optional<double> step_position;  // the friction step: stopping run when given
+  double c_mu = 2.5, start = 0;
+  long long max_periods = 1000;
   bool no_flight = false, as_json = false;
   std::optional<std::string> out;
 };
@@ -50,6 +53,15 @@ void run_feeder(const FeederFlags& f) {
                            "periods x steps-per-period must be at most 1e9");
   const Method method = feeder_method(f.method);
   require_restitution(f.restitution);
+  if (f.step_position) {
+    require_finite("step-position", *f.step_position);
+    if (!(f.c_mu > 0 && f.c_mu <= 1e6))
+      throw InvalidParameter("c-mu", f.c_mu, "must be in (0, 1e6]");
+    require_finite("start", f.start);
+    if (!(f.max_periods >= 1 && f.max_periods <= 1000000))
+      throw InvalidParameter("max-periods", static_cast<double>(f.max_periods),
+                             "must be in [1, 1e6]");
+  }
   if (f.out) require_output_path("out", *f.out);
   // SI as the model's units: level g makes the friction bound mu (g cos theta + z'').
   const FeederDrive drive{f.amplitude, 1.0 / f.frequency, f.vibration_angle, f.incline, f.g};
@@ -69,6 +81,16 @@ void run_feeder(const FeederFlags& f) {
           : feeder_run(feeder_model(table, law, f.g, f.steps_per_period, !f.no_flight,
                                     f.restitution),
                        drive.period, f.periods);
+  // Stopping at the friction step: the level g before step-position, c_mu g from it on.
+  std::optional<FeederStop> stop;
+  if (f.step_position) {
+    const FrictionField field = FrictionField::steps({*f.step_position}, {f.g, f.c_mu * f.g});
+    stop = method == Method::exact
+               ? feeder_stop_exact(table, law, field, f.start, f.max_periods, f.restitution)
+               : feeder_stop(feeder_model(table, law, field, f.steps_per_period, !f.no_flight,
+                                          f.restitution),
+                             drive.period, f.start, f.max_periods);
+  }
   const FeederOnsets onsets = feeder_onsets(f.vibration_angle, f.incline, f.mu_static);
   const double w = 2 * std::numbers::pi * f.frequency;
   const double along = f.amplitude * w * std::cos(f.vibration_angle);  // a0 w cos(psi)
@@ -102,6 +124,19 @@ void run_feeder(const FeederFlags& f) {
   r["census"] = {{"stick", number_or_null(run.stick_fraction)},
                  {"flight", number_or_null(run.flight_fraction)},
                  {"slip", number_or_null(1 - run.stick_fraction - run.flight_fraction)}};
+  if (stop) {
+    const FeederOnsets rough = feeder_onsets(f.vibration_angle, f.incline, f.c_mu * f.mu_static);
+    r["stop"] = {{"step_position_m", *f.step_position},
+                 {"c_mu", f.c_mu},
+                 {"start_m", f.start},
+                 {"rough_regime", feeder_regime_name(feeder_regime(rough, machine_number(drive)))},
+                 {"stopped", stop->stopped},
+                 {"end_position_m", number_or_null(stop->end_position)},
+                 {"past_step_m", number_or_null(stop->end_position - *f.step_position)},
+                 {"stop_time_s", number_or_null(stop->stop_time)},
+                 {"periods", stop->periods},
+                 {"lifted_off", stop->lifted_off}};
+  }
   TextTable t;
   t.row("machine number K, throw number Gamma",
         table_text(r["machine_number"]) + ", " + table_text(r["throw_number"]));
@@ -119,6 +154,16 @@ void run_feeder(const FeederFlags& f) {
   t.row("last period: stick / slip / flight",
         table_text(r["census"]["stick"]) + " / " + table_text(r["census"]["slip"]) + " / " +
             table_text(r["census"]["flight"]));
+  if (stop) {
+    t.row("friction step: position [m], c_mu, rough regime",
+          table_text(r["stop"]["step_position_m"]) + ", " + table_text(r["stop"]["c_mu"]) +
+              ", " + table_text(r["stop"]["rough_regime"]));
+    t.row("stopped (periods)", table_text(r["stop"]["stopped"]) + " (" +
+                                   table_text(r["stop"]["periods"]) + ")");
+    t.row("end position [m], past the step [m]", table_text(r["stop"]["end_position_m"]) + ", " +
+                                                     table_text(r["stop"]["past_step_m"]));
+    t.row("stop time [s]", table_text(r["stop"]["stop_time_s"]));
+  }
   t.row("method", table_text(r["method"]));
   deliver_report(r, t.str(), f.as_json, f.out);
 }
@@ -160,6 +205,19 @@ void add_feeder_command(CLI::App& app) {
   sub->add_flag("--no-flight", f->no_flight,
                 "forbid lift-off: a drive whose throw number exceeds 1 is refused (exit 2)")
       ->group("Solver");
+  sub->add_option("--step-position", f->step_position,
+                  "a friction step at this position on the track [m]: the report adds a "
+                  "stopping run from --start (friction mu before it, c_mu mu from it on)")
+      ->group("Stopping");
+  sub->add_option("--c-mu", f->c_mu, "the rough side's friction over the smooth side's, in "
+                                     "(0, 1e6]. Default: 2.5")
+      ->group("Stopping");
+  sub->add_option("--start", f->start, "where the part is released at rest [m]. Default: 0")
+      ->group("Stopping");
+  sub->add_option("--max-periods", f->max_periods,
+                  "periods before a part that still moves is reported as not stopped, in "
+                  "[1, 1e6]. Default: 1000")
+      ->group("Stopping");
   sub->add_flag("--json", f->as_json, "print the report as JSON (default: a table)")
       ->group("Output");
   sub->add_option("--out", f->out, "write the JSON report to FILE (nothing printed)")

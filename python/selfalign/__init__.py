@@ -189,9 +189,11 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     FeederOnsets,
     FeederRegime,
     FeederRun,
+    FeederStop,
     feeder_regime_chart,
     feeder_onsets,
     feeder_run,
+    feeder_stop,
     machine_number,
     throw_number,
 )

@@ -2240,6 +2240,34 @@ def feeder_run(
     restitution: float = 0.0,
 ) -> FeederRun: ...
 
+class FeederStop:
+    @property
+    def stopped(self) -> bool: ...
+    @property
+    def end_position(self) -> float: ...
+    @property
+    def stop_time(self) -> float: ...
+    @property
+    def periods(self) -> int: ...
+    @property
+    def lifted_off(self) -> bool: ...
+    def to_dict(self) -> dict[str, Any]: ...
+
+def feeder_stop(
+    drive: FeederDrive,
+    law: FrictionLaw = ...,
+    *,
+    step_position: float,
+    c_mu: float = 2.5,
+    start: float = 0.0,
+    max_periods: int = 1000,
+    level: float = 1.0,
+    method: Method | str = ...,
+    steps_per_period: int = 2000,
+    flight: bool = True,
+    restitution: float = 0.0,
+) -> FeederStop: ...
+
 class FeederRegime(enum.IntEnum):
     stick = 0
     forward = 1

@@ -86,16 +86,19 @@ FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_
   py::class_<R> run(m, "FeederRun", "A run of a part on the feeder track (feeder_run).");
   run.def_readonly("first_event", &R::first_event, "FeederEvent")
       .def_readonly("first_event_time", &R::first_event_time,
-                    "the end of the step where it happened [-]; NaN for none")
+                    "the instant it happened (exact) or the end of its step (time-stepping) "
+                    "[-]; NaN for none")
       .def_readonly("lifted_off", &R::lifted_off,
                     "the part left the track (without flight the run stopped there)")
       .def_readonly("velocity", &R::velocity,
                     "mean velocity along the track over the last period [-]; NaN if the run "
                     "stopped at a lift-off (flight=False)")
       .def_readonly("stick_fraction", &R::stick_fraction,
-                    "of the last period's steps: held on the track (NaN if the run stopped)")
+                    "of the last period's time (steps when time-stepping): held on the track "
+                    "(NaN if the run stopped)")
       .def_readonly("flight_fraction", &R::flight_fraction,
-                    "of the last period's steps: ended off the track (NaN if the run stopped)")
+                    "of the last period's time (steps when time-stepping): off the track (NaN "
+                    "if the run stopped)")
       .def_readonly("lift_off_phase", &R::lift_off_phase,
                     "w (t - period start) of the last period's first lift-off [rad]; NaN "
                     "without a flight")
@@ -146,6 +149,58 @@ method=Method.time_stepping ("time-stepping"): the contact core's Moreau step wi
 [0, 1] (0: plastic) and a tangential impulse within the kinetic cone. flight=False: a run that
 reaches lift-off stops there (lifted_off, velocity NaN). Raises InvalidParameter naming the bad
 argument. Runs without the GIL.)doc");
+
+  using S = FeederStop;
+  py::class_<S> stop(m, "FeederStop",
+                     "A stopping run on a feeder track with a friction step (feeder_stop).");
+  stop.def_readonly("stopped", &S::stopped,
+                    "held through a whole period: it stays (the drive is periodic)")
+      .def_readonly("end_position", &S::end_position,
+                    "where it rests on the track [-]; NaN when it did not stop")
+      .def_readonly("stop_time", &S::stop_time,
+                    "the instant it last moved, from the release [-]; NaN when it did not stop")
+      .def_readonly("periods", &S::periods, "periods run (the stopping one included)")
+      .def_readonly("lifted_off", &S::lifted_off, "it left the track at some time")
+      .def("__repr__", [](const S& r) {
+        return Repr("FeederStop")("stopped", r.stopped)("end_position", r.end_position)(
+                   "stop_time", r.stop_time)("periods", r.periods)("lifted_off", r.lifted_off)
+            .str();
+      });
+  def_record(stop, field("stopped", &S::stopped), field("end_position", &S::end_position),
+             field("stop_time", &S::stop_time), field("periods", &S::periods),
+             field("lifted_off", &S::lifted_off));
+  m.def(
+      "feeder_stop",
+      [](const FeederDrive& drive, const FrictionLaw& law, double step_position, double c_mu,
+         double start, long long max_periods, double level, Method method,
+         long long steps_per_period, bool flight, double restitution) {
+        require_finite("step_position", step_position);
+        if (!(c_mu > 0 && c_mu <= 1e6)) throw InvalidParameter("c_mu", c_mu, "must be in (0, 1e6]");
+        require_positive_moderate("level", level);
+        const FeederTable table(drive);
+        const FrictionField field = FrictionField::steps({step_position}, {level, c_mu * level});
+        if (method == Method::exact)
+          return feeder_stop_exact(table, law, field, start, max_periods, restitution);
+        if (method != Method::time_stepping)
+          throw InvalidParameter("method", to_string(method), "must be exact or time-stepping");
+        return feeder_stop(
+            feeder_model(table, law, field, steps_per_period, flight, restitution), drive.period,
+            start, max_periods);
+      },
+      py::arg("drive"), py::arg("law") = FrictionLaw{}, py::kw_only(), py::arg("step_position"),
+      py::arg("c_mu") = 2.5, py::arg("start") = 0.0, py::arg("max_periods") = 1000,
+      py::arg("level") = 1.0, py::arg("method") = Method::exact,
+      py::arg("steps_per_period") = 2000, py::arg("flight") = true,
+      py::arg("restitution") = 0.0, py::call_guard<py::gil_scoped_release>(), R"doc(
+Stopping at a friction step on a vibrating feeder track (docs/feeder.md): the part, released at
+rest at `start` on the drive's track, the friction level `level` before `step_position` and
+c_mu x level from it on, runs period by period until it is held through a whole period (then
+it stays: the drive is periodic). Returns FeederStop: stopped, end_position and stop_time (NaN
+when it still moved after `max_periods` periods: a result, not an error), periods, lifted_off.
+method="exact" (the default: the exact feeder solver) or "time-stepping" (the contact core with
+`steps_per_period`; flight=False stops the run at a lift-off). In SI: g = 9.81 in the drive and
+level = 9.81, so the law's coefficients are the absolute ones. Raises InvalidParameter naming
+the bad argument. Runs without the GIL.)doc");
 
   bind_int_enum<FeederRegime>(m, "FeederRegime",
                               "The regime the closed-form onsets give (feeder_regime_chart).",

@@ -110,3 +110,31 @@ def test_the_regime_chart_figure(tmp_path):
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert ax.get_xscale() == "log"
     assert [p.name for p in tmp_path.iterdir()] == ["regimes.png"]
+
+
+def test_a_part_stops_past_a_friction_step_by_both_methods():
+    # SI: 50 Hz, psi = 0.35, theta = 0.02, K = 1.5; mu 0.5 / 0.4 before 10 mm, 7 times that
+    # after (the rough side's onsets hold a part at this K). The exact stop and the contact
+    # core's at 20 000 steps per period agree to its order-1 error (measured 8e-7 m; at 2 000
+    # steps the part reaches the step a period earlier and stops 0.35 um past it instead of
+    # 58 um: the depth depends on the phase of arrival).
+    g, period = 9.81, 0.02
+    w = 2 * math.pi / period
+    drive = sa.FeederDrive(1.5 * g / w**2, period, 0.35, 0.02, g)
+    law = sa.FrictionLaw(0.5, 0.4)
+    exact = sa.feeder_stop(drive, law, step_position=0.01, c_mu=7.0, level=g)
+    stepped = sa.feeder_stop(drive, law, step_position=0.01, c_mu=7.0, level=g,
+                             method="time-stepping", steps_per_period=20000)
+    assert exact.stopped and stepped.stopped
+    assert exact.end_position > 0.01 and not exact.lifted_off
+    assert stepped.end_position == pytest.approx(exact.end_position, abs=5e-6)
+    # the end of the last step that moved: measured 3.2e-5 s (1.6e-3 periods) before the exact
+    # stop
+    assert stepped.stop_time == pytest.approx(exact.stop_time, abs=2e-3 * period)
+    assert stepped.periods == exact.periods
+    never = sa.feeder_stop(sa.FeederDrive(1.3 / math.sin(0.35) * g / w**2, period, 0.35, 0.0, g),
+                           law, step_position=0.01, c_mu=3.0, level=g, max_periods=20)
+    assert not never.stopped and math.isnan(never.end_position) and never.periods == 20
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.feeder_stop(drive, law, step_position=0.01, c_mu=0.0)
+    assert e.value.name == "c_mu"

@@ -172,6 +172,7 @@ EXAMPLES = {
     "PlanarCensus": lambda: sa.PlanarCensus(3, 1, 2),
     "FeederDrive": lambda: sa.FeederDrive(1e-3, 0.02, 0.3, 0.05, 9.81),
     "FeederOnsets": lambda: sa.feeder_onsets(0.3, 0.05, 0.5),
+    "FeederStop": lambda: sa.feeder_stop(sa.FeederDrive(0.038, vibration_angle=0.35), sa.FrictionLaw(0.5, 0.4), step_position=0.05, c_mu=7.0, max_periods=20),
     "FeederRun": lambda: sa.feeder_run(sa.FeederDrive(0.02, vibration_angle=0.3), periods=2,
                                        steps_per_period=200),
     "PlanarProblem": lambda: sa.PlanarProblem(
