@@ -111,6 +111,45 @@ TEST(CliFeeder, StopsPastAFrictionStepOrSaysItDidNot) {
   expect_clean_failure(bad, bad.run(args), {"c-mu", "(0, 1e6]"});
 }
 
+TEST(CliFeederDesign, TheDesignedDriveConveysAtTheTargetSpeed) {
+  // 50 Hz, theta = 0.02, mu 0.5 / 0.4: 0.03 m/s with at most 3 rad of flight a period. The
+  // designed drive, run by `selfalign feeder` (the exact run, the default), conveys at the
+  // target (the design's bisection closes K to 1e-10 relative) and flies within the bound.
+  const CliSandbox box;
+  const auto r = box.run({"feeder-design", "--target-speed", "0.03", "--frequency", "50",
+                          "--incline", "0.02", "--mu-static", "0.5", "--mu-kinetic", "0.4",
+                          "--max-flight-angle", "3", "--json", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_TRUE(j["feasible"].get<bool>());
+  const json& b = j["best"];
+  EXPECT_EQ(j["candidates"].size(), 10u);
+  const auto run = box.run({"feeder", "--amplitude", text(b["amplitude_m"].get<double>()),
+                            "--frequency", "50", "--vibration-angle",
+                            text(b["vibration_angle_rad"].get<double>()), "--incline", "0.02",
+                            "--mu-static", "0.5", "--mu-kinetic", "0.4", "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const json k = json::parse(run.out);
+  EXPECT_NEAR(k["velocity_m_per_s"].get<double>(), 0.03, 1e-6);
+  EXPECT_LE(k["flight_angle_rad"].get<double>(), 3.0);
+  EXPECT_NEAR(k["machine_number"].get<double>(), b["machine_number"].get<double>(), 1e-12);
+  // unreachable: a result (feasible false, nulls), not an error
+  const auto none = box.run({"feeder-design", "--target-speed", "5", "--frequency", "50",
+                             "--mu-static", "0.5", "--mu-kinetic", "0.4", "--angles", "3",
+                             "--json", "--quiet"});
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  const json n = json::parse(none.out);
+  EXPECT_FALSE(n["feasible"].get<bool>());
+  EXPECT_TRUE(n["best"]["amplitude_m"].is_null());
+  EXPECT_FALSE(n["best"]["reason"].is_null());
+  // bad input: one line naming the flag, exit 2, no file
+  const CliSandbox bad;
+  expect_clean_failure(bad, bad.run({"feeder-design", "--target-speed", "0", "--frequency", "50",
+                                     "--mu-static", "0.5", "--mu-kinetic", "0.4", "--out",
+                                     "d.json"}),
+                       {"target-speed"});
+}
+
 TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
       {{"--amplitude", "0"}, {"amplitude"}},

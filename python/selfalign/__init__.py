@@ -194,6 +194,7 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     feeder_onsets,
     feeder_run,
     feeder_stop,
+    design_feeder_drive,
     machine_number,
     throw_number,
 )

@@ -2268,6 +2268,25 @@ def feeder_stop(
     restitution: float = 0.0,
 ) -> FeederStop: ...
 
+def design_feeder_drive(
+    target_speed: float,
+    *,
+    period: float = 1.0,
+    incline: float = 0.0,
+    mu_static: float = 0.5,
+    mu_kinetic: float = 0.4,
+    g: float = 1.0,
+    max_flight_angle: float = 0.0,
+    vibration_angles: npt.ArrayLike | None = None,
+    k_max: float = 10.0,
+    k_samples: int = 48,
+    k_tolerance: float = 1e-10,
+    periods: int = 20,
+    restitution: float = 0.0,
+    threads: int = 0,
+    progress: Callable[[int, int], Any] | None = None,
+) -> dict[str, Any]: ...
+
 class FeederRegime(enum.IntEnum):
     stick = 0
     forward = 1

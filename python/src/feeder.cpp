@@ -12,6 +12,7 @@
 #include "record.hpp"
 #include "repr.hpp"
 #include "selfalign/analysis/feeder.hpp"
+#include "selfalign/design/feeder_drive.hpp"
 #include "selfalign/error.hpp"
 
 namespace selfalign::python {
@@ -267,6 +268,70 @@ vibration_angle, machine_number, throw_number, regime (int8 FeederRegime), first
 FeederEvent), velocity (mean over the last period), dimensionless_speed (velocity /
 (a0 w cos psi)), stick_fraction, flight_fraction, lifted_off, failed; and the two axes.
 `progress(done, total)` as the other studies'; Ctrl-C stops it. Runs without the GIL.)doc");
+
+  m.def(
+      "design_feeder_drive",
+      [](double target_speed, double period, double incline, double mu_static, double mu_kinetic,
+         double g, double max_flight_angle, const py::object& angles_in, double k_max,
+         int k_samples, double k_tolerance, long long periods, double restitution, int threads,
+         const py::object& progress_in) {
+        FeederDriveOptions o;
+        o.target_speed = target_speed, o.period = period, o.incline = incline;
+        o.mu_static = mu_static, o.mu_kinetic = mu_kinetic, o.g = g;
+        o.max_flight_angle = max_flight_angle, o.k_max = k_max, o.k_samples = k_samples;
+        o.k_tolerance = k_tolerance, o.periods = periods, o.restitution = restitution;
+        o.threads = threads;
+        if (!angles_in.is_none()) o.vibration_angles = to_vector(angles_in, "vibration_angles");
+        const PythonProgress progress(progress_in);
+        o.progress = progress.callback();
+        const FeederDriveDesign d = progress.run([&] { return design_feeder_drive(o); });
+        const auto one = [](const FeederDriveCandidate& c) {
+          py::dict r;
+          r["vibration_angle"] = c.vibration_angle, r["feasible"] = c.feasible;
+          r["machine_number"] = c.machine_number, r["amplitude"] = c.amplitude;
+          r["throw_number"] = c.throw_number, r["speed"] = c.speed;
+          r["flight_angle"] = c.flight_angle;
+          r["reason"] = c.reason.empty() ? py::object(py::none()) : py::str(c.reason);
+          return r;
+        };
+        const auto n = static_cast<py::ssize_t>(d.candidates.size());
+        py::array_t<double> psi(n), K(n), a0(n), gamma(n), v(n), flight(n);
+        py::array_t<bool> ok(n);
+        py::list reasons;
+        for (py::ssize_t i = 0; i < n; ++i) {
+          const FeederDriveCandidate& c = d.candidates[static_cast<std::size_t>(i)];
+          psi.mutable_data()[i] = c.vibration_angle, K.mutable_data()[i] = c.machine_number;
+          a0.mutable_data()[i] = c.amplitude, gamma.mutable_data()[i] = c.throw_number;
+          v.mutable_data()[i] = c.speed, flight.mutable_data()[i] = c.flight_angle;
+          ok.mutable_data()[i] = c.feasible;
+          reasons.append(c.reason.empty() ? py::object(py::none()) : py::str(c.reason));
+        }
+        py::dict out;
+        out["feasible"] = d.feasible;
+        out["best"] = one(d.best);
+        py::dict cands;
+        cands["vibration_angle"] = psi, cands["feasible"] = ok, cands["machine_number"] = K;
+        cands["amplitude"] = a0, cands["throw_number"] = gamma, cands["speed"] = v;
+        cands["flight_angle"] = flight, cands["reason"] = reasons;
+        out["candidates"] = cands;
+        return out;
+      },
+      py::arg("target_speed"), py::kw_only(), py::arg("period") = 1.0, py::arg("incline") = 0.0,
+      py::arg("mu_static") = 0.5, py::arg("mu_kinetic") = 0.4, py::arg("g") = 1.0,
+      py::arg("max_flight_angle") = 0.0, py::arg("vibration_angles") = py::none(),
+      py::arg("k_max") = 10.0, py::arg("k_samples") = 48, py::arg("k_tolerance") = 1e-10,
+      py::arg("periods") = 20, py::arg("restitution") = 0.0, py::arg("threads") = 0,
+      py::arg("progress") = py::none(), R"doc(
+The least feeder drive for a target conveying speed (docs/feeder.md, "Choosing the drive"): at
+the drive `period`, for each candidate vibration angle (default 0.1, 0.2, ..., 1.0 rad) the least
+machine number K = a0 w^2 / g whose steady speed by the exact feeder solver (the last of
+`periods` periods from rest) reaches `target_speed`, with no lift-off (max_flight_angle=0) or a
+flight angle at most max_flight_angle [rad] per period. Returns a dict: feasible, best (the
+candidate with the least K, a dict: vibration_angle, feasible, machine_number, amplitude,
+throw_number, speed, flight_angle, reason) and candidates (NumPy arrays of the same per angle;
+reason a list, None where feasible). An unreachable target is a result (feasible False, NaN),
+not an error. In SI: g=9.81, period in s, target in m/s. Raises InvalidParameter naming the bad
+option. Runs without the GIL; progress(done, total) per angle.)doc");
 }
 
 }  // namespace selfalign::python

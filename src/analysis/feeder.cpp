@@ -37,6 +37,17 @@ void validate(const FeederDrive& d) {
   require_positive_moderate("g", d.g);
 }
 
+void require_feeder_track(double incline, double mu_static, double mu_kinetic, double g,
+                          double period) {
+  require_feeder_angle("incline", incline);
+  require_positive_moderate("mu_static", mu_static);
+  require_positive_moderate("mu_kinetic", mu_kinetic);
+  if (mu_kinetic > mu_static)
+    throw InvalidParameter("mu_kinetic", mu_kinetic, "must be <= mu_static");
+  require_positive_moderate("g", g);
+  require_positive_moderate("period", period);
+}
+
 double machine_number(const FeederDrive& d) {
   const double w = 2 * std::numbers::pi / d.period;
   return d.amplitude * w * w / d.g;
@@ -360,13 +371,7 @@ FeederRegime feeder_regime(const FeederOnsets& o, double K) {
 std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angles,
                                                  const std::vector<double>& ks,
                                                  const FeederChartOptions& o) {
-  require_feeder_angle("incline", o.incline);
-  require_positive_moderate("mu_static", o.mu_static);
-  require_positive_moderate("mu_kinetic", o.mu_kinetic);
-  if (o.mu_kinetic > o.mu_static)
-    throw InvalidParameter("mu_kinetic", o.mu_kinetic, "must be <= mu_static");
-  require_positive_moderate("g", o.g);
-  require_positive_moderate("period", o.period);
+  require_feeder_track(o.incline, o.mu_static, o.mu_kinetic, o.g, o.period);
   if (o.periods < 1) throw InvalidParameter("periods", static_cast<double>(o.periods), "must be >= 1");
   if (angles.empty() || ks.empty())
     throw InvalidParameter(angles.empty() ? "vibration_angles" : "machine_numbers", "empty",

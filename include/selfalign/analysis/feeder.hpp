@@ -51,6 +51,12 @@ void validate(const FeederDrive& drive);
 /// incline) [rad].
 void require_feeder_angle(std::string_view name, double angle);
 
+/// The track and drive settings the studies share (the regime chart, the drive design): throws
+/// InvalidParameter naming "incline" (|theta| >= pi/2), "mu_static", "mu_kinetic" (not in
+/// (0, mu_static]), "g" or "period".
+void require_feeder_track(double incline, double mu_static, double mu_kinetic, double g,
+                          double period);
+
 /// K = a0 w^2 / g [-]: the drive's peak acceleration over g.
 double machine_number(const FeederDrive& drive);
 /// Gamma = K sin(psi) / cos(theta) [-]: the part lifts off where |Gamma| > 1.
