@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -148,6 +149,41 @@ TEST(CliFeederDesign, TheDesignedDriveConveysAtTheTargetSpeed) {
                                      "--mu-static", "0.5", "--mu-kinetic", "0.4", "--out",
                                      "d.json"}),
                        {"target-speed"});
+}
+
+TEST(CliFeeder, AConfigFileGivesTheFlagsAndFlagsOverrideIt) {
+  // [drive], [friction], [run] and [stop] keys (SI) give the same report as the flags; a flag
+  // overrides its key; an unknown key is one line naming it with the spelling hint; a missing
+  // required value names the flag and the key. The file lies outside the work folder.
+  const CliSandbox box;
+  const std::string path = box.file("feeder.toml");
+  {
+    std::ofstream out(path);
+    out << "[drive]\namplitude = 0.149e-3\nfrequency = 50\nvibration_angle = 0.35\n"
+           "incline = 0.02\n[friction]\nmu_static = 0.5\nmu_kinetic = 0.4\n"
+           "[run]\nmethod = \"exact\"\nperiods = 20\n[stop]\nstep_position = 0.01\nc_mu = 7\n";
+  }
+  const auto from_file = box.run({"feeder", "--config", path, "--json"});
+  const auto from_flags = box.run({"feeder", "--amplitude", "0.149e-3", "--frequency", "50",
+                                   "--vibration-angle", "0.35", "--incline", "0.02",
+                                   "--mu-static", "0.5", "--mu-kinetic", "0.4", "--periods",
+                                   "20", "--step-position", "0.01", "--c-mu", "7", "--json"});
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  ASSERT_EQ(from_flags.exit_code, 0) << from_flags.err;
+  EXPECT_EQ(json::parse(from_file.out), json::parse(from_flags.out));
+  const auto overridden = box.run({"feeder", "--config", path, "--c-mu", "3", "--json"});
+  ASSERT_EQ(overridden.exit_code, 0) << overridden.err;
+  EXPECT_EQ(json::parse(overridden.out)["stop"]["c_mu"].get<double>(), 3.0);
+  {
+    std::ofstream out(path);
+    out << "[drive]\namplitude = 1e-4\nfrequency = 50\n[friction]\nmu_static = 0.5\n"
+           "mu_kinetic = 0.4\n[stop]\nc_mux = 7\n";
+  }
+  expect_clean_failure(box, box.run({"feeder", "--config", path, "--out", "r.json"}),
+                       {"stop.c_mux", "did you mean c_mu"});
+  expect_clean_failure(box, box.run({"feeder", "--frequency", "50", "--mu-static", "0.5",
+                                     "--mu-kinetic", "0.4", "--out", "r.json"}),
+                       {"amplitude", "drive.amplitude"});
 }
 
 TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {

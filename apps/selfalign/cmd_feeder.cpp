@@ -8,8 +8,12 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "commands.hpp"
+#include "feeder_config.hpp"
 #include "feeder_flags.hpp"
 #include "report.hpp"
 #include "selfalign/analysis/feeder.hpp"
@@ -27,12 +31,35 @@ struct FeederFlags {
   long long periods = 20, steps_per_period = 2000;
   std::string method = "exact";
   double restitution = 0;
-  std::optional<double> step_position;  // the friction step: stopping run when given
+  double step_position = 0;  // the friction step: a stopping run when given
   double c_mu = 2.5, start = 0;
   long long max_periods = 1000;
   bool no_flight = false, as_json = false;
-  std::optional<std::string> out;
+  std::optional<std::string> out, config;
+  // given by a flag or the config file: the required values, and the stopping run
+  bool amplitude_given = false, frequency_given = false, mu_static_given = false,
+       mu_kinetic_given = false, stopping = false;
 };
+
+// The config file's keys ([drive], [friction], [run], [stop]: docs/feeder.md) and the flags
+// they stand for.
+std::vector<FeederConfigKey> feeder_keys(FeederFlags& f) {
+  return {{"drive", "amplitude", "--amplitude", &f.amplitude, &f.amplitude_given},
+          {"drive", "frequency", "--frequency", &f.frequency, &f.frequency_given},
+          {"drive", "vibration_angle", "--vibration-angle", &f.vibration_angle},
+          {"drive", "incline", "--incline", &f.incline},
+          {"drive", "g", "--g", &f.g},
+          {"friction", "mu_static", "--mu-static", &f.mu_static, &f.mu_static_given},
+          {"friction", "mu_kinetic", "--mu-kinetic", &f.mu_kinetic, &f.mu_kinetic_given},
+          {"run", "method", "--method", &f.method},
+          {"run", "periods", "--periods", &f.periods},
+          {"run", "steps_per_period", "--steps-per-period", &f.steps_per_period},
+          {"run", "restitution", "--restitution", &f.restitution},
+          {"stop", "step_position", "--step-position", &f.step_position, &f.stopping},
+          {"stop", "c_mu", "--c-mu", &f.c_mu},
+          {"stop", "start", "--start", &f.start},
+          {"stop", "max_periods", "--max-periods", &f.max_periods}};
+}
 
 // An onset as its machine number and the amplitude that reaches it at this frequency.
 json onset_json(double K, double g, double w) {
@@ -40,7 +67,22 @@ json onset_json(double K, double g, double w) {
   return {{"machine_number", K}, {"amplitude_m", K * g / (w * w)}};
 }
 
-void run_feeder(const FeederFlags& f) {
+void run_feeder(FeederFlags& f, const CLI::App& command) {
+  for (const auto& [flag, given] :
+       {std::pair{"--amplitude", &f.amplitude_given}, std::pair{"--frequency", &f.frequency_given},
+        std::pair{"--mu-static", &f.mu_static_given}, std::pair{"--mu-kinetic", &f.mu_kinetic_given},
+        std::pair{"--step-position", &f.stopping}})
+    *given = *given || command.get_option(flag)->count() > 0;
+  if (f.config) apply_feeder_config(*f.config, command, feeder_keys(f));
+  for (const auto& [name, key, given] :
+       {std::tuple{"amplitude", "drive.amplitude", f.amplitude_given},
+        std::tuple{"frequency", "drive.frequency", f.frequency_given},
+        std::tuple{"mu-static", "friction.mu_static", f.mu_static_given},
+        std::tuple{"mu-kinetic", "friction.mu_kinetic", f.mu_kinetic_given}})
+    if (!given)
+      throw InvalidParameter(name, "missing",
+                             std::string("is required: --") + name + " or " + key +
+                                 " in --config");
   // Every flag first, by its own name (exit 2, no file).
   require_positive_moderate("amplitude", f.amplitude);
   require_positive_moderate("frequency", f.frequency);
@@ -53,8 +95,8 @@ void run_feeder(const FeederFlags& f) {
                            "periods x steps-per-period must be at most 1e9");
   const Method method = feeder_method(f.method);
   require_restitution(f.restitution);
-  if (f.step_position) {
-    require_finite("step-position", *f.step_position);
+  if (f.stopping) {
+    require_finite("step-position", f.step_position);
     if (!(f.c_mu > 0 && f.c_mu <= 1e6))
       throw InvalidParameter("c-mu", f.c_mu, "must be in (0, 1e6]");
     require_finite("start", f.start);
@@ -83,8 +125,8 @@ void run_feeder(const FeederFlags& f) {
                        drive.period, f.periods);
   // Stopping at the friction step: the level g before step-position, c_mu g from it on.
   std::optional<FeederStop> stop;
-  if (f.step_position) {
-    const FrictionField field = FrictionField::steps({*f.step_position}, {f.g, f.c_mu * f.g});
+  if (f.stopping) {
+    const FrictionField field = FrictionField::steps({f.step_position}, {f.g, f.c_mu * f.g});
     stop = method == Method::exact
                ? feeder_stop_exact(table, law, field, f.start, f.max_periods, f.restitution)
                : feeder_stop(feeder_model(table, law, field, f.steps_per_period, !f.no_flight,
@@ -126,13 +168,13 @@ void run_feeder(const FeederFlags& f) {
                  {"slip", number_or_null(1 - run.stick_fraction - run.flight_fraction)}};
   if (stop) {
     const FeederOnsets rough = feeder_onsets(f.vibration_angle, f.incline, f.c_mu * f.mu_static);
-    r["stop"] = {{"step_position_m", *f.step_position},
+    r["stop"] = {{"step_position_m", f.step_position},
                  {"c_mu", f.c_mu},
                  {"start_m", f.start},
                  {"rough_regime", feeder_regime_name(feeder_regime(rough, machine_number(drive)))},
                  {"stopped", stop->stopped},
                  {"end_position_m", number_or_null(stop->end_position)},
-                 {"past_step_m", number_or_null(stop->end_position - *f.step_position)},
+                 {"past_step_m", number_or_null(stop->end_position - f.step_position)},
                  {"stop_time_s", number_or_null(stop->stop_time)},
                  {"periods", stop->periods},
                  {"lifted_off", stop->lifted_off}};
@@ -181,11 +223,15 @@ void add_feeder_command(CLI::App& app) {
       "flight): first event, conveying velocity and v / (a0 w cos psi), stick / slip / flight "
       "fractions of the last period, its lift-off phase and flight angle.");
   auto f = std::make_shared<FeederFlags>();
-  sub->add_option("--amplitude", f->amplitude, "a0 along the vibration line [m], > 0")
-      ->required()
+  sub->add_option("--config", f->config,
+                  "a TOML or JSON file of these settings in [drive], [friction], [run] and "
+                  "[stop] (docs/feeder.md, Config keys); flags override it")
+      ->type_name("FILE");
+  sub->add_option("--amplitude", f->amplitude,
+                  "a0 along the vibration line [m], > 0 (required: here or in --config)")
       ->group("Drive");
-  sub->add_option("--frequency", f->frequency, "drive frequency [Hz], > 0")
-      ->required()
+  sub->add_option("--frequency", f->frequency,
+                  "drive frequency [Hz], > 0 (required: here or in --config)")
       ->group("Drive");
   sub->add_option("--vibration-angle", f->vibration_angle,
                   "psi, the drive line's angle to the track [rad], in (-pi/2, pi/2). Default: 0")
@@ -194,7 +240,7 @@ void add_feeder_command(CLI::App& app) {
                   "theta, the track's incline [rad], in (-pi/2, pi/2); > 0: the track rises in "
                   "the conveying direction. Default: 0")
       ->group("Drive");
-  add_friction_flags(*sub, f->mu_static, f->mu_kinetic);
+  add_friction_flags(*sub, f->mu_static, f->mu_kinetic, false);
   sub->add_option("--g", f->g, "gravity [m/s^2], > 0. Default: 9.81")->group("Drive");
   sub->add_option("--periods", f->periods, "periods from rest, in [1, 1e6]. Default: 20")
       ->group("Solver");
@@ -223,7 +269,7 @@ void add_feeder_command(CLI::App& app) {
   sub->add_option("--out", f->out, "write the JSON report to FILE (nothing printed)")
       ->type_name("FILE")
       ->group("Output");
-  sub->callback([f] { run_feeder(*f); });
+  sub->callback([f, sub] { run_feeder(*f, *sub); });
 }
 
 }  // namespace selfalign::cli

@@ -31,13 +31,15 @@ inline void require_feeder_flags(double incline, double mu_static, double mu_kin
                            "must be in [2, " + format_number(static_cast<double>(max_steps)) + "]");
 }
 
-/// Adds the required --mu-static and --mu-kinetic flags (group "Friction").
-inline void add_friction_flags(CLI::App& sub, double& mu_static, double& mu_kinetic) {
+/// Adds the --mu-static and --mu-kinetic flags (group "Friction"), required unless the
+/// command reads them from a config file too (`required` false: it checks them itself).
+inline void add_friction_flags(CLI::App& sub, double& mu_static, double& mu_kinetic,
+                               bool required = true) {
   sub.add_option("--mu-static", mu_static, "static friction coefficient, > 0")
-      ->required()
+      ->required(required)
       ->group("Friction");
   sub.add_option("--mu-kinetic", mu_kinetic, "kinetic friction coefficient, in (0, mu-static]")
-      ->required()
+      ->required(required)
       ->group("Friction");
 }
 
