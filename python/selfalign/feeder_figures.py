@@ -69,3 +69,43 @@ def plot_regime_chart(chart: Mapping[str, Any], *, incline: float, mu_static: fl
     if path is not None:
         _save_atomic(ax.figure, path, dpi)
     return ax
+
+
+def flight_equation_angle(throw_number: float) -> float:
+    """The bouncing-ball flight angle (docs/feeder.md): with phi0 = asin(1/Gamma), the first
+    root phi_L > phi0 of (phi - phi0)^2/2 + Gamma (sin phi - sin phi0 - (phi - phi0) cos phi0)
+    = 0, by a scan and bisection; returns phi_L - phi0 [rad]. Written from the equation alone
+    (the second method for the exact solver's flights)."""
+    gamma = float(throw_number)
+    phi0 = np.arcsin(1.0 / gamma)
+
+    def f(phi: float) -> float:
+        d = phi - phi0
+        return d * d / 2 + gamma * (np.sin(phi) - np.sin(phi0) - d * np.cos(phi0))
+
+    lo = hi = phi0 + 1e-3
+    while f(hi) < 0:
+        lo, hi = hi, hi + 1e-3
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if f(mid) < 0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi) - phi0
+
+
+def flight_angles(throw_numbers: Any, vibration_angle: float = 0.6,
+                  incline: float = 0.05) -> dict[str, np.ndarray]:
+    """Flight angles over throw numbers: the exact feeder solver's (`feeder_run`, plastic
+    landing, mu = 20 so that the part is held on the track, 4 periods) and the flight
+    equation's; arrays ``throw_number``, ``exact``, ``equation``."""
+    gammas = np.asarray(throw_numbers, dtype=float)
+    w = 2 * np.pi
+    exact, equation = [], []
+    for gamma in gammas:
+        K = gamma * np.cos(incline) / np.sin(vibration_angle)
+        drive = sa.FeederDrive(K / w**2, 1.0, vibration_angle, incline, 1.0)
+        exact.append(sa.feeder_run(drive, sa.FrictionLaw(20.0, 20.0), periods=4).flight_angle)
+        equation.append(flight_equation_angle(gamma))
+    return {"throw_number": gammas, "exact": np.array(exact), "equation": np.array(equation)}

@@ -519,3 +519,48 @@ def fig18(out_dir: str) -> Figure:
 
 
 ALL = [fig3, fig4, fig5, fig6, fig7, fig9, fig10, fig11, fig12, fig13, fig16, fig17, fig18]
+
+
+# ---- beyond the paper ----------------------------------------------------------------------
+
+def figF1(out_dir: str) -> Figure:
+    """Fig. F1: the vibratory feeder's regimes and the bouncing-ball flight (beyond the paper)."""
+    from . import feeder_figures  # matplotlib is already loaded here
+
+    angles = np.linspace(0.0, 1.2, 49)
+    ks = 0.1 * 100.0 ** np.linspace(0.0, 1.0, 81)
+    chart = sa.feeder_regime_chart(angles, ks, incline=0.0, mu_static=0.5, mu_kinetic=0.4)
+    flights = feeder_figures.flight_angles(np.linspace(1.05, 3.2, 44))
+    worst = float(np.max(np.abs(flights["exact"] - flights["equation"])))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(13, 5))
+    feeder_figures.plot_regime_chart(chart, incline=0.0, mu_static=0.5, ax=left)
+    left.set_title("regimes (exact runs), mu_s = 0.5, mu_k = 0.4, level track;\n"
+                   "contours: v / (a0 w cos psi)", fontsize=9)
+    right.plot(flights["throw_number"], flights["equation"], "-", color="0.3",
+               label="flight equation (bisection)")
+    right.plot(flights["throw_number"], flights["exact"], "o", ms=4, mfc="none",
+               color="tab:red", label=f"exact feeder solver (largest difference {worst:.1e} rad)")
+    right.set_xlabel("throw number Gamma = K sin psi / cos theta [-]")
+    right.set_ylabel("flight angle [rad]")
+    right.set_title("plastic landing, part held on the track (mu = 20), psi = 0.6", fontsize=9)
+    right.legend(fontsize=8)
+    data = _csv(out_dir, "figF1", {
+        "vibration_angle": chart["vibration_angle"], "machine_number": chart["machine_number"],
+        "regime": chart["regime"], "dimensionless_speed": chart["dimensionless_speed"]})
+    flight_data = _csv(out_dir, "figF1_flight", flights)
+    return Figure("F1", "Vibratory feeder: regimes and flight (beyond the paper)",
+                  "Classical vibratory-feeder theory (Redford and Boothroyd; Sloot and Kruyt), "
+                  "which the paper's planar table leaves out (issue 23): a part on a track driven "
+                  "along the vibration angle slips forward, slips backward or hops where the "
+                  "closed-form onsets say, and with plastic landing its flight angle obeys the "
+                  "bouncing-ball flight equation.",
+                  _save(fig, out_dir, "figF1"), [data, flight_data],
+                  "Left: cells coloured by the closed-form regime, the onset curves, contours of "
+                  "the exact solver's dimensionless speed (10 periods from rest). Right: the "
+                  f"exact solver's flight angle against the flight equation, largest difference "
+                  f"{worst:.1e} rad over {len(flights['exact'])} throw numbers (docs/feeder.md).",
+                  raw={"worst_flight_difference": worst})
+
+
+# Figures beyond the paper, drawn after the paper's by the reproduce run.
+BEYOND = [figF1]
