@@ -178,3 +178,32 @@ def test_the_reproduce_runs_feeder_figure_checks_the_flight_equation(tmp_path):
     assert fig.number == "F1" and fig.raw["worst_flight_difference"] < 1e-12
     for path in fig.files + fig.data:
         assert (tmp_path / path.split("/")[-1]).stat().st_size > 0
+
+
+def test_python_m_selfalign_regimes_writes_the_clis_csv_and_a_png(tmp_path, capsys):
+    # `python -m selfalign regimes` takes the C++ command's flags and writes the same CSV, byte
+    # for byte (the same cells, the same shortest number text), plus the PNG figure; bad input
+    # is one line naming the flag, exit 2, no file.
+    import os
+    import pathlib
+    import subprocess
+    from selfalign import regimes
+    flags = ["--mu-static", "0.5", "--mu-kinetic", "0.4", "--angles", "6", "--machine-numbers",
+             "9", "--incline", "0.03"]
+    assert regimes.main(flags + ["--csv", str(tmp_path / "py.csv"),
+                                 "--png", str(tmp_path / "py.png")]) == 0
+    assert (tmp_path / "py.png").stat().st_size > 0
+    rows = (tmp_path / "py.csv").read_text().splitlines()
+    assert len(rows) == 55 and rows[0].startswith("vibration_angle_rad,machine_number")
+    root = pathlib.Path(__file__).resolve().parents[2]
+    cli = pathlib.Path(os.environ.get("SELFALIGN_CLI", root / "build/release/apps/selfalign/selfalign"))
+    if cli.exists():
+        subprocess.run([str(cli), "regimes", *flags, "--csv", str(tmp_path / "cpp.csv"),
+                        "--quiet"], check=True, capture_output=True)
+        assert (tmp_path / "cpp.csv").read_bytes() == (tmp_path / "py.csv").read_bytes()
+    capsys.readouterr()
+    assert regimes.main(["--mu-static", "0.5", "--mu-kinetic", "0.9",
+                         "--csv", str(tmp_path / "bad.csv")]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "mu-kinetic" in err
+    assert not (tmp_path / "bad.csv").exists()
