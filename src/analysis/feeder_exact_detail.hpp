@@ -20,6 +20,9 @@ struct FeederConstants {
   double restitution;
   const PiecewiseAffineFriction* field;
   double level;
+  /// The smallest height the family resolves [-]: the smooth family's h carries the rounding
+  /// of z_T(t) - z_T(t0) (set by it: 64 roundings of the normal stroke); 0 where h is exact.
+  double height_resolution = 0;
   explicit FeederConstants(const FeederTrack& k)
       : gc(k.g * std::cos(k.incline)),
         gs(k.g * std::sin(k.incline)),
@@ -63,9 +66,11 @@ struct FeederConstants {
 // Coulomb-bounded by the kinetic cone, as on the sliding arcs (the static coefficient holds a
 // part at rest, it does not stop a sliding one): the part stops (u = 0) if |u| <= k m P / g,
 // else u loses k m P / g. A part that arrives at rest relative to the track (u = 0) needs no
-// tangential impulse and stays at rest. A rebound that would last under 64 roundings of t
-// under a positive load is the accumulation point of the bounces: the contact closes (w = 0).
-// Returns true when the part flies on.
+// tangential impulse and stays at rest. Under a positive load a rebound that would last under
+// 64 roundings of t, or rise less than the height the family resolves (w^2 / 2n below
+// height_resolution: below it the computed height is rounding noise, which would feed the
+// bounces instead of letting them die out), is the accumulation point of the bounces: the
+// contact closes (w = 0). Returns true when the part flies on.
 inline bool feeder_landing(const FeederConstants& c, double t, double x, double n, double& u,
                            double& w, FeederExactStatistics& stats) {
   const double P = (1 + c.restitution) * std::max(0.0, -w);
@@ -79,7 +84,9 @@ inline bool feeder_landing(const FeederConstants& c, double t, double x, double 
     u -= sigma * stop;
   }
   w = c.restitution * std::max(0.0, -w);
-  if (w > 0 && n > 0 && 2 * w / n <= 64 * time_resolution(t)) w = 0;
+  if (w > 0 && n > 0 &&
+      (2 * w / n <= 64 * time_resolution(t) || w * w <= 2 * n * c.height_resolution))
+    w = 0;
   if (w > 0) ++stats.rebounds;
   return w > 0;
 }

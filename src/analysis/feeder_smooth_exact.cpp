@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "../simulate/safe_step.hpp"
 #include "feeder_exact_detail.hpp"
@@ -262,7 +263,10 @@ struct Solver {
 void advance_feeder_smooth(const FeederTrack& k, FeederExactState& st, double t_end,
                            FeederExactStatistics& stats) {
   const SmoothTrack T(k);
-  const FeederConstants c(k);
+  FeederConstants c(k);
+  if (k.normal)  // h = ... - (z_T(t) - z_T(t0) - ...): rounding of the normal motion's size
+    c.height_resolution = 64 * std::numeric_limits<double>::epsilon() *
+                          (k.normal->stroke() + std::abs(k.normal->state(0).y));
   Solver s{T, c, stats, st.t, st.x, st.u, st.h, st.w, st.h > 0 ? FeederMode::flight : st.mode};
   while (s.t < t_end) {
     ++stats.arcs;
