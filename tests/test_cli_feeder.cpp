@@ -186,6 +186,34 @@ TEST(CliFeeder, AConfigFileGivesTheFlagsAndFlagsOverrideIt) {
                        {"amplitude", "drive.amplitude"});
 }
 
+TEST(CliFeeder, ATwoFrequencyDriveHasTheOnsetsOfItsShape) {
+  // r = 0.25, phi2 = pi/2: the acceleration shape sin(phi) + cos(2 phi) peaks at 9/8 (where
+  // sin(phi) = 1/4) and dips to -2 (phi = 3 pi / 2), by hand. psi = 0.4, theta = 0.03: the
+  // lift-off at K = cos(theta) / (sin(psi) 9/8), the throw number K sin(psi) 9/8 / cos(theta),
+  // the backward slip at (mu cos(theta) - sin(theta)) / ((cos(psi) - mu sin(psi)) 2).
+  const CliSandbox box;
+  const double f = 50, g = 9.81, w = 2 * std::numbers::pi * f, K = 2.0;
+  const auto r = box.run({"feeder", "--amplitude", text(K * g / (w * w)), "--frequency", "50",
+                          "--vibration-angle", "0.4", "--incline", "0.03", "--mu-static", "0.5",
+                          "--mu-kinetic", "0.4", "--harmonic-ratio", "0.25", "--harmonic-phase",
+                          text(std::numbers::pi / 2), "--periods", "4", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const double s = std::sin(0.4), c = std::cos(0.4), ct = std::cos(0.03), st = std::sin(0.03);
+  EXPECT_NEAR(j["onsets"]["lift_off"]["machine_number"].get<double>(), ct / (s * 1.125), 1e-12);
+  EXPECT_NEAR(j["throw_number"].get<double>(), K * s * 1.125 / ct, 1e-12);
+  EXPECT_NEAR(j["onsets"]["backward_slip"]["machine_number"].get<double>(),
+              (0.5 * ct - st) / ((c - 0.5 * s) * 2.0), 1e-12);
+  EXPECT_NEAR(j["onsets"]["forward_slip"]["machine_number"].get<double>(),
+              (st + 0.5 * ct) / ((c + 0.5 * s) * 1.125), 1e-12);
+  EXPECT_EQ(j["drive"]["harmonic_ratio"].get<double>(), 0.25);
+  const CliSandbox bad;
+  expect_clean_failure(bad, bad.run({"feeder", "--amplitude", "1e-4", "--frequency", "50",
+                                     "--mu-static", "0.5", "--mu-kinetic", "0.4",
+                                     "--harmonic-ratio", "-1", "--out", "r.json"}),
+                       {"harmonic-ratio", "[0, 100]"});
+}
+
 TEST(CliFeeder, BadInputIsOneLineNamingTheFlag) {
   const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
       {{"--amplitude", "0"}, {"amplitude"}},

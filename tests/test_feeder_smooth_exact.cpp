@@ -477,6 +477,71 @@ TEST(FeederSmoothExact, BouncesDieOutAtTheResolvableHeight) {
   }
 }
 
+// ---- two-frequency drives ------------------------------------------------------------------
+
+TEST(FeederTwoFrequency, TheShapesPeaksAreTheBruteForceMaxima) {
+  // s(phi) = sin(phi) + 4 r sin(2 phi + phi2) on 2e6 samples (the grid's error is at most
+  // max|s''| (pi / 1e6)^2 / 8, below 2e-11 for r <= 1) against feeder_shape's bisection.
+  for (const auto& [r, phase] : {std::pair{0.25, kPi / 2}, std::pair{0.1, 0.3},
+                                 std::pair{1.0, 2.0}, std::pair{0.0, 0.0}}) {
+    SCOPED_TRACE(::testing::Message() << "r " << r << " phi2 " << phase);
+    double up = -HUGE_VAL, down = -HUGE_VAL;
+    for (int i = 0; i < 2000000; ++i) {
+      const double phi = 2 * kPi * i / 2000000.0;
+      const double v = std::sin(phi) + 4 * r * std::sin(2 * phi + phase);
+      up = std::max(up, v), down = std::max(down, -v);
+    }
+    FeederDrive d{0.01, 1.0, 0.3, 0.0, 1.0, r, phase};
+    const FeederShape sh = feeder_shape(d);
+    EXPECT_NEAR(sh.peak_up, up, 1e-9);
+    EXPECT_NEAR(sh.peak_down, down, 1e-9);
+    EXPECT_GE(sh.peak_up, up - 1e-15);  // the bisection's peak is not below any sample
+  }
+}
+
+TEST(FeederTwoFrequency, MoreauFindsTheShapesOnsetsAndConvergesToTheExactSolver) {
+  // r = 0.25, phi2 = pi/2: s = sin(phi) + cos(2 phi), peaks 1.125 up and 2 down (the
+  // acceleration is asymmetric), psi = 0.4, theta = 0.03, mu_s = 0.5, mu_k = 0.4: the backward
+  // slip comes first (K_b = 0.323, K_f = 0.422, K_l = 2.28). The onsets of the shape: a Moreau
+  // run from rest (4000 steps per period, 3 periods) shows nothing at 0.97 times the first
+  // slip's onset and that slip at 1.03 times it; stays on the track at 0.97 K_l and lifts off
+  // at 1.03 K_l. Then Moreau(-Jean) converges to the exact solver's speed at K = 1.5 K_f
+  // (sliding; errors 2.0e-5, 5.3e-6, 1.1e-6, 2.1e-8 at 500 ... 500 000 steps) and 1.3 K_l
+  // (hopping; 3.6e-3, 4.4e-4, 3.5e-5, 4.9e-6).
+  const double w = 2 * kPi, psi = 0.4, theta = 0.03;
+  const FrictionLaw law(0.5, 0.4);
+  const auto drive = [&](double K) {
+    return FeederDrive{K / (w * w), 1.0, psi, theta, 1.0, 0.25, kPi / 2};
+  };
+  const FeederOnsets on = feeder_onsets(drive(1.0), 0.5);
+  const FeederShape sh = feeder_shape(drive(1.0));
+  if (print()) std::printf("shape up %.6f down %.6f; onsets forward %.6f backward %.6f lift-off %.6f\n", sh.peak_up, sh.peak_down, on.forward_slip, on.backward_slip, on.lift_off);
+  const double first = std::min(on.forward_slip, on.backward_slip);
+  const FeederEvent slip =
+      on.forward_slip < on.backward_slip ? FeederEvent::forward_slip : FeederEvent::backward_slip;
+  for (const double f : {0.97, 1.03}) {
+    const FeederTable table(drive(f * first));
+    const FeederRun run = feeder_run(feeder_model(table, law, 1.0, 4000, true), 1.0, 3);
+    EXPECT_EQ(run.first_event, f < 1 ? FeederEvent::none : slip) << f;
+    const FeederTable high(drive(f * on.lift_off));
+    const FeederRun hop = feeder_run(feeder_model(high, law, 1.0, 4000, true), 1.0, 3);
+    EXPECT_EQ(hop.lifted_off, f > 1) << f;
+  }
+  for (const double K : {1.5 * on.forward_slip, 1.3 * on.lift_off}) {
+    SCOPED_TRACE(K);
+    const FeederTable table(drive(K));
+    const double exact = feeder_run_exact(table, law, 1.0, 6).velocity;
+    std::vector<double> errors;
+    for (const long long n : {500LL, 5000LL, 50000LL, 500000LL}) {
+      const double v = feeder_run(feeder_model(table, law, 1.0, n, true), 1.0, 6).velocity;
+      if (print()) std::printf("K %.4f, %lld steps: Moreau %.10f exact %.10f error %.2e\n", K, n, v, exact, std::abs(v - exact));
+      EXPECT_LT(std::abs(v - exact), 5.0 / static_cast<double>(n)) << n;
+      errors.push_back(std::abs(v - exact));
+    }
+    EXPECT_LT(errors[3], errors[0] / 100);  // three decades: order >= 2/3
+  }
+}
+
 TEST(FeederExact, BadRestitutionIsRefusedByName) {
   const FeederTable table(drive_at_throw(2.0, 0.6, 0.0));
   for (const double e : {-0.1, 1.5, std::nan("")}) {

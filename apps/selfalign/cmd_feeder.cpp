@@ -27,6 +27,7 @@ using nlohmann::json;
 
 struct FeederFlags {
   double amplitude = 0, frequency = 0, vibration_angle = 0, incline = 0;
+  double harmonic_ratio = 0, harmonic_phase = 0;  // the second harmonic (two-frequency drive)
   double mu_static = 0, mu_kinetic = 0, g = 9.81;
   long long periods = 20, steps_per_period = 2000;
   std::string method = "exact";
@@ -49,6 +50,8 @@ std::vector<FeederConfigKey> feeder_keys(FeederFlags& f) {
           {"drive", "vibration_angle", "--vibration-angle", &f.vibration_angle},
           {"drive", "incline", "--incline", &f.incline},
           {"drive", "g", "--g", &f.g},
+          {"drive", "harmonic_ratio", "--harmonic-ratio", &f.harmonic_ratio},
+          {"drive", "harmonic_phase", "--harmonic-phase", &f.harmonic_phase},
           {"friction", "mu_static", "--mu-static", &f.mu_static, &f.mu_static_given},
           {"friction", "mu_kinetic", "--mu-kinetic", &f.mu_kinetic, &f.mu_kinetic_given},
           {"run", "method", "--method", &f.method},
@@ -90,6 +93,9 @@ void run_feeder(FeederFlags& f, const CLI::App& command) {
   require_feeder_flags(f.incline, f.mu_static, f.mu_kinetic, f.periods, 1000000,
                        f.steps_per_period, 10000000);
   require_positive_moderate("g", f.g);
+  if (!(f.harmonic_ratio >= 0 && f.harmonic_ratio <= 100))
+    throw InvalidParameter("harmonic-ratio", f.harmonic_ratio, "must be in [0, 100]");
+  require_finite("harmonic-phase", f.harmonic_phase);
   if (!(static_cast<double>(f.periods) * static_cast<double>(f.steps_per_period) <= 1e9))
     throw InvalidParameter("periods", static_cast<double>(f.periods),
                            "periods x steps-per-period must be at most 1e9");
@@ -106,7 +112,8 @@ void run_feeder(FeederFlags& f, const CLI::App& command) {
   }
   if (f.out) require_output_path("out", *f.out);
   // SI as the model's units: level g makes the friction bound mu (g cos theta + z'').
-  const FeederDrive drive{f.amplitude, 1.0 / f.frequency, f.vibration_angle, f.incline, f.g};
+  const FeederDrive drive{f.amplitude, 1.0 / f.frequency, f.vibration_angle, f.incline, f.g,
+                          f.harmonic_ratio, f.harmonic_phase};
   // Without flight the normal load must stay >= 0: |Gamma| <= 1 (docs/feeder.md, onsets).
   if (f.no_flight && std::abs(throw_number(drive)) > 1)
     throw InvalidParameter(
@@ -133,7 +140,7 @@ void run_feeder(FeederFlags& f, const CLI::App& command) {
                                           f.restitution),
                              drive.period, f.start, f.max_periods);
   }
-  const FeederOnsets onsets = feeder_onsets(f.vibration_angle, f.incline, f.mu_static);
+  const FeederOnsets onsets = feeder_onsets(drive, f.mu_static);
   const double w = 2 * std::numbers::pi * f.frequency;
   const double along = f.amplitude * w * std::cos(f.vibration_angle);  // a0 w cos(psi)
   json r;
@@ -142,7 +149,8 @@ void run_feeder(FeederFlags& f, const CLI::App& command) {
   r["drive"] = {{"amplitude_m", f.amplitude},         {"frequency_hz", f.frequency},
                 {"vibration_angle_rad", f.vibration_angle}, {"incline_rad", f.incline},
                 {"g_m_per_s2", f.g},                  {"mu_static", f.mu_static},
-                {"mu_kinetic", f.mu_kinetic}};
+                {"mu_kinetic", f.mu_kinetic},         {"harmonic_ratio", f.harmonic_ratio},
+                {"harmonic_phase_rad", f.harmonic_phase}};
   r["machine_number"] = machine_number(drive);
   r["throw_number"] = throw_number(drive);
   r["onsets"] = {{"forward_slip", onset_json(onsets.forward_slip, f.g, w)},
@@ -167,7 +175,7 @@ void run_feeder(FeederFlags& f, const CLI::App& command) {
                  {"flight", number_or_null(run.flight_fraction)},
                  {"slip", number_or_null(1 - run.stick_fraction - run.flight_fraction)}};
   if (stop) {
-    const FeederOnsets rough = feeder_onsets(f.vibration_angle, f.incline, f.c_mu * f.mu_static);
+    const FeederOnsets rough = feeder_onsets(drive, f.c_mu * f.mu_static);
     r["stop"] = {{"step_position_m", f.step_position},
                  {"c_mu", f.c_mu},
                  {"start_m", f.start},
@@ -242,6 +250,13 @@ void add_feeder_command(CLI::App& app) {
       ->group("Drive");
   add_friction_flags(*sub, f->mu_static, f->mu_kinetic, false);
   sub->add_option("--g", f->g, "gravity [m/s^2], > 0. Default: 9.81")->group("Drive");
+  sub->add_option("--harmonic-ratio", f->harmonic_ratio,
+                  "r: a second harmonic along the vibration line, a0 (sin w t + r sin(2 w t + "
+                  "phi2)), in [0, 100] (0: the classic sinusoid). Default: 0")
+      ->group("Drive");
+  sub->add_option("--harmonic-phase", f->harmonic_phase,
+                  "phi2, the second harmonic's phase [rad]. Default: 0")
+      ->group("Drive");
   sub->add_option("--periods", f->periods, "periods from rest, in [1, 1e6]. Default: 20")
       ->group("Solver");
   add_feeder_solver_flags(*sub, f->method, f->restitution);

@@ -26,37 +26,46 @@ paper's; any consistent units, e.g. SI with g = 9.81). Raises InvalidParameter n
 amplitude, period, vibration_angle (|psi| >= pi/2), incline (|theta| >= pi/2) or g.)doc");
   drive
       .def(py::init([](double amplitude, double period, double vibration_angle, double incline,
-                       double g) {
-             FeederDrive d{amplitude, period, vibration_angle, incline, g};
+                       double g, double harmonic_ratio, double harmonic_phase) {
+             FeederDrive d{amplitude,       period,        vibration_angle, incline, g,
+                           harmonic_ratio, harmonic_phase};
              validate(d);
              return d;
            }),
            py::arg("amplitude"), py::arg("period") = 1.0, py::arg("vibration_angle") = 0.0,
-           py::arg("incline") = 0.0, py::arg("g") = 1.0)
+           py::arg("incline") = 0.0, py::arg("g") = 1.0, py::arg("harmonic_ratio") = 0.0,
+           py::arg("harmonic_phase") = 0.0)
       .def_readonly("amplitude", &FeederDrive::amplitude, "a0 along the vibration line [-]")
       .def_readonly("period", &FeederDrive::period, "2 pi / w [-]")
       .def_readonly("vibration_angle", &FeederDrive::vibration_angle, "psi [rad]")
       .def_readonly("incline", &FeederDrive::incline, "theta [rad]")
       .def_readonly("g", &FeederDrive::g, "gravity in model units [-]")
+      .def_readonly("harmonic_ratio", &FeederDrive::harmonic_ratio,
+                    "r: the second harmonic's amplitude over a0 [-] (0: the classic sinusoid)")
+      .def_readonly("harmonic_phase", &FeederDrive::harmonic_phase, "phi2 [rad]")
       .def("__repr__", [](const FeederDrive& d) {
         return Repr("FeederDrive")("amplitude", d.amplitude)("period", d.period)(
-                   "vibration_angle", d.vibration_angle)("incline", d.incline)("g", d.g)
+                   "vibration_angle", d.vibration_angle)("incline", d.incline)("g", d.g)(
+                   "harmonic_ratio", d.harmonic_ratio)("harmonic_phase", d.harmonic_phase)
             .str();
       });
   def_record(
       drive,
-      [](double a, double p, double psi, double theta, double g) {
-        FeederDrive d{a, p, psi, theta, g};
+      [](double a, double p, double psi, double theta, double g, double r, double phase) {
+        FeederDrive d{a, p, psi, theta, g, r, phase};
         validate(d);
         return d;
       },
       field("amplitude", &FeederDrive::amplitude), field("period", &FeederDrive::period),
       field("vibration_angle", &FeederDrive::vibration_angle),
-      field("incline", &FeederDrive::incline), field("g", &FeederDrive::g));
+      field("incline", &FeederDrive::incline), field("g", &FeederDrive::g),
+      field("harmonic_ratio", &FeederDrive::harmonic_ratio),
+      field("harmonic_phase", &FeederDrive::harmonic_phase));
   m.def("machine_number", &machine_number, py::arg("drive"),
         "K = a0 w^2 / g: the drive's peak acceleration over g.");
   m.def("throw_number", &throw_number, py::arg("drive"),
-        "Gamma = K sin(psi) / cos(theta): the part lifts off where |Gamma| > 1.");
+        "Gamma = K S sin(psi) / cos(theta), S the shape's peak away from the track (1 for the "
+        "classic sinusoid): the part lifts off where |Gamma| > 1.");
 
   using O = FeederOnsets;
   py::class_<O> onsets(m, "FeederOnsets", R"doc(
@@ -71,12 +80,31 @@ The onsets as critical machine numbers K (feeder_onsets): +inf never, 0 not held
       });
   def_record(onsets, field("forward_slip", &O::forward_slip),
              field("backward_slip", &O::backward_slip), field("lift_off", &O::lift_off));
-  m.def("feeder_onsets", &feeder_onsets, py::arg("vibration_angle"), py::arg("incline"),
-        py::arg("static_friction"), R"doc(
+  m.def("feeder_onsets",
+        py::overload_cast<double, double, double>(&feeder_onsets), py::arg("vibration_angle"),
+        py::arg("incline"), py::arg("static_friction"), R"doc(
 The closed-form onsets (docs/feeder.md) of a part at rest on the track under the sinusoidal
 drive: the least machine number K at which it first slips forward, slips backward, or lifts
 off. static_friction: the absolute static coefficient mu_s (s m / g in model units). Returns
 FeederOnsets. Raises InvalidParameter naming vibration_angle, incline or static_friction.)doc");
+  m.def("feeder_onsets",
+        py::overload_cast<const FeederDrive&, double>(&feeder_onsets), py::arg("drive"),
+        py::arg("static_friction"), R"doc(
+The onsets of the drive's own shape (a two-frequency drive: each inequality first met at the
+shape's peak on its side, feeder_shape), as machine numbers K of its fundamental.)doc");
+  py::class_<FeederShape> shape(m, "FeederShape",
+                                "The drive's acceleration shape's peaks (feeder_shape).");
+  shape.def_readonly("peak_up", &FeederShape::peak_up, "max of s(phi) [-]")
+      .def_readonly("peak_down", &FeederShape::peak_down, "max of -s(phi) [-]")
+      .def("__repr__", [](const FeederShape& v) {
+        return Repr("FeederShape")("peak_up", v.peak_up)("peak_down", v.peak_down).str();
+      });
+  def_record(shape, field("peak_up", &FeederShape::peak_up),
+             field("peak_down", &FeederShape::peak_down));
+  m.def("feeder_shape", &feeder_shape, py::arg("drive"), R"doc(
+The drive's acceleration shape along the vibration line, s(phi) = sin(phi) + 4 r sin(2 phi +
+phi2) (the acceleration is -a0 w^2 s(w t)): its largest value and the largest of -s (both 1 for
+the classic sinusoid).)doc");
 
   bind_int_enum<FeederEvent>(m, "FeederEvent", "The first thing that happens to a part at rest on the track.",
                              {{"none", FeederEvent::none},

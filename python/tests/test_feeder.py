@@ -207,3 +207,23 @@ def test_python_m_selfalign_regimes_writes_the_clis_csv_and_a_png(tmp_path, caps
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "mu-kinetic" in err
     assert not (tmp_path / "bad.csv").exists()
+
+
+def test_a_two_frequency_drive_has_the_onsets_of_its_shape():
+    # r = 0.25, phi2 = pi/2: s = sin(phi) + cos(2 phi) peaks at 9/8 and dips to -2, by hand; the
+    # lift-off onset is cos(theta) / (sin(psi) 9/8). The exact run and the contact core agree.
+    drive = sa.FeederDrive(2.0 / (2 * math.pi) ** 2, 1.0, 0.4, 0.03, 1.0, harmonic_ratio=0.25,
+                           harmonic_phase=math.pi / 2)
+    shape = sa.feeder_shape(drive)
+    assert shape.peak_up == pytest.approx(1.125, abs=1e-12)
+    assert shape.peak_down == pytest.approx(2.0, abs=1e-12)
+    onsets = sa.feeder_onsets(drive, 0.5)
+    assert onsets.lift_off == pytest.approx(math.cos(0.03) / (math.sin(0.4) * 1.125), rel=1e-12)
+    assert sa.throw_number(drive) == pytest.approx(2.0 * math.sin(0.4) * 1.125 / math.cos(0.03))
+    law = sa.FrictionLaw(0.5, 0.4)
+    exact = sa.feeder_run(drive, law, periods=6)
+    stepped = sa.feeder_run(drive, law, periods=6, method="time-stepping", steps_per_period=50000)
+    assert stepped.velocity == pytest.approx(exact.velocity, abs=5.0 / 50000)
+    with pytest.raises(sa.InvalidParameter) as e:
+        sa.FeederDrive(1e-3, harmonic_ratio=-1.0)
+    assert e.value.name == "harmonic_ratio"

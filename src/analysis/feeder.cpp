@@ -35,6 +35,10 @@ void validate(const FeederDrive& d) {
   require_feeder_angle("vibration_angle", d.vibration_angle);
   require_feeder_angle("incline", d.incline);
   require_positive_moderate("g", d.g);
+  if (!(d.harmonic_ratio >= 0 && d.harmonic_ratio <= 100))
+    throw InvalidParameter("harmonic_ratio", d.harmonic_ratio, "must be in [0, 100]");
+  if (!std::isfinite(d.harmonic_phase))
+    throw InvalidParameter("harmonic_phase", d.harmonic_phase, "must be finite");
 }
 
 void require_feeder_track(double incline, double mu_static, double mu_kinetic, double g,
@@ -53,31 +57,81 @@ double machine_number(const FeederDrive& d) {
   return d.amplitude * w * w / d.g;
 }
 
-double throw_number(const FeederDrive& d) {
-  return machine_number(d) * std::sin(d.vibration_angle) / std::cos(d.incline);
+FeederShape feeder_shape(const FeederDrive& d) {
+  validate(d);
+  const double r = d.harmonic_ratio, p2 = d.harmonic_phase;
+  if (r == 0) return {};
+  const auto s = [&](double phi) { return std::sin(phi) + 4 * r * std::sin(2 * phi + p2); };
+  const auto ds = [&](double phi) { return std::cos(phi) + 8 * r * std::cos(2 * phi + p2); };
+  constexpr int kSamples = 4096;
+  const double step = 2 * std::numbers::pi / kSamples;
+  FeederShape out{-kInf, -kInf};
+  for (int i = 0; i < kSamples; ++i) {
+    double lo = i * step, hi = lo + step;
+    const double a = ds(lo), b = ds(hi);
+    if ((a > 0) == (b > 0)) continue;  // no extremum of s in this sample (s' keeps its sign)
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * (1 + hi); ++k) {
+      const double mid = 0.5 * (lo + hi);
+      ((ds(mid) > 0) == (a > 0) ? lo : hi) = mid;
+    }
+    const double v = s(0.5 * (lo + hi));
+    out.peak_up = std::max(out.peak_up, v), out.peak_down = std::max(out.peak_down, -v);
+  }
+  return out;
 }
 
-FeederOnsets feeder_onsets(double psi, double theta, double mu) {
+double throw_number(const FeederDrive& d) {
+  const FeederShape sh = feeder_shape(d);
+  const double sp = std::sin(d.vibration_angle);
+  return machine_number(d) * sp * (sp >= 0 ? sh.peak_up : sh.peak_down) / std::cos(d.incline);
+}
+
+namespace {
+
+// The onsets of a shape with peaks up (S+) and down (S-): K s c > rhs is first met where s c is
+// largest, K c S+ for c > 0 and K |c| S- for c < 0.
+FeederOnsets shaped_onsets(double psi, double theta, double mu, const FeederShape& sh) {
   require_feeder_angle("vibration_angle", psi);
   require_feeder_angle("incline", theta);
   require_positive("static_friction", mu);
-  // With a_x = -K g cos(psi) s, a_z = -K g sin(psi) s, s = sin(w t) in [-1, 1]:
+  // With a_x = -K g cos(psi) s, a_z = -K g sin(psi) s, s the shape (sin(w t) classically):
   //   forward:  K s (cos psi + mu sin psi) > sin theta + mu cos theta,
   //   backward: K s (mu sin psi - cos psi) > mu cos theta - sin theta,
-  //   lift-off: K s sin psi > cos theta;
-  // each first met at s = +-1, where |s| = 1.
+  //   lift-off: K s sin psi > cos theta.
   const double c = std::cos(psi), s = std::sin(psi), ct = std::cos(theta), st = std::sin(theta);
-  return {onset(st + mu * ct, c + mu * s), onset(mu * ct - st, mu * s - c), onset(ct, s)};
+  const auto peak = [&](double coefficient) {
+    return coefficient * (coefficient >= 0 ? sh.peak_up : sh.peak_down);
+  };
+  return {onset(st + mu * ct, peak(c + mu * s)), onset(mu * ct - st, peak(mu * s - c)),
+          onset(ct, peak(s))};
+}
+
+}  // namespace
+
+FeederOnsets feeder_onsets(const FeederDrive& d, double mu) {
+  return shaped_onsets(d.vibration_angle, d.incline, mu, feeder_shape(d));
+}
+
+FeederOnsets feeder_onsets(double psi, double theta, double mu) {
+  return shaped_onsets(psi, theta, mu, FeederShape{});
 }
 
 FeederTable::FeederTable(const FeederDrive& drive) : drive_(drive) {
   validate(drive);
   const double psi = drive.vibration_angle, a0 = drive.amplitude;
-  along_ = std::make_shared<FourierProfile>(drive.period, std::vector<double>{0.0},
-                                            std::vector<double>{a0 * std::cos(psi)});
-  if (std::sin(psi) != 0)
-    normal_ = std::make_shared<FourierProfile>(drive.period, std::vector<double>{0.0},
-                                               std::vector<double>{a0 * std::sin(psi)});
+  // a0 (sin w t + r sin(2 w t + phi2)) along the line: r sin(2 w t + phi2) = r cos(phi2)
+  // sin(2 w t) + r sin(phi2) cos(2 w t)
+  const double r = drive.harmonic_ratio;
+  const auto line = [&](double scale) {
+    if (r == 0)
+      return std::make_shared<FourierProfile>(drive.period, std::vector<double>{0.0},
+                                              std::vector<double>{scale});
+    return std::make_shared<FourierProfile>(
+        drive.period, std::vector<double>{0.0, scale * r * std::sin(drive.harmonic_phase)},
+        std::vector<double>{scale, scale * r * std::cos(drive.harmonic_phase)});
+  };
+  along_ = line(a0 * std::cos(psi));
+  if (std::sin(psi) != 0) normal_ = line(a0 * std::sin(psi));
   motion_.first = along_.get();
   motion_.normal = normal_.get();
   gravity_ = {drive.g, std::abs(drive.incline), drive.incline > 0 ? -1.0 : 1.0, 0.0};

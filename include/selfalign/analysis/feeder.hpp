@@ -33,18 +33,22 @@
 
 namespace selfalign {
 
-/// The sinusoidal feeder drive on an inclined track. Dimensionless as the model: accelerations
-/// in the model's unit (mu_1 g in the paper's, where g = 1 / mu_1).
+/// The feeder drive on an inclined track: along the vibration line the displacement
+/// a0 (sin w t + r sin(2 w t + phi2)), the classic sinusoid for r = 0 and a two-frequency drive
+/// (a second harmonic of ratio r and phase phi2) otherwise. Dimensionless as the model:
+/// accelerations in the model's unit (mu_1 g in the paper's, where g = 1 / mu_1).
 struct FeederDrive {
   double amplitude = 0.0;        ///< a0 along the vibration line [-], > 0
   double period = 1.0;           ///< 2 pi / w [-], > 0
   double vibration_angle = 0.0;  ///< psi [rad], in (-pi/2, pi/2)
   double incline = 0.0;          ///< theta [rad], in (-pi/2, pi/2); > 0: the track rises along +x
   double g = 1.0;                ///< gravity in model units [-], > 0
+  double harmonic_ratio = 0.0;   ///< r, the second harmonic's amplitude over a0 [-], in [0, 100]
+  double harmonic_phase = 0.0;   ///< phi2 [rad], finite
 };
 
 /// Throws InvalidParameter naming "amplitude", "period", "vibration_angle" (|psi| >= pi/2),
-/// "incline" (|theta| >= pi/2) or "g".
+/// "incline" (|theta| >= pi/2), "g", "harmonic_ratio" or "harmonic_phase".
 void validate(const FeederDrive& drive);
 
 /// Throws InvalidParameter naming `name` unless |angle| < pi/2 (a vibration angle or an
@@ -57,9 +61,22 @@ void require_feeder_angle(std::string_view name, double angle);
 void require_feeder_track(double incline, double mu_static, double mu_kinetic, double g,
                           double period);
 
-/// K = a0 w^2 / g [-]: the drive's peak acceleration over g.
+/// K = a0 w^2 / g [-]: the fundamental's peak acceleration over g (the drive's peak
+/// acceleration for the classic sinusoid).
 double machine_number(const FeederDrive& drive);
-/// Gamma = K sin(psi) / cos(theta) [-]: the part lifts off where |Gamma| > 1.
+
+/// The drive's acceleration shape along the vibration line, s(phi) = sin(phi) + 4 r sin(2 phi +
+/// phi2) (the acceleration is -a0 w^2 s(w t)): its largest value and the largest of -s over the
+/// period (both 1 for the classic sinusoid). Found on 4096 samples, each extremum then closed by
+/// bisection on s' = cos(phi) + 8 r cos(2 phi + phi2) (to the rounding of phi).
+struct FeederShape {
+  double peak_up = 1, peak_down = 1;
+};
+FeederShape feeder_shape(const FeederDrive& drive);
+
+/// Gamma [-]: the drive's peak acceleration away from the track's surface over g cos(theta),
+/// K S sin(psi) / cos(theta) with S the shape's peak on that side (K sin(psi) / cos(theta) for
+/// the classic sinusoid): the part lifts off where |Gamma| > 1.
 double throw_number(const FeederDrive& drive);
 
 /// The onsets as critical machine numbers K (docs/feeder.md): the least K at which a part at
@@ -74,6 +91,9 @@ struct FeederOnsets {
 /// units (s the law's static coefficient, m the friction level). Throws InvalidParameter
 /// naming "vibration_angle", "incline" or "static_friction".
 FeederOnsets feeder_onsets(double vibration_angle, double incline, double static_friction);
+/// The onsets of the drive's own shape (a two-frequency drive: each inequality is first met at
+/// the shape's peak on its side, FeederShape), as machine numbers K of its fundamental.
+FeederOnsets feeder_onsets(const FeederDrive& drive, double static_friction);
 
 /// The drive's table motion (it owns its profiles): along the track (e1 = x) a0 cos(psi)
 /// sin(w t), along its normal a0 sin(psi) sin(w t) (none at psi = 0), and gravity with the
