@@ -124,21 +124,13 @@ void run_feeder(FeederFlags& f, const CLI::App& command) {
             " m, or drop --no-flight");
   const FeederTable table(drive);
   const FrictionLaw law(f.mu_static, f.mu_kinetic);
-  const FeederRun run =
-      method == Method::exact
-          ? feeder_run_exact(table, law, f.g, f.periods, f.restitution, !f.no_flight)
-          : feeder_run(feeder_model(table, law, f.g, f.steps_per_period, !f.no_flight,
-                                    f.restitution),
-                       drive.period, f.periods);
+  const FeederSolver solver{method, f.steps_per_period, !f.no_flight, f.restitution};
+  const FeederRun run = feeder_run(table, law, f.g, f.periods, solver);
   // Stopping at the friction step: the level g before step-position, c_mu g from it on.
   std::optional<FeederStop> stop;
   if (f.stopping) {
     const FrictionField field = FrictionField::steps({f.step_position}, {f.g, f.c_mu * f.g});
-    stop = method == Method::exact
-               ? feeder_stop_exact(table, law, field, f.start, f.max_periods, f.restitution)
-               : feeder_stop(feeder_model(table, law, field, f.steps_per_period, !f.no_flight,
-                                          f.restitution),
-                             drive.period, f.start, f.max_periods);
+    stop = feeder_stop(table, law, field, f.start, f.max_periods, solver);
   }
   const FeederOnsets onsets = feeder_onsets(drive, f.mu_static);
   const double w = 2 * std::numbers::pi * f.frequency;

@@ -154,14 +154,8 @@ the classic sinusoid).)doc");
       [](const FeederDrive& drive, const FrictionLaw& law, double level,
          long long steps_per_period, long long periods, bool flight, Method method,
          double restitution) {
-        const FeederTable table(drive);
-        if (method == Method::exact)
-          return feeder_run_exact(table, law, level, periods, restitution, flight);
-        if (method != Method::time_stepping)
-          throw InvalidParameter("method", to_string(method), "must be exact or time-stepping");
-        return feeder_run(
-            feeder_model(table, law, level, steps_per_period, flight, restitution),
-            drive.period, periods);
+        return feeder_run(FeederTable(drive), law, level, periods,
+                          {method, steps_per_period, flight, restitution});
       },
       py::arg("drive"), py::arg("law") = FrictionLaw{}, py::kw_only(), py::arg("level") = 1.0,
       py::arg("steps_per_period") = 2000, py::arg("periods") = 20, py::arg("flight") = true,
@@ -206,15 +200,9 @@ argument. Runs without the GIL.)doc");
         require_finite("step_position", step_position);
         if (!(c_mu > 0 && c_mu <= 1e6)) throw InvalidParameter("c_mu", c_mu, "must be in (0, 1e6]");
         require_positive_moderate("level", level);
-        const FeederTable table(drive);
         const FrictionField field = FrictionField::steps({step_position}, {level, c_mu * level});
-        if (method == Method::exact)
-          return feeder_stop_exact(table, law, field, start, max_periods, restitution);
-        if (method != Method::time_stepping)
-          throw InvalidParameter("method", to_string(method), "must be exact or time-stepping");
-        return feeder_stop(
-            feeder_model(table, law, field, steps_per_period, flight, restitution), drive.period,
-            start, max_periods);
+        return feeder_stop(FeederTable(drive), law, field, start, max_periods,
+                           {method, steps_per_period, flight, restitution});
       },
       py::arg("drive"), py::arg("law") = FrictionLaw{}, py::kw_only(), py::arg("step_position"),
       py::arg("c_mu") = 2.5, py::arg("start") = 0.0, py::arg("max_periods") = 1000,

@@ -264,12 +264,29 @@ FeederRun feeder_run(const core::Model& model, double period, long long periods)
   return run;
 }
 
+namespace {
+
+// The exact solver's track for the table's drive (the stopping run adds its field).
+FeederTrack exact_track(const FeederTable& table, const FrictionLaw& law, double level,
+                        double restitution) {
+  const FeederDrive& d = table.drive();
+  FeederTrack track{table.motion().first, table.motion().normal, d.g, d.incline, level, law};
+  track.restitution = restitution;
+  return track;
+}
+
+void require_feeder_method(Method method) {
+  if (method != Method::exact && method != Method::time_stepping)
+    throw InvalidParameter("method", to_string(method), "must be exact or time-stepping");
+}
+
+}  // namespace
+
 FeederRun feeder_run_exact(const FeederTable& table, const FrictionLaw& law, double level,
                            long long periods, double restitution, bool flight) {
   if (periods < 1) throw InvalidParameter("periods", static_cast<double>(periods), "must be >= 1");
   const FeederDrive& d = table.drive();
-  FeederTrack track{table.motion().first, table.motion().normal, d.g, d.incline, level, law};
-  track.restitution = restitution;
+  const FeederTrack track = exact_track(table, law, level, restitution);
   validate(track);
   FeederRun run;
   FeederExactState state;
@@ -328,8 +345,7 @@ FeederStop feeder_stop_exact(const FeederTable& table, const FrictionLaw& law,
   if (!level.piecewise_affine())
     throw InvalidParameter("field", "ramps", "must be piecewise constant (steps)");
   const FeederDrive& d = table.drive();
-  FeederTrack track{table.motion().first, table.motion().normal, d.g, d.incline, d.g, law};
-  track.restitution = restitution;
+  FeederTrack track = exact_track(table, law, d.g, restitution);
   track.field = level.piecewise_affine();
   FeederExactState state;
   state.x = start;
@@ -402,6 +418,27 @@ FeederStop feeder_stop(const core::Model& model, double period, double start,
   return out;
 }
 
+FeederRun feeder_run(const FeederTable& table, const FrictionLaw& law, double level,
+                     long long periods, const FeederSolver& solver) {
+  require_feeder_method(solver.method);
+  if (solver.method == Method::exact)
+    return feeder_run_exact(table, law, level, periods, solver.restitution, solver.flight);
+  return feeder_run(feeder_model(table, law, level, solver.steps_per_period, solver.flight,
+                                 solver.restitution),
+                    table.drive().period, periods);
+}
+
+FeederStop feeder_stop(const FeederTable& table, const FrictionLaw& law,
+                       const FrictionField& field, double start, long long max_periods,
+                       const FeederSolver& solver) {
+  require_feeder_method(solver.method);
+  if (solver.method == Method::exact)
+    return feeder_stop_exact(table, law, field, start, max_periods, solver.restitution);
+  return feeder_stop(feeder_model(table, law, field, solver.steps_per_period, solver.flight,
+                                  solver.restitution),
+                     table.drive().period, start, max_periods);
+}
+
 const char* feeder_regime_name(FeederRegime regime) noexcept {
   switch (regime) {
     case FeederRegime::stick: return "stick";
@@ -437,8 +474,7 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
                            "the chart must have at most 1e8 cells");
   if (!(o.restitution >= 0 && o.restitution <= 1))
     throw InvalidParameter("restitution", o.restitution, "must be in [0, 1]");
-  if (o.method != Method::exact && o.method != Method::time_stepping)
-    throw InvalidParameter("method", to_string(o.method), "must be exact or time-stepping");
+  require_feeder_method(o.method);
   // One run's model, checked once (steps_per_period names itself).
   const FrictionLaw law(o.mu_static, o.mu_kinetic);
   const double w = 2 * std::numbers::pi / o.period;
@@ -472,11 +508,8 @@ std::vector<FeederChartCell> feeder_regime_chart(const std::vector<double>& angl
           return;
         }
         const FeederTable table({a0, o.period, c.vibration_angle, o.incline, o.g});
-        c.run = o.method == Method::exact
-                    ? feeder_run_exact(table, law, o.g, o.periods, o.restitution, o.flight)
-                    : feeder_run(feeder_model(table, law, o.g, o.steps_per_period, o.flight,
-                                              o.restitution),
-                                 o.period, o.periods);
+        c.run = feeder_run(table, law, o.g, o.periods,
+                           {o.method, o.steps_per_period, o.flight, o.restitution});
         c.dimensionless_speed = c.run.velocity / (a0 * w * std::cos(c.vibration_angle));
       },
       [&](std::size_t i, const std::string& why) {

@@ -50,15 +50,6 @@ struct FeederConstants {
     if (sigma < 0 && i > 0 && x == pieces[i].begin) --i;
     return {pieces[i].bound_at_begin, sigma > 0 ? pieces[i].end : pieces[i].begin};
   }
-  // The largest kinetic friction per unit load anywhere (a bound for the scan of x).
-  double kinetic_bound_per_load() const {
-    double m = level;
-    if (field) {
-      m = 0;
-      for (const AffinePiece& p : field->pieces()) m = std::max(m, p.bound_at_begin);
-    }
-    return std::max(law->kinetic(1), law->kinetic(-1)) * m * inv_g;
-  }
 };
 
 // The landing at time t and place x (w < 0 the rate of approach, n the normal load there): Newton's

@@ -137,6 +137,9 @@ struct Solver {
       return x0 + u0 * tau_ - taylor_gap(dx, dx0, tau_) - 0.5 * c.gs * tau_ * tau_ -
              cc * (0.5 * c.gc * tau_ * tau_ + taylor_gap(dz, dz0, tau_));
     };
+    const auto velocity = [&](double tau_, const D4& dx, const D4& dz) {
+      return u0 - (dx[1] - dx0[1]) - c.gs * tau_ - cc * (c.gc * tau_ + dz[1] - dz0[1]);
+    };
     double ahead = bounded ? sigma * (piece.boundary - x0) : kInf;
     for (long long i = 0;; ++i) {
       if (i == kMaxFeederSteps) exceed_feeder_budget(t0 + tau);
@@ -159,7 +162,7 @@ struct Solver {
       }
       tau += step;
       dx = T.x(t0 + tau), dz = T.z(t0 + tau);
-      g = sigma * (u0 - (dx[1] - dx0[1]) - c.gs * tau - cc * (c.gc * tau + dz[1] - dz0[1]));
+      g = sigma * velocity(tau, dx, dz);
       if (bounded) ahead = sigma * (piece.boundary - place(tau, dx, dz));
       if (bounded && !(ahead > 0)) {  // rounding put the point at the boundary
         end = boundary;
@@ -184,14 +187,12 @@ struct Solver {
         }
         tau += 1024 * time_resolution(now);  // a touch, not a crossing: step past it
         dx = T.x(t0 + tau), dz = T.z(t0 + tau);
-        g = sigma * (u0 - (dx[1] - dx0[1]) - c.gs * tau - cc * (c.gc * tau + dz[1] - dz0[1]));
+        g = sigma * velocity(tau, dx, dz);
       }
     }
     t = t0 + tau;
     x = end == boundary ? piece.boundary : place(tau, dx, dz);
-    u = end == velocity_zero ? 0.0
-                             : u0 - (dx[1] - dx0[1]) - c.gs * tau -
-                                   cc * (c.gc * tau + dz[1] - dz0[1]);
+    u = end == velocity_zero ? 0.0 : velocity(tau, dx, dz);
     record_census(stats, FeederMode::slip, tau, t);
     mode = FeederMode::slip;
     if (end == lift_off) {
@@ -274,7 +275,7 @@ void advance_feeder_smooth(const FeederTrack& k, FeederExactState& st, double t_
       s.flight(t_end);
       continue;
     }
-    const D4 dz = T.z(s.t), dx = T.x(s.t);
+    const D4 dz = T.z(s.t);
     const double n = c.gc + dz[2];
     if (n < 0 || (n == 0 && dz[3] < 0)) {  // the track falls away faster than gravity
       s.mode = FeederMode::flight;
@@ -290,7 +291,7 @@ void advance_feeder_smooth(const FeederTrack& k, FeederExactState& st, double t_
       s.breaking = 0;
       record_slip_start(stats, s.t, sigma);
     } else {
-      const double f = dx[2] + c.gs;
+      const double f = T.x(s.t)[2] + c.gs;
       if (std::abs(f) <= c.static_bound(n, c.level_at(s.x))) {
         s.stick(t_end);
         continue;

@@ -193,6 +193,26 @@ core::Model feeder_model(const FeederTable& table, const FrictionLaw& law,
                          const FrictionField& field, long long steps_per_period,
                          bool flight = true, double restitution = 0);
 
+/// How a feeder run is solved: Method::exact (the exact feeder solver) or
+/// Method::time_stepping (the contact core: Moreau, Moreau-Jean flight, `steps_per_period`);
+/// `flight` false: a run stops at a lift-off (the exact stopping run always flies); landings
+/// with Newton's `restitution`.
+struct FeederSolver {
+  Method method = Method::exact;
+  long long steps_per_period = 2000;
+  bool flight = true;
+  double restitution = 0;
+};
+
+/// feeder_run_exact or feeder_run on feeder_model, as `solver` says (InvalidParameter naming
+/// "method" for any other method).
+FeederRun feeder_run(const FeederTable& table, const FrictionLaw& law, double level,
+                     long long periods, const FeederSolver& solver);
+/// feeder_stop_exact or feeder_stop on feeder_model with the field, as `solver` says.
+FeederStop feeder_stop(const FeederTable& table, const FrictionLaw& law,
+                       const FrictionField& field, double start, long long max_periods,
+                       const FeederSolver& solver);
+
 /// The regime the closed-form onsets give at machine number K (docs/feeder.md): stick (below
 /// both slips), forward (the forward slip only), backward, both (slips both ways each period),
 /// hopping (at or above the lift-off: flights, whatever else happens).
