@@ -547,6 +547,7 @@ class ArcEnd(enum.IntEnum):
     horizon = 3
     stick_break = 4
     time_step = 5
+    part_contact = 6
 
 class ExactState:
     object: ObjectState

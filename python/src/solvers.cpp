@@ -119,13 +119,15 @@ What ended an arc (an enum.IntEnum).
   friction_boundary   = 2  x reached the end of a friction piece (e.g. x_mu or x_mu + w)
   horizon             = 3  the requested end time
   stick_break         = 4  |y''| reached the static bound s m(x) inside a segment (finite jerk)
-  time_step           = 5  one step of Moreau's time-stepping scheme ended)doc",
+  time_step           = 5  one step of Moreau's time-stepping scheme ended
+  part_contact        = 6  two parts of a row collided (the exact row solver))doc",
                         {{"acceleration_switch", ArcEnd::acceleration_switch},
                          {"velocity_zero", ArcEnd::velocity_zero},
                          {"friction_boundary", ArcEnd::friction_boundary},
                          {"horizon", ArcEnd::horizon},
                          {"stick_break", ArcEnd::stick_break},
-                         {"time_step", ArcEnd::time_step}});
+                         {"time_step", ArcEnd::time_step},
+                         {"part_contact", ArcEnd::part_contact}});
 
   py::class_<ExactState> state(m, "ExactState",
                                "Mutable state of the exact solver: the object state plus where "

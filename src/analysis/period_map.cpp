@@ -137,6 +137,7 @@ Eigen::Matrix2d saltation(const Arc& a, const Arc& next, const FrictionLaw& law)
     case ArcEnd::acceleration_switch:
     case ArcEnd::horizon:
     case ArcEnd::time_step:  // (time steps have no arcs)
+    case ArcEnd::part_contact:  // (rows have no arcs)
       break;
   }
   return s;

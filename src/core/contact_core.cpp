@@ -6,7 +6,7 @@
 #include <variant>
 
 #include "../planar/rigid_body_step.hpp"
-#include "../simulate/moreau_slider_step.hpp"
+#include "row_stage.hpp"
 #include "selfalign/core/model.hpp"
 #include "selfalign/core/state.hpp"
 #include "selfalign/core/step.hpp"
@@ -16,38 +16,6 @@
 namespace selfalign::core {
 
 namespace {
-
-// A 1-D part's stages: its level at the step's midpoint (contacts, loads), the 1-D Moreau
-// projection with the table's velocity increment along e1 (impulse), the theta update
-// (integrate): detail::moreau_slider_step, the 1-D stepper's own step. The step as the 1-D
-// stepper's piece (t0 = t1 - h, as that stepper forms it) goes to the observer, if any.
-// Gravity's impulse along the incline enters along e1 only (the part is guided along e1).
-void slider_step(const Model& model, const SliderBody& b, double h, double th,
-                 const PlanarTablePose& tb, const PlanarTablePose& tb1,
-                 const detail::StepLoads& loads, double t1, int index, BodyState& st,
-                 MotionObserver* observer) {
-  const PlanarTableMotion& motion = model.motion;
-  const double yd = motion.e1_x * tb.vx + motion.e1_y * tb.vy;
-  const double yd1 = motion.e1_x * tb1.vx + motion.e1_y * tb1.vy;
-  const double x = st.pose.x, v = st.twist.ux;
-  const double m = slider_level(model, b, x + 0.5 * h * v);
-  const detail::SliderCoefficients c(b.law);
-  double v_free = v - (yd1 - yd);
-  if (loads.pulled) v_free += motion.e1_x * loads.gx + motion.e1_y * loads.gy;
-  double x1;
-  const double v1 =
-      b.law.velocity_dependent()
-          ? detail::moreau_slider_step<true>(b.law, c, h, th, m, x, v, v_free, x1, loads.load)
-          : detail::moreau_slider_step<false>(b.law, c, h, th, m, x, v, v_free, x1, loads.load);
-  st.pose.x = x1;
-  st.twist.ux = v1;
-  st.mode = v1 == 0 ? PatchMode::stick : PatchMode::slip;
-  if (observer) {
-    const auto direction = static_cast<std::int8_t>(v1 > 0 ? 1 : v1 < 0 ? -1 : 0);
-    observer->on_motion({t1 - h, t1, x, v, x1, v1, direction, ArcEnd::time_step, index},
-                        nullptr);
-  }
-}
 
 // Moreau-Jean's normal stage of one body (Gravity::flight, core/model.hpp): the free normal
 // velocity relative to the table w - h g cos(incline) - Δz' (`weight` = h g cos(incline),
@@ -131,6 +99,10 @@ void validate(const Model& m) {
                                       "a 1-D part's uniform footprint averages a uniform or "
                                       "axis field (give it a point footprint on this field)");
                               }
+                              if (!(b.mass > 0 && b.mass <= 1e50))
+                                throw InvalidParameter("mass", b.mass, "must be in (0, 1e50]");
+                              if (!(b.length >= 0 && b.length <= 1e50))
+                                throw InvalidParameter("length", b.length, "must be in [0, 1e50]");
                               if (m.motion.rotation)
                                 throw InvalidParameter("motion", "turning",
                                                        "a 1-D part needs a table that does not "
@@ -141,6 +113,7 @@ void validate(const Model& m) {
       throw InvalidParameter(name + "." + e.name(), e.value(), e.allowed());
     }
   }
+  detail::validate_part_contacts(m);
 }
 
 State make_state(const Model& model, double t, std::span<const PlanarPose> poses,
@@ -178,6 +151,7 @@ State make_state(const Model& model, double t, std::span<const PlanarPose> poses
       b.mode = b.twist.ux == 0 ? PatchMode::stick : PatchMode::slip;
     }
   }
+  detail::prepare_row(model, s);
   return s;
 }
 
@@ -202,6 +176,8 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
     loads.pulled = true;
   }
   const bool flight = model.gravity && model.gravity->flight;  // Moreau-Jean's normal stage
+  const bool rows = !model.part_contacts.empty();
+  if (rows) s.row.loads.resize(n);
   long long taken = 0;
   for (; taken < steps && s.status == StepStatus::ok; ++taken) {
     // kinematics, once for every body
@@ -218,21 +194,35 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
       }
     }
     // the body stages, block by block
-    for (std::size_t i = 0; i < n; ++i) {
-      // Moreau-Jean's unilateral normal contact (Gravity::flight): this body's normal impulse
-      const detail::StepLoads body_loads =
-          flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
-                                  model.gravity->restitution, loads, s.bodies[i])
-                 : loads;
-      std::visit(Overloaded{[&](const RigidBody& b) {
-                              detail::rigid_body_step(model.field, b.law, b.part, h, th, s.table,
-                                                      tb1, body_loads, s.bodies[i], s.contacts[i]);
-                            },
-                            [&](const SliderBody& b) {
-                              slider_step(model, b, h, th, s.table, tb1, body_loads, t1,
-                                          static_cast<int>(i), s.bodies[i], observer);
-                            }},
-                 model.bodies[i]);
+    if (rows) {  // touching 1-D parts: the row stage (src/core/row_stage.hpp) steps the sliders
+      for (std::size_t i = 0; i < n; ++i) {
+        s.row.loads[i] = flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
+                                                 model.gravity->restitution, loads, s.bodies[i])
+                                : loads;
+        if (const auto* b = std::get_if<RigidBody>(&model.bodies[i]))
+          detail::rigid_body_step(model.field, b->law, b->part, h, th, s.table, tb1,
+                                  s.row.loads[i], s.bodies[i], s.contacts[i]);
+      }
+      detail::row_step(model, s, t1, s.table, tb1, s.row.loads.data(), observer);
+    } else {
+      for (std::size_t i = 0; i < n; ++i) {
+        // Moreau-Jean's unilateral normal contact (Gravity::flight): this body's normal impulse
+        const detail::StepLoads body_loads =
+            flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
+                                    model.gravity->restitution, loads, s.bodies[i])
+                   : loads;
+        std::visit(Overloaded{[&](const RigidBody& b) {
+                                detail::rigid_body_step(model.field, b.law, b.part, h, th,
+                                                        s.table, tb1, body_loads, s.bodies[i],
+                                                        s.contacts[i]);
+                              },
+                              [&](const SliderBody& b) {
+                                detail::slider_step(model, b, h, th, s.table, tb1, body_loads,
+                                                    t1, static_cast<int>(i), s.bodies[i],
+                                                    observer);
+                              }},
+                   model.bodies[i]);
+      }
     }
     // checks: the table's motion (a profile that returns NaN), then each body
     if (!(std::isfinite(tb1.x) && std::isfinite(tb1.y) && std::isfinite(tb1.angle) &&

@@ -17,20 +17,14 @@
 
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/planar/patch_impulse.hpp"
+#include "selfalign/core/step_loads.hpp"
 #include "selfalign/planar/planar_field.hpp"
 #include "selfalign/planar/planar_rigid.hpp"
 
 namespace selfalign::detail {
 
-// The loads stage's result for one step, the same for every body (core::Gravity): the normal
-// impulse per unit weight (h: the paper's constant normal load), and gravity's impulse per
-// unit mass in the table's plane, world axes (applied only when `pulled`: the paper's model
-// adds nothing, not even a zero).
-struct StepLoads {
-  double load = 0;
-  double gx = 0, gy = 0;
-  bool pulled = false;
-};
+// The loads stage's result for one step (core/step_loads.hpp).
+using StepLoads = core::StepLoads;
 
 // BodyState has pose, twist, mode, pivot, sweeps, newton_steps and solver as PlanarRigidState.
 // `tb` is the table at t_k, `tb1` at t_{k+1}; `contacts` a workspace of patch.size() entries.

@@ -7,8 +7,8 @@
 /// pair with the table; the table's planar motion (planar_table_motion.hpp) and friction field
 /// (planar_field.hpp), its normal motion with gravity and the incline (Gravity); the time step.
 /// The number of bodies is a runtime value. Flight after a lift-off is Gravity::flight's
-/// (Moreau-Jean); otherwise the step reports lift_off and stops. What is not here yet:
-/// part-part contacts (the several-parts issue).
+/// (Moreau-Jean); otherwise the step reports lift_off and stops. Part-part contacts: between
+/// 1-D parts of a row (PartContact, issue 24; docs/rows.md); not yet between planar parts.
 
 #include <optional>
 #include <variant>
@@ -39,9 +39,13 @@ struct RigidBody {
 /// point x e1 for the other fields, which take a point footprint only. Its step is the 1-D
 /// Moreau step (time_stepping.hpp), the one function the 1-D stepper runs, with the table's
 /// velocity along e1. Needs a table that does not turn.
+/// In a row (Model::part_contacts) the part is the segment [x - length, x] along e1 with mass
+/// `mass` (a lone part's motion does not depend on either: friction scales with the weight).
 struct SliderBody {
   Footprint footprint = PointFootprint{};  ///< along e1 (friction_field.hpp)
   FrictionLaw law{};
+  double mass = 1;    ///< m / m_ref [-], in (0, 1e50]: the ratio between touching parts' masses
+  double length = 0;  ///< the part's length along e1 [-] behind its leading edge x (a row: > 0)
 };
 
 /// One body on the table (a closed set: each kind's stages are one visitor's alternatives).
@@ -78,6 +82,18 @@ struct Gravity {
   double restitution = 0;
 };
 
+/// A unilateral contact between two 1-D parts of a row (issue 24, docs/rows.md): `rear` and
+/// `front` index Model::bodies (both SliderBody); the gap (x_front - length_front) - x_rear
+/// stays >= 0 (the parts cannot pass each other). Moreau's step treats the contact as active
+/// where the gap at the step's midpoint is <= 0 and asks the relative velocity at t_{k+1} for
+/// at least -e times the incoming one (Newton's restitution e; 0: plastic, the parts push on
+/// together). The touching parts of a row are one chain problem per step
+/// (core/chain_problem.hpp): Coulomb friction with exact stick at each part-table contact.
+struct PartContact {
+  int rear = 0, front = 1;
+  double restitution = 0;  ///< e in [0, 1]
+};
+
 struct Model {
   PlanarTableMotion motion;                 ///< borrowed profiles: they must outlive the model
   PlanarField field = UniformPlanarField{};
@@ -86,13 +102,20 @@ struct Model {
   /// Gravity, incline and the normal load (empty: the paper's model, a constant normal load;
   /// a motion with a normal profile needs it).
   std::optional<Gravity> gravity{};
+  /// Contacts between 1-D parts (rows). Each body is the rear of at most one contact and the
+  /// front of at most one, the contacts form chains (no cycle), and the parts of a contact
+  /// have a length > 0 and a velocity-independent law. Empty: the bodies never touch.
+  std::vector<PartContact> part_contacts{};
 };
 
 /// Throws InvalidParameter naming the first invalid part ("gravity.g", "gravity.incline",
 /// "gravity.downhill" (not a unit vector), "motion.normal" without gravity; "bodies" when there are none;
 /// "bodies[i].inertia", "bodies[i].law" for body i; for a slider "bodies[i].footprint" (a width
 /// outside [1e-50, 1e50], or a uniform footprint on a field other than uniform or axis) and
-/// "bodies[i].motion" (a table that turns)).
+/// "bodies[i].motion" (a table that turns), "bodies[i].mass", "bodies[i].length" (not > 0 in
+/// a row), "bodies[i].law" (velocity-dependent in a row); "part_contacts[j]" (an index out of
+/// range, a body that is not a 1-D part, a body in two contacts on one side, a cycle) and
+/// "part_contacts[j].restitution").
 void validate(const Model& model);
 
 /// The level m(x) of slider `body` of `model` at x along e1 (SliderBody: the field along e1,

@@ -8,7 +8,9 @@
 #include <span>
 #include <vector>
 
+#include "selfalign/core/chain_problem.hpp"
 #include "selfalign/core/model.hpp"
+#include "selfalign/core/step_loads.hpp"
 #include "selfalign/planar/patch_impulse.hpp"
 #include "selfalign/planar/planar_table_motion.hpp"
 #include "selfalign/planar/rigid_part.hpp"
@@ -33,6 +35,20 @@ struct BodyState {
   double height = 0, normal_velocity = 0;
 };
 
+/// The row stage's workspace (Model::part_contacts; no allocation per step once sized): per
+/// body its position and velocity at the step's start, per chain its parts.
+struct RowWork {
+  std::vector<double> x0, v0;             ///< per body
+  std::vector<StepLoads> loads;  ///< per body: its step's loads
+  std::vector<signed char> chained;       ///< per body: in a chain this step
+  std::vector<int> behind, ahead;         ///< per body: the contact behind / ahead of it (-1)
+  std::vector<int> bodies;                ///< one chain's bodies, rear to front
+  std::vector<ChainPart> parts;
+  std::vector<ChainFriction> chain_friction;
+  std::vector<double> c, v;
+  ChainWorkspace chain;
+};
+
 struct State {
   double t0 = 0, t = 0;          ///< step times are t0 + k h
   long long step_index = 0;
@@ -41,10 +57,13 @@ struct State {
   StepStatus status = StepStatus::ok;
   int failed_body = -1;          ///< the body that left the finite numbers (non_finite; -1: the table)
   std::vector<std::vector<PatchContact>> contacts;  ///< workspace, one per body (no allocation per step)
+  RowWork row;                   ///< workspace of the row stage (part contacts)
 };
 
 /// The state at time t with body i at poses[i] on the table and twists[i] relative to it
-/// (sizes: the model's body count, else InvalidParameter naming "poses" or "twists").
+/// (sizes: the model's body count, else InvalidParameter naming "poses" or "twists"). Parts of a
+/// row must not overlap: InvalidParameter naming "poses[i]" (i the front part of the contact)
+/// where (x_front - length_front) - x_rear < 0.
 State make_state(const Model& model, double t, std::span<const PlanarPose> poses,
                  std::span<const PlanarTwist> twists);
 

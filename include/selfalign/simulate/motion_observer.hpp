@@ -38,7 +38,8 @@ enum class ArcEnd : std::uint8_t {
   friction_boundary,    ///< x reached the end of a friction piece (e.g. x_mu or x_mu + w)
   horizon,              ///< the requested end time
   stick_break,          ///< |y''| reached the static bound s m(x) inside a segment (finite jerk)
-  time_step             ///< one step of Moreau's time-stepping scheme ended
+  time_step,            ///< one step of Moreau's time-stepping scheme ended
+  part_contact          ///< two parts of a row collided (the exact row solver)
 };
 
 /// One piece of the motion: a stick, or a slip in one direction, from t0 to t1.
