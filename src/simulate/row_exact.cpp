@@ -309,7 +309,7 @@ std::size_t advance_row_exact(const core::Model& model, RowExactState& s, double
       const double dv = s.v[f] - s.v[b], da = s.a[f] - s.a[b];
       double root;
       if (g0 <= 0 && (dv < 0 || (dv == 0 && da < 0))) root = 0;
-      else root = first_root(0.5 * da, dv, g0, [&](double tt) { return dv + da * tt <= 0; });
+      else root = first_root(0.5 * da, dv, g0, [&](double tt) { return dv + da * tt < 0; });
       if (root < tau) {
         tau = root;
         end = ArcEnd::part_contact;
