@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "planar_profiles.hpp"
+#include "selfalign/analysis/row.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/error.hpp"
 #include "selfalign/friction/friction_field.hpp"
@@ -266,3 +267,89 @@ TEST(RowsExact, BadInputNamesThePart) {
 
 }  // namespace rows_test
 }  // namespace selfalign
+
+// --- analyses: conveying and stopping queues (analysis/row.hpp) -----------------------------
+
+namespace selfalign::rows_analysis_test {
+
+using testing_support::kPaper;
+
+RowQueue identical_queue(int n, double length, double pitch, const FrictionLaw& law) {
+  RowQueue q;
+  for (int i = 0; i < n; ++i) q.parts.push_back({length, 1.0, law, i * pitch, 0.0});
+  return q;
+}
+
+TEST(RowAnalysis, ATouchingQueueOfIdenticalPartsConveysAsOnePart) {
+  // docs/rows.md section 4: identical touching parts never separate; the queue moves as the
+  // lone part, whose mean velocity over period 10 the 1-D exact solver gives. Throughput at
+  // pitch L: v T / L parts per period.
+  const FrictionLaw law(1.2, 1.0);
+  const RowQueue q = identical_queue(4, 0.25, 0.25, law);
+  const RowRun run = row_run(kPaper, q, nullptr, 10, {Method::exact, 0}, 4);
+  const UniformFriction uniform(1.0);
+  const ExactSetup setup{*kPaper.piecewise_polynomial(), *uniform.piecewise_affine(), law};
+  ExactState s = make_exact_state(setup, {0.0, 0.0, 0.0});
+  advance_exact(setup, s, 9.0);
+  const double x9 = s.object.x;
+  advance_exact(setup, s, 10.0);
+  const double v_bar = s.object.x - x9;
+  EXPECT_GT(v_bar, 0.01);
+  EXPECT_NEAR(run.queue_velocity, v_bar, 1e-12);
+  ASSERT_EQ(run.clusters, std::vector<int>({4}));
+  EXPECT_EQ(run.pitch, 0.25);
+  EXPECT_NEAR(run.throughput_per_period, v_bar / 0.25, 1e-11);
+  EXPECT_EQ(run.positions.size(), 41u);
+  // Moreau at 20 000 steps per period: the same velocity to O(h)
+  const RowRun moreau = row_run(kPaper, q, nullptr, 10, {Method::time_stepping, 20000}, 4);
+  EXPECT_NEAR(moreau.queue_velocity, v_bar, 2e-4);
+  EXPECT_EQ(moreau.clusters, std::vector<int>({4}));
+}
+
+TEST(RowAnalysis, OnePartStopsWhereTheOneDimensionalExactSolverStops) {
+  const FrictionLaw law(1.2, 1.0);
+  const FrictionField field = FrictionField::steps({0.5}, {1.0, 2.5});
+  const RowQueue q = identical_queue(1, 0.3, 0.3, law);
+  const RowStop stop = row_stop(kPaper, q, field, 200, {Method::exact, 0}, 2);
+  ASSERT_TRUE(stop.stopped);
+  const FieldFriction map(field, PointFootprint{});
+  const ExactSetup setup{*kPaper.piecewise_polynomial(), *map.piecewise_affine(), law};
+  ExactState s = make_exact_state(setup, {0.0, 0.0, 0.0});
+  advance_exact(setup, s, static_cast<double>(stop.periods) + 5);
+  EXPECT_NEAR(stop.x[0], s.object.x, 1e-12);
+  EXPECT_NEAR(stop.error[0], s.object.x - 0.5, 1e-12);
+  EXPECT_GT(stop.process_time[0], 0);
+  EXPECT_LE(stop.stop_time, static_cast<double>(stop.periods));
+}
+
+TEST(RowAnalysis, AQueueStopsAtTheStepAndTheMethodsAgree) {
+  // Three parts with gaps reach a step to level 4: the rear one (static 1.1, kinetic 0.8)
+  // conveys faster and catches up; a cluster with only its front part on the rough side has
+  // the pooled static bound (1.1 + 1.2 + 4.8)/3 = 2.37 < 3 = the table's push (docs/rows.md
+  // section 4), so the queue pushes the front part on until two parts are on the rough side
+  // ((1.1 + 4.8 + 4.8)/3 = 3.57 > 3): it stops packed, the middle part's leading edge just
+  // past the step. The exact row and Moreau (20 000 steps per period: O(h) = 5e-5 per
+  // collision and stop) agree to 2e-3.
+  const FrictionLaw law(1.2, 1.0);
+  const FrictionField field = FrictionField::steps({1.5}, {1.0, 4.0});
+  RowQueue q = identical_queue(3, 0.25, 0.375, law);
+  q.parts[0].law = FrictionLaw(1.1, 0.8);  // the rear part conveys faster: it catches up
+  const RowStop exact = row_stop(kPaper, q, field, 400, {Method::exact, 0}, 2);
+  const RowStop moreau = row_stop(kPaper, q, field, 400, {Method::time_stepping, 20000}, 2);
+  ASSERT_TRUE(exact.stopped);
+  ASSERT_TRUE(moreau.stopped);
+  EXPECT_GT(exact.collisions, 0);
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(exact.x[i], moreau.x[i], 2e-3) << i;
+  ASSERT_EQ(exact.gaps.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) EXPECT_NEAR(exact.gaps[i], moreau.gaps[i], 2e-3) << i;
+  EXPECT_TRUE(exact.accumulated);
+  EXPECT_GT(exact.x[1], 1.5);  // two parts on the rough side
+  EXPECT_LT(exact.x[0], 1.5);
+  EXPECT_NEAR(exact.error[2], exact.x[2] - 1.5, 1e-15);
+  EXPECT_NEAR(exact.error[1], exact.x[1] - 1.25, 1e-15);
+  std::cout << "queue end x " << exact.x[0] << " " << exact.x[1] << " " << exact.x[2]
+            << " gaps " << exact.gaps[0] << " " << exact.gaps[1] << " accumulated "
+            << exact.accumulated << " periods " << exact.periods << "\n";
+}
+
+}  // namespace selfalign::rows_analysis_test
