@@ -11,6 +11,7 @@
 #include "selfalign/special_values.hpp"
 #include "report.hpp"
 #include "selfalign/analysis/positioning.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "stopping_common.hpp"
 
 namespace selfalign::cli {

@@ -43,6 +43,8 @@ void add_feeder_command(CLI::App& app);
 void add_regimes_command(CLI::App& app);
 /// `selfalign feeder-design`: the least feeder drive for a target speed (cmd_feeder_design.cpp).
 void add_feeder_design_command(CLI::App& app);
+/// `selfalign parts simulate|stop`: a queue of 1-D parts, [[parts]] config (cmd_parts.cpp).
+void add_parts_command(CLI::App& app);
 /// `selfalign parameters`: the model's named parameter view, --set NAME=VALUE (cmd_parameters.cpp).
 void add_parameters_command(CLI::App& app);
 /// Hidden `selfalign completion bash|zsh` and `selfalign man`: completion scripts and a man
