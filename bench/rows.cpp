@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "../tests/planar_profiles.hpp"
+#include "selfalign/analysis/row.hpp"
 #include "selfalign/core/step.hpp"
 #include "selfalign/simulate/row_exact.hpp"
 
@@ -42,25 +43,16 @@ namespace {
 using namespace selfalign;
 using testing_support::kPaper;  // the paper's Sect. 7.2 three-phase profile, period 1
 
-// ---- helpers of tests/test_rows.cpp ---------------------------------------------------------
+// ---- the queue's model: the library's row_model (analysis/row.hpp) ------------------------
 
-core::SliderBody part(double length, FrictionLaw law = {}, double mass = 1) {
-  core::SliderBody b;
-  b.law = law;
-  b.mass = mass;
-  b.length = length;
-  return b;
-}
+constexpr double kLength = 0.3;
 
-core::Model row_model(std::vector<core::SliderBody> parts, double h, double e = 0,
-                      PlanarField field = UniformPlanarField{}) {
-  PlanarTableMotion motion;
-  motion.first = &kPaper;
-  core::Model m{motion, std::move(field), {}, {h, 0.5}};
-  for (auto& p : parts) m.bodies.push_back(p);
-  for (int i = 0; i + 1 < static_cast<int>(parts.size()); ++i)
-    m.part_contacts.push_back({i, i + 1, e});
-  return m;
+// A queue of parts of length kLength with these laws at leading edges x.
+core::Model queue_of(const std::vector<FrictionLaw>& laws, const std::vector<double>& x,
+                     long long steps_per_period) {
+  RowQueue q;
+  for (std::size_t i = 0; i < laws.size(); ++i) q.parts.push_back({kLength, 1.0, laws[i], x[i], 0.0});
+  return row_model(kPaper, q, nullptr, steps_per_period);
 }
 
 core::State start(const core::Model& m, const std::vector<double>& x,
@@ -77,7 +69,6 @@ core::State start(const core::Model& m, const std::vector<double>& x,
 // ---- BM_row_moreau_step(_apart) -------------------------------------------------------------
 
 constexpr long long kStepsPerPeriod = 2000;
-constexpr double kLength = 0.3;
 constexpr int kWarmPeriods = 3;
 
 // N parts at `pitch`; at pitch == length the leading edges are placed so that each gap
@@ -94,10 +85,10 @@ std::vector<double> positions(int n, double pitch) {
   return x;
 }
 
-core::Model queue_model(int n) {
-  std::vector<core::SliderBody> parts;
-  for (int i = 0; i < n; ++i) parts.push_back(part(kLength, FrictionLaw(1.2, 1.0 + 0.01 * (i % 3))));
-  return row_model(std::move(parts), 1.0 / static_cast<double>(kStepsPerPeriod));
+core::Model queue_model(int n, double pitch) {
+  std::vector<FrictionLaw> laws;
+  for (int i = 0; i < n; ++i) laws.push_back(FrictionLaw(1.2, 1.0 + 0.01 * (i % 3)));
+  return queue_of(laws, positions(n, pitch), kStepsPerPeriod);
 }
 
 double min_gap(const core::Model& m, const core::State& s) {
@@ -110,7 +101,7 @@ double min_gap(const core::Model& m, const core::State& s) {
 
 void row_moreau_step(benchmark::State& st, double pitch) {
   const int n = static_cast<int>(st.range(0));
-  const core::Model m = queue_model(n);
+  const core::Model m = queue_model(n, pitch);
   core::State s0 = start(m, positions(n, pitch), std::vector<double>(static_cast<std::size_t>(n), 0.0));
   core::step(m, s0, kWarmPeriods * kStepsPerPeriod);
   // One untimed period step by step: the mean fraction of chained parts, and for the spaced
@@ -154,9 +145,8 @@ constexpr int kQueuePeriods = 5;
 const std::vector<double> kQueueX{0.0, 0.35, 0.7}, kQueueV{0.0, 0.0, 0.0};
 
 core::Model three_part_queue() {
-  return row_model({part(kLength, FrictionLaw(0.7, 0.4, 0.6)), part(kLength, FrictionLaw(0.85, 0.75)),
-                    part(kLength, FrictionLaw(1.1, 1.0))},
-                   1e-3, 0.0);
+  return queue_of({FrictionLaw(0.7, 0.4, 0.6), FrictionLaw(0.85, 0.75), FrictionLaw(1.1, 1.0)},
+                  kQueueX, 1000);
 }
 
 void BM_row_exact_period(benchmark::State& st) {

@@ -96,6 +96,16 @@ long long model_steps(const RowSolver& solver) {
   return solver.method == Method::exact ? 1 : solver.steps_per_period;
 }
 
+// Period p (from 1) of the run, sampled `samples` times; it ends exactly at p T.
+void run_period(RowRunner& r, long long p, double T, long long samples, std::vector<double>& times,
+                std::vector<std::vector<double>>& positions) {
+  for (long long k = 1; k <= samples; ++k) {
+    const double t = T * (static_cast<double>(p - 1) + static_cast<double>(k) / static_cast<double>(samples));
+    r.advance_to(k == samples ? T * static_cast<double>(p) : t);
+    sample(r, t, times, positions);
+  }
+}
+
 }  // namespace row_analysis
 
 using namespace row_analysis;
@@ -148,11 +158,7 @@ RowRun row_run(const TableProfile& profile, const RowQueue& queue, const Frictio
   std::vector<double> before(n);
   for (long long p = 1; p <= periods; ++p) {
     for (std::size_t i = 0; i < n; ++i) before[i] = r.x(i);
-    for (long long k = 1; k <= samples_per_period; ++k) {
-      const double t = T * (static_cast<double>(p - 1) + static_cast<double>(k) / static_cast<double>(samples_per_period));
-      r.advance_to(k == samples_per_period ? T * static_cast<double>(p) : t);
-      sample(r, t, out.times, out.positions);
-    }
+    run_period(r, p, T, samples_per_period, out.times, out.positions);
   }
   out.queue_velocity = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -187,11 +193,7 @@ RowStop row_stop(const TableProfile& profile, const RowQueue& queue, const Frict
   for (long long p = 1; p <= max_periods && !out.stopped; ++p) {
     for (std::size_t i = 0; i < n; ++i) before[i] = r.x(i);
     const std::vector<double> last_before = r.last_motion();
-    for (long long k = 1; k <= samples_per_period; ++k) {
-      const double t = T * (static_cast<double>(p - 1) + static_cast<double>(k) / static_cast<double>(samples_per_period));
-      r.advance_to(k == samples_per_period ? T * static_cast<double>(p) : t);
-      sample(r, t, out.times, out.positions);
-    }
+    run_period(r, p, T, samples_per_period, out.times, out.positions);
     out.periods = p;
     // held through the whole period: no part's last motion changed, every part at rest
     bool held = true;
