@@ -199,6 +199,13 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     design_feeder_drive,
     machine_number,
     throw_number,
+    # queues of 1-D parts (issue 24; docs/rows.md)
+    RowPart,
+    RowQueue,
+    RowRun,
+    RowStop,
+    row_run,
+    row_stop,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

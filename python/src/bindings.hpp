@@ -30,6 +30,7 @@ void bind_uncertainty(py::module_& m);   // distributions, Monte Carlo, worst ca
 void bind_planar(py::module_& m);        // contact patches, planar fields, rigid-part runs (issue 13)
 void bind_parameters(py::module_& m);    // the parameter view: model_parameters, with_parameters
 void bind_feeder(py::module_& m);        // the vibratory feeder: drive, onsets, runs (issue 23)
+void bind_rows(py::module_& m);          // queues of 1-D parts: RowPart, RowQueue, row_run, row_stop (issue 24)
 
 /// Rules for every class bound above (classes.cpp): an object whose __init__ was not called
 /// raises TypeError when used; pickling under every protocol, or a TypeError. Called last.

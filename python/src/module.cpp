@@ -27,5 +27,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_planar(m);
   bind_parameters(m);
   bind_feeder(m);
+  bind_rows(m);
   finish_classes(m);
 }

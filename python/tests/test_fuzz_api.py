@@ -389,6 +389,7 @@ VALID_OBJECT_BY_NAME = {  # parameters typed `object`, by name
     "cos": "[0.04]", "sin": "[0.0]", "path": "'/dev/null'", "cos_coeffs": "[0.04]",
     "sin_coeffs": "[0.0]", "footprint": "sa.PointFootprint()", "left": "[1.0]",
     "position": "[0.5]", "right": "[2.0]", "v_bar": "0.1", "y": "0.2",
+    "queue": "[sa.RowPart()]", "parts": "[sa.RowPart()]",
 }
 
 
