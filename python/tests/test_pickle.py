@@ -194,6 +194,15 @@ EXAMPLES = {
         PROFILE, field=sa.HalfPlaneStepField(origin_x=0.3, width=0.05, c_mu=4.0),
         part=sa.RigidPart(), step=0.01, entries=[[0.4, 0.1, 0.2], [-5.0, 0.0, 0.0]],
         max_periods=2),
+    # queues of 1-D parts (issue 24)
+    "RowPart": lambda: sa.RowPart(0.25, 2.0, sa.FrictionLaw(1.2, 1.0, 0.9), 0.5, 0.1),
+    "RowQueue": lambda: sa.RowQueue([sa.RowPart(0.3, x=0.0), example("RowPart")],
+                                    restitution=0.4),
+    "RowRun": lambda: sa.row_run(  # one part: NaN pitch and throughput
+        PROFILE, [sa.RowPart(0.25, law=sa.FrictionLaw(1.2, 1.0))], 2, samples_per_period=3),
+    "RowStop": lambda: sa.row_stop(  # not stopped: NaN stop time
+        PROFILE, example("RowQueue"), sa.FrictionField.steps([1.5], [1.0, 4.0]), 2,
+        samples_per_period=3),
 }
 
 # Bound classes that are not value types.
