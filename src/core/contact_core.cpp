@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "../planar/rigid_body_step.hpp"
+#include "disc_stage.hpp"
 #include "row_stage.hpp"
 #include "selfalign/core/model.hpp"
 #include "selfalign/core/state.hpp"
@@ -88,6 +89,10 @@ void validate(const Model& m) {
       std::visit(Overloaded{[](const RigidBody& b) {
                               validate(b.part);
                               require_planar_law(b.law);
+                              if (!(b.mass > 0 && b.mass <= 1e50))
+                                throw InvalidParameter("mass", b.mass, "must be in (0, 1e50]");
+                              if (!(b.radius >= 0 && b.radius <= 1e50))
+                                throw InvalidParameter("radius", b.radius, "must be in [0, 1e50]");
                             },
                             [&m](const SliderBody& b) {
                               if (const auto* u = std::get_if<UniformFootprint>(&b.footprint)) {
@@ -114,6 +119,7 @@ void validate(const Model& m) {
     }
   }
   detail::validate_part_contacts(m);
+  detail::validate_disc_contacts(m);
 }
 
 State make_state(const Model& model, double t, std::span<const PlanarPose> poses,
@@ -152,6 +158,7 @@ State make_state(const Model& model, double t, std::span<const PlanarPose> poses
     }
   }
   detail::prepare_row(model, s);
+  detail::check_disc_overlap(model, s);
   return s;
 }
 
@@ -177,7 +184,8 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
   }
   const bool flight = model.gravity && model.gravity->flight;  // Moreau-Jean's normal stage
   const bool rows = !model.part_contacts.empty();
-  if (rows) s.row.loads.resize(n);
+  const bool discs = !model.disc_contacts.empty();
+  if (rows || discs) s.row.loads.resize(n);
   long long taken = 0;
   for (; taken < steps && s.status == StepStatus::ok; ++taken) {
     // kinematics, once for every body
@@ -194,16 +202,27 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
       }
     }
     // the body stages, block by block
-    if (rows) {  // touching 1-D parts: the row stage (src/core/row_stage.hpp) steps the sliders
-      for (std::size_t i = 0; i < n; ++i) {
+    if (rows || discs) {  // parts that touch: the row stage (sliders), the disc stage (rigid)
+      for (std::size_t i = 0; i < n; ++i)
         s.row.loads[i] = flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
                                                  model.gravity->restitution, loads, s.bodies[i])
                                 : loads;
-        if (const auto* b = std::get_if<RigidBody>(&model.bodies[i]))
-          detail::rigid_body_step(model.field, b->law, b->part, h, th, s.table, tb1,
-                                  s.row.loads[i], s.bodies[i], s.contacts[i]);
+      if (discs) {
+        detail::disc_step(model, s, s.table, tb1, s.row.loads.data());
+      } else {
+        for (std::size_t i = 0; i < n; ++i)
+          if (const auto* b = std::get_if<RigidBody>(&model.bodies[i]))
+            detail::rigid_body_step(model.field, b->law, b->part, h, th, s.table, tb1,
+                                    s.row.loads[i], s.bodies[i], s.contacts[i]);
       }
-      detail::row_step(model, s, t1, s.table, tb1, s.row.loads.data(), observer);
+      if (rows) {
+        detail::row_step(model, s, t1, s.table, tb1, s.row.loads.data(), observer);
+      } else {
+        for (std::size_t i = 0; i < n; ++i)
+          if (const auto* b = std::get_if<SliderBody>(&model.bodies[i]))
+            detail::slider_step(model, *b, h, th, s.table, tb1, s.row.loads[i], t1,
+                                static_cast<int>(i), s.bodies[i], observer);
+      }
     } else {
       for (std::size_t i = 0; i < n; ++i) {
         // Moreau-Jean's unilateral normal contact (Gravity::flight): this body's normal impulse

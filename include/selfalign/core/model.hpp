@@ -8,7 +8,8 @@
 /// (planar_field.hpp), its normal motion with gravity and the incline (Gravity); the time step.
 /// The number of bodies is a runtime value. Flight after a lift-off is Gravity::flight's
 /// (Moreau-Jean); otherwise the step reports lift_off and stops. Part-part contacts: between
-/// 1-D parts of a row (PartContact, issue 24; docs/rows.md); not yet between planar parts.
+/// 1-D parts of a row (PartContact, issue 24; docs/rows.md) and between planar parts with disc
+/// outlines (DiscContact); not yet between rectangles and polygons.
 
 #include <optional>
 #include <variant>
@@ -28,6 +29,9 @@ namespace selfalign::core {
 struct RigidBody {
   RigidPart part;       ///< inertia j = I/(m L^2) [-] and contact patch (body frame)
   FrictionLaw law{};    ///< body-table law: isotropic, velocity-independent (planar solvers)
+  double mass = 1;      ///< m / m_ref [-], in (0, 1e50]: ratios between bodies in contact
+  /// The radius of its disc outline about the centre of mass [-] (DiscContact); 0: no outline.
+  double radius = 0;
 };
 
 /// The paper's 1-D part (Sect. 3) as a body: one translational coordinate x [-] relative to the
@@ -94,6 +98,19 @@ struct PartContact {
   double restitution = 0;  ///< e in [0, 1]
 };
 
+/// A unilateral contact between two planar parts with disc outlines (RigidBody::radius > 0;
+/// issue 24, docs/rows.md section 10): the distance between their centres stays >= the sum of
+/// their radii. Moreau's step treats it as active where the gap at the step's midpoint is
+/// <= 0, with Newton's restitution e on the normal relative velocity and Coulomb friction
+/// `friction` between the parts at the contact point; the bodies' patch friction with the
+/// table keeps its exact stick (block Gauss-Seidel: each body's patch problem solved exactly
+/// for the impulses of its contacts, each contact's impulse projected on its cone).
+struct DiscContact {
+  int a = 0, b = 1;
+  double restitution = 0;  ///< e in [0, 1]
+  double friction = 0.5;   ///< Coulomb coefficient between the parts, >= 0
+};
+
 struct Model {
   PlanarTableMotion motion;                 ///< borrowed profiles: they must outlive the model
   PlanarField field = UniformPlanarField{};
@@ -106,6 +123,8 @@ struct Model {
   /// front of at most one, the contacts form chains (no cycle), and the parts of a contact
   /// have a length > 0 and a velocity-independent law. Empty: the bodies never touch.
   std::vector<PartContact> part_contacts{};
+  /// Contacts between planar parts with disc outlines (rigid bodies); empty: none.
+  std::vector<DiscContact> disc_contacts{};
 };
 
 /// Throws InvalidParameter naming the first invalid part ("gravity.g", "gravity.incline",
