@@ -248,7 +248,11 @@ RowExactState make_row_exact_state(const core::Model& model, double t, std::span
   s.period_index = static_cast<long long>(std::floor(t / P));
   if (t - static_cast<double>(s.period_index) * P >= P) ++s.period_index;
   s.segment = r.profile->segment_at(std::max(t - static_cast<double>(s.period_index) * P, 0.0));
-  s.a.assign(n, 0.0);
+  s.a.assign(n, std::numeric_limits<double>::quiet_NaN());  // every part anchors at the start
+  s.t_anchor.assign(n, t);
+  s.x_anchor = s.x;
+  s.v_anchor = s.v;
+  s.moved.assign(n, 1);
   s.zero_at.assign(n, kNever);
   s.cross_at.assign(n, kNever);
   s.direction.assign(n, 0);
@@ -274,18 +278,26 @@ std::size_t advance_row_exact(const core::Model& model, RowExactState& s, double
   if (observer) x0.resize(n), v0.resize(n);
   while (s.t < t_end) {
     const double A = segs[s.segment].accel;
+    s.previous_a = s.a;
     solve_modes(model, r, s, A);
-    // the next event
+    // anchors: a part whose acceleration or velocity changed starts its parabola here; the
+    // others keep theirs (a lone part's arcs do not depend on the other parts' events)
+    for (std::size_t i = 0; i < n; ++i)
+      if (s.moved[i] || !(s.a[i] == s.previous_a[i])) {
+        s.t_anchor[i] = s.t, s.x_anchor[i] = s.x[i], s.v_anchor[i] = s.v[i];
+        s.moved[i] = 0;
+      }
+    // the next event, as an absolute time
     const double seg_end = period_start + (s.segment + 1 < nseg ? segs[s.segment + 1].begin : P);
     const bool to_switch = seg_end <= t_end;
-    double tau = (to_switch ? seg_end : t_end) - s.t;
+    double next = to_switch ? seg_end : t_end;
     ArcEnd end = to_switch ? ArcEnd::acceleration_switch : ArcEnd::horizon;
     int contact = -1;
     for (std::size_t i = 0; i < n; ++i) {
-      const double v = s.v[i], a = s.a[i];
-      s.zero_at[i] = v != 0 && a != 0 && (v > 0) != (a > 0) ? -v / a : kNever;
-      if (s.zero_at[i] < tau) {
-        tau = s.zero_at[i];
+      const double v = s.v_anchor[i], a = s.a[i], ta = s.t_anchor[i];
+      s.zero_at[i] = v != 0 && a != 0 && (v > 0) != (a > 0) ? ta + -v / a : kNever;
+      if (s.zero_at[i] < next) {
+        next = s.zero_at[i];
         end = ArcEnd::velocity_zero;
       }
       s.cross_at[i] = kNever;
@@ -295,9 +307,9 @@ std::size_t advance_row_exact(const core::Model& model, RowExactState& s, double
       const std::size_t p = s.piece[i];
       if ((d > 0 && p == r.bounds.size()) || (d < 0 && p == 0)) continue;
       const double b = d > 0 ? r.bounds[p] : r.bounds[p - 1];
-      s.cross_at[i] = first_root(0.5 * a, v, s.x[i] - b, [](double) { return true; });
-      if (s.cross_at[i] < tau) {
-        tau = s.cross_at[i];
+      s.cross_at[i] = ta + first_root(0.5 * a, v, s.x_anchor[i] - b, [](double) { return true; });
+      if (s.cross_at[i] < next) {
+        next = s.cross_at[i];
         end = ArcEnd::friction_boundary;
       }
     }
@@ -310,38 +322,43 @@ std::size_t advance_row_exact(const core::Model& model, RowExactState& s, double
       double root;
       if (g0 <= 0 && (dv < 0 || (dv == 0 && da < 0))) root = 0;
       else root = first_root(0.5 * da, dv, g0, [&](double tt) { return dv + da * tt < 0; });
-      if (root < tau) {
-        tau = root;
+      if (s.t + root < next) {
+        next = s.t + root;
         end = ArcEnd::part_contact;
         contact = static_cast<int>(j);
       }
     }
-    // the arc: every part on its parabola
+    // the arc: every part on its parabola from its anchor
     if (observer)
       for (std::size_t i = 0; i < n; ++i) x0[i] = s.x[i], v0[i] = s.v[i];
     const double t0 = s.t;
     for (std::size_t i = 0; i < n; ++i) {
-      s.x[i] += (s.v[i] + 0.5 * s.a[i] * tau) * tau;
-      s.v[i] += s.a[i] * tau;
+      const double tau = next - s.t_anchor[i];
+      s.x[i] = s.x_anchor[i] + (s.v_anchor[i] + 0.5 * s.a[i] * tau) * tau;
+      s.v[i] = s.v_anchor[i] + s.a[i] * tau;
     }
-    s.t = end == ArcEnd::acceleration_switch ? seg_end : end == ArcEnd::horizon ? t_end : s.t + tau;
+    s.t = next;
     ++arcs;
     ++s.statistics.arcs;
     // the event
     switch (end) {
       case ArcEnd::velocity_zero:  // every part whose velocity zero this is (a cluster's)
         for (std::size_t i = 0; i < n; ++i)
-          if (s.zero_at[i] == tau) s.v[i] = 0;
+          if (s.zero_at[i] == next) s.v[i] = 0, s.moved[i] = 1;
         ++s.statistics.velocity_zeros;
         break;
       case ArcEnd::friction_boundary:  // every part that reached its next boundary
         for (std::size_t i = 0; i < n; ++i)
-          if (s.cross_at[i] == tau) s.piece[i] += s.direction[i] > 0 ? 1 : static_cast<std::size_t>(-1);
+          if (s.cross_at[i] == next) s.piece[i] += s.direction[i] > 0 ? 1 : static_cast<std::size_t>(-1);
         ++s.statistics.boundaries;
         break;
-      case ArcEnd::part_contact:
+      case ArcEnd::part_contact: {
+        s.v_before.assign(s.v.begin(), s.v.end());
         impact(model, r, s, contact, o);
+        for (std::size_t i = 0; i < n; ++i)
+          if (s.v[i] != s.v_before[i]) s.moved[i] = 1;
         break;
+      }
       case ArcEnd::acceleration_switch:
         if (++s.segment == nseg) {
           s.segment = 0;

@@ -65,6 +65,12 @@ struct RowExactState {
   RowExactStatistics statistics;
   // workspace
   std::vector<double> a;               ///< per body: acceleration over the current arc
+  /// Per body: where its current parabola starts (time, x, x'). A part's anchor moves only
+  /// when its acceleration or velocity changes, so a part that touches no other moves bit for
+  /// bit as it does alone (its arcs do not depend on the other parts' events).
+  std::vector<double> t_anchor, x_anchor, v_anchor;
+  std::vector<double> previous_a, v_before;
+  std::vector<signed char> moved;      ///< per body: its velocity changed at the last event
   std::vector<double> zero_at, cross_at;  ///< per body: its velocity zero, next boundary [-]
   std::vector<signed char> direction;  ///< per body: its direction over the arc
   std::vector<core::ChainPart> parts;
