@@ -52,16 +52,13 @@ class RowRunner {
   double x(std::size_t i) const { return exact_ ? exact_state_.x[i] : core_state_.bodies[i].pose.x; }
   double v(std::size_t i) const { return exact_ ? exact_state_.v[i] : core_state_.bodies[i].twist.ux; }
   std::size_t size() const { return model_.bodies.size(); }
-  bool touching(std::size_t j) const {
-    if (exact_) return exact_state_.touching[j] != 0;
-    const core::PartContact& pc = model_.part_contacts[j];
-    const auto f = static_cast<std::size_t>(pc.front), r = static_cast<std::size_t>(pc.rear);
-    return (x(f) - std::get<core::SliderBody>(model_.bodies[f]).length) - x(r) <= kRowTouchGap;
-  }
   double gap(std::size_t j) const {
     const core::PartContact& pc = model_.part_contacts[j];
-    const auto f = static_cast<std::size_t>(pc.front), r = static_cast<std::size_t>(pc.rear);
-    return (x(f) - std::get<core::SliderBody>(model_.bodies[f]).length) - x(r);
+    return core::part_gap(model_, pc, x(static_cast<std::size_t>(pc.rear)),
+                          x(static_cast<std::size_t>(pc.front)));
+  }
+  bool touching(std::size_t j) const {
+    return exact_ ? exact_state_.touching[j] != 0 : gap(j) <= kRowTouchGap;
   }
   long long collisions() const { return exact_ ? exact_state_.statistics.collisions : 0; }
   long long separations() const { return exact_ ? exact_state_.statistics.separations : 0; }

@@ -41,6 +41,11 @@ detail::StepLoads normal_contact(double h, double th, double weight, double dvz,
 
 }  // namespace
 
+double part_gap(const Model& model, const PartContact& c, double x_rear, double x_front) {
+  return (x_front - std::get<SliderBody>(model.bodies[static_cast<std::size_t>(c.front)]).length) -
+         x_rear;
+}
+
 double slider_level(const Model& model, const SliderBody& b, double x) {
   const double ex = model.motion.e1_x, ey = model.motion.e1_y;
   const double w = std::holds_alternative<UniformFootprint>(b.footprint)
@@ -185,7 +190,7 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
   const bool flight = model.gravity && model.gravity->flight;  // Moreau-Jean's normal stage
   const bool rows = !model.part_contacts.empty();
   const bool discs = !model.disc_contacts.empty();
-  if (rows || discs) s.row.loads.resize(n);
+  s.loads.resize(n);
   long long taken = 0;
   for (; taken < steps && s.status == StepStatus::ok; ++taken) {
     // kinematics, once for every body
@@ -201,47 +206,29 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
         break;
       }
     }
-    // the body stages, block by block
-    if (rows || discs) {  // parts that touch: the row stage (sliders), the disc stage (rigid)
-      for (std::size_t i = 0; i < n; ++i)
-        s.row.loads[i] = flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
-                                                 model.gravity->restitution, loads, s.bodies[i])
-                                : loads;
-      if (discs) {
-        detail::disc_step(model, s, s.table, tb1, s.row.loads.data());
-      } else {
-        for (std::size_t i = 0; i < n; ++i)
-          if (const auto* b = std::get_if<RigidBody>(&model.bodies[i]))
-            detail::rigid_body_step(model.field, b->law, b->part, h, th, s.table, tb1,
-                                    s.row.loads[i], s.bodies[i], s.contacts[i]);
-      }
-      if (rows) {
-        detail::row_step(model, s, t1, s.table, tb1, s.row.loads.data(), observer);
-      } else {
-        for (std::size_t i = 0; i < n; ++i)
-          if (const auto* b = std::get_if<SliderBody>(&model.bodies[i]))
-            detail::slider_step(model, *b, h, th, s.table, tb1, s.row.loads[i], t1,
-                                static_cast<int>(i), s.bodies[i], observer);
-      }
+    // per body its loads: Moreau-Jean's unilateral normal contact (Gravity::flight) gives
+    // each body its own normal impulse; otherwise the step's
+    for (std::size_t i = 0; i < n; ++i)
+      s.loads[i] = flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
+                                           model.gravity->restitution, loads, s.bodies[i])
+                          : loads;
+    // the body stages, block by block: rigid bodies in contact with each other are coupled by
+    // the disc stage, touching 1-D parts by the row stage; a body alone takes its own step
+    if (discs) {
+      detail::disc_step(model, s, s.table, tb1, s.loads.data());
     } else {
-      for (std::size_t i = 0; i < n; ++i) {
-        // Moreau-Jean's unilateral normal contact (Gravity::flight): this body's normal impulse
-        const detail::StepLoads body_loads =
-            flight ? normal_contact(h, th, pressing * g, tb1.vz - s.table.vz, g,
-                                    model.gravity->restitution, loads, s.bodies[i])
-                   : loads;
-        std::visit(Overloaded{[&](const RigidBody& b) {
-                                detail::rigid_body_step(model.field, b.law, b.part, h, th,
-                                                        s.table, tb1, body_loads, s.bodies[i],
-                                                        s.contacts[i]);
-                              },
-                              [&](const SliderBody& b) {
-                                detail::slider_step(model, b, h, th, s.table, tb1, body_loads,
-                                                    t1, static_cast<int>(i), s.bodies[i],
-                                                    observer);
-                              }},
-                   model.bodies[i]);
-      }
+      for (std::size_t i = 0; i < n; ++i)
+        if (const auto* b = std::get_if<RigidBody>(&model.bodies[i]))
+          detail::rigid_body_step(model.field, b->law, b->part, h, th, s.table, tb1, s.loads[i],
+                                  s.bodies[i], s.contacts[i]);
+    }
+    if (rows) {
+      detail::row_step(model, s, t1, s.table, tb1, s.loads.data(), observer);
+    } else {
+      for (std::size_t i = 0; i < n; ++i)
+        if (const auto* b = std::get_if<SliderBody>(&model.bodies[i]))
+          detail::slider_step(model, *b, h, th, s.table, tb1, s.loads[i], t1,
+                              static_cast<int>(i), s.bodies[i], observer);
     }
     // checks: the table's motion (a profile that returns NaN), then each body
     if (!(std::isfinite(tb1.x) && std::isfinite(tb1.y) && std::isfinite(tb1.angle) &&

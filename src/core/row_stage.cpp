@@ -26,10 +26,6 @@ const SliderBody& slider(const Model& model, int i) {
   return std::get<SliderBody>(model.bodies[static_cast<std::size_t>(i)]);
 }
 
-// The gap (x_front - length_front) - x_rear of contact `pc` at positions x [-].
-double gap(const Model& model, const PartContact& pc, double x_rear, double x_front) {
-  return (x_front - slider(model, pc.front).length) - x_rear;
-}
 
 }  // namespace
 
@@ -126,13 +122,14 @@ void prepare_row(const Model& model, State& state) {
   w.behind.assign(n, -1);
   w.ahead.assign(n, -1);
   w.chained.assign(n, 0);
+  w.active.assign(model.part_contacts.size(), 0);
   w.x0.assign(n, 0);
   w.v0.assign(n, 0);
   for (std::size_t j = 0; j < model.part_contacts.size(); ++j) {
     const PartContact& pc = model.part_contacts[j];
     w.ahead[static_cast<std::size_t>(pc.rear)] = static_cast<int>(j);
     w.behind[static_cast<std::size_t>(pc.front)] = static_cast<int>(j);
-    const double g = gap(model, pc, state.bodies[static_cast<std::size_t>(pc.rear)].pose.x,
+    const double g = core::part_gap(model, pc, state.bodies[static_cast<std::size_t>(pc.rear)].pose.x,
                          state.bodies[static_cast<std::size_t>(pc.front)].pose.x);
     if (!(g >= 0))
       throw InvalidParameter("poses[" + std::to_string(pc.front) + "]", g,
@@ -154,10 +151,12 @@ void row_step(const Model& model, State& s, double t1, const PlanarTablePose& tb
   }
   // contacts: active where the gap at the step's midpoint is <= 0
   bool any = false;
-  for (const PartContact& pc : model.part_contacts) {
+  for (std::size_t j = 0; j < model.part_contacts.size(); ++j) {
+    const PartContact& pc = model.part_contacts[j];
     const auto r = static_cast<std::size_t>(pc.rear), f = static_cast<std::size_t>(pc.front);
-    const double g = gap(model, pc, w.x0[r], w.x0[f]) + 0.5 * h * (w.v0[f] - w.v0[r]);
-    if (g <= 0) w.chained[r] = w.chained[f] = 1, any = true;
+    const double g = core::part_gap(model, pc, w.x0[r], w.x0[f]) + 0.5 * h * (w.v0[f] - w.v0[r]);
+    w.active[j] = g <= 0;
+    if (w.active[j]) w.chained[r] = w.chained[f] = 1, any = true;
   }
   // sliders in no chain: the 1-D Moreau step itself
   for (std::size_t i = 0; i < n; ++i)
@@ -167,14 +166,8 @@ void row_step(const Model& model, State& s, double t1, const PlanarTablePose& tb
   // chains: from each chained part with no active contact behind it, forward
   for (std::size_t i = 0; any && i < n; ++i) {
     if (!w.chained[i]) continue;
-    const int jb = w.behind[i];
-    auto active = [&](int j) {
-      if (j < 0) return false;
-      const PartContact& pc = model.part_contacts[static_cast<std::size_t>(j)];
-      const auto r = static_cast<std::size_t>(pc.rear), f = static_cast<std::size_t>(pc.front);
-      return gap(model, pc, w.x0[r], w.x0[f]) + 0.5 * h * (w.v0[f] - w.v0[r]) <= 0;
-    };
-    if (active(jb)) continue;  // not the chain's rear part
+    const auto active = [&w](int j) { return j >= 0 && w.active[static_cast<std::size_t>(j)]; };
+    if (active(w.behind[i])) continue;  // not the chain's rear part
     w.bodies.clear();
     w.parts.clear();
     w.chain_friction.clear();

@@ -18,11 +18,11 @@ namespace {
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
 // What the solver reads of the model, once per call: the profile, the friction pieces along
-// e1 (boundaries in x, levels between), per body its mass, length and law, and the rows.
+// e1 (boundaries in x, levels between), per body its mass and law, and the rows.
 struct RowSetup {
   const PiecewisePolynomialProfile* profile = nullptr;
   std::vector<double> bounds, levels;  // levels.size() == bounds.size() + 1
-  std::vector<double> mass, length, s, kf, kb;
+  std::vector<double> mass, s, kf, kb;
   std::vector<int> ahead, behind;      // per body: contact index or -1
   std::vector<int> rears;              // bodies with no contact behind them
 };
@@ -76,7 +76,6 @@ RowSetup read_setup(const core::Model& model) {
       throw InvalidParameter(body_name(i) + ".law", "velocity-dependent",
                              "the exact row solver takes Coulomb laws");
     r.mass.push_back(b->mass);
-    r.length.push_back(b->length);
     r.s.push_back(b->law.static_coefficient());
     r.kf.push_back(b->law.kinetic_forward());
     r.kb.push_back(b->law.kinetic_backward());
@@ -90,10 +89,10 @@ RowSetup read_setup(const core::Model& model) {
   return r;
 }
 
-double gap_of(const core::Model& model, const RowSetup& r, const RowExactState& s, int j) {
+double gap_of(const core::Model& model, const RowExactState& s, int j) {
   const core::PartContact& pc = model.part_contacts[static_cast<std::size_t>(j)];
-  const auto f = static_cast<std::size_t>(pc.front), b = static_cast<std::size_t>(pc.rear);
-  return (s.x[f] - r.length[f]) - s.x[b];
+  return core::part_gap(model, pc, s.x[static_cast<std::size_t>(pc.rear)],
+                        s.x[static_cast<std::size_t>(pc.front)]);
 }
 
 // The first tau >= 0 where alpha tau^2 + beta tau + gamma = 0 and `accept(tau)`; kNever if none.
@@ -236,7 +235,7 @@ RowExactState make_row_exact_state(const core::Model& model, double t, std::span
   }
   s.touching.assign(model.part_contacts.size(), 0);
   for (std::size_t j = 0; j < model.part_contacts.size(); ++j) {
-    const double g = gap_of(model, r, s, static_cast<int>(j));
+    const double g = gap_of(model, s, static_cast<int>(j));
     const core::PartContact& pc = model.part_contacts[j];
     if (!(g >= 0))
       throw InvalidParameter("x[" + std::to_string(pc.front) + "]", g,
@@ -317,7 +316,7 @@ std::size_t advance_row_exact(const core::Model& model, RowExactState& s, double
       if (s.touching[j]) continue;
       const core::PartContact& pc = model.part_contacts[j];
       const auto f = static_cast<std::size_t>(pc.front), b = static_cast<std::size_t>(pc.rear);
-      const double g0 = gap_of(model, r, s, static_cast<int>(j));
+      const double g0 = gap_of(model, s, static_cast<int>(j));
       const double dv = s.v[f] - s.v[b], da = s.a[f] - s.a[b];
       double root;
       if (g0 <= 0 && (dv < 0 || (dv == 0 && da < 0))) root = 0;

@@ -137,6 +137,10 @@ struct Model {
 /// "part_contacts[j].restitution").
 void validate(const Model& model);
 
+/// The gap (x_front - length_front) - x_rear of part contact `contact` with its parts' leading
+/// edges at x_rear and x_front [-] (>= 0: the parts do not overlap).
+double part_gap(const Model& model, const PartContact& contact, double x_rear, double x_front);
+
 /// The level m(x) of slider `body` of `model` at x along e1 (SliderBody: the field along e1,
 /// averaged over the footprint) [-].
 double slider_level(const Model& model, const SliderBody& body, double x);

@@ -39,8 +39,8 @@ struct BodyState {
 /// body its position and velocity at the step's start, per chain its parts.
 struct RowWork {
   std::vector<double> x0, v0;             ///< per body
-  std::vector<StepLoads> loads;  ///< per body: its step's loads
   std::vector<signed char> chained;       ///< per body: in a chain this step
+  std::vector<signed char> active;        ///< per part contact: active this step
   std::vector<int> behind, ahead;         ///< per body: the contact behind / ahead of it (-1)
   std::vector<int> bodies;                ///< one chain's bodies, rear to front
   std::vector<ChainPart> parts;
@@ -57,6 +57,7 @@ struct State {
   StepStatus status = StepStatus::ok;
   int failed_body = -1;          ///< the body that left the finite numbers (non_finite; -1: the table)
   std::vector<std::vector<PatchContact>> contacts;  ///< workspace, one per body (no allocation per step)
+  std::vector<StepLoads> loads;  ///< workspace: per body, its step's loads
   RowWork row;                   ///< workspace of the row stage (part contacts)
 };
 
