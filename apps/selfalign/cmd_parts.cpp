@@ -69,53 +69,36 @@ struct PartsSetup {
   long long periods = 20, max_periods = 1000, samples = 20;
 };
 
-double number(const ConfigValues& v, std::string_view section, std::string_view name,
-              double fallback) {
-  const ConfigValue* p = v.find(section, name);
-  return p ? std::get<double>(*p) : fallback;
-}
-
-long long whole(const ConfigValues& v, std::string_view section, std::string_view name,
-                long long fallback, const std::string& file) {
-  const ConfigValue* p = v.find(section, name);
-  if (!p) return fallback;
-  const double d = std::get<double>(*p);
-  if (!(std::isfinite(d) && d == std::round(d) && std::abs(d) <= 1e15))
-    throw InvalidParameter(qualified_key(section, name), d, "must be a whole number (in " + file + ")");
-  return static_cast<long long>(d);
-}
-
 // One [[parts]] entry: `count` parts (default 1) at `pitch` (default: the length) from x.
 void read_part(const json& entry, std::size_t index, const std::string& file, RowQueue& q) {
   const std::string name = "parts[" + std::to_string(index) + "]";
   if (!entry.is_object()) throw InvalidParameter(name, document_value_text(entry), "must be a table (in " + file + ")");
   const KeyTable table{kPartKeys, "docs/rows.md"};
-  ConfigValues v;
   try {
-    v = read_config_values(entry, table, file);
+    const ConfigValues values = read_config_values(entry, table, file);
+    const ConfigSection v(values, "", InputUnits());
+    const double s = v.number("mu_static", 1.0);
+    const double k = v.number("mu_kinetic", s);
+    const double kf = v.number("mu_forward", k), kb = v.number("mu_backward", k);
+    FrictionLaw law;
+    try {
+      law = FrictionLaw(s, kf, kb);
+    } catch (const InvalidParameter& e) {
+      throw InvalidParameter("friction (" + e.name() + ")", e.value(), e.allowed());
+    }
+    const RowPart p{v.number("length", 0.3), v.number("mass", 1.0), law, v.number("x", 0.0),
+                    v.number("v", 0.0)};
+    const int count = v.integer("count", 1, 1, 100000);
+    const double pitch = v.number("pitch", p.length);  // checked for repeated parts only
+    if (count > 1 && !(std::isfinite(pitch) && pitch > 0))
+      throw InvalidParameter("pitch", pitch, "must be > 0");
+    for (int c = 0; c < count; ++c) {
+      RowPart one = p;
+      one.x = p.x + static_cast<double>(c) * pitch;
+      q.parts.push_back(one);
+    }
   } catch (const InvalidParameter& e) {
     throw InvalidParameter(name + "." + e.name(), e.value(), e.allowed());
-  }
-  const double s = number(v, "", "mu_static", 1.0);
-  const double k = number(v, "", "mu_kinetic", s);
-  const double kf = number(v, "", "mu_forward", k), kb = number(v, "", "mu_backward", k);
-  FrictionLaw law;
-  try {
-    law = FrictionLaw(s, kf, kb);
-  } catch (const InvalidParameter& e) {
-    throw InvalidParameter(name + ".friction (" + e.name() + ")", e.value(), e.allowed());
-  }
-  RowPart p{number(v, "", "length", 0.3), number(v, "", "mass", 1.0), law, number(v, "", "x", 0.0),
-            number(v, "", "v", 0.0)};
-  const long long count = whole(v, "", "count", 1, file);
-  if (!(count >= 1 && count <= 100000)) throw InvalidParameter(name + ".count", count, "must be in [1, 100000]");
-  const double pitch = number(v, "", "pitch", p.length);  // checked for repeated parts only
-  if (count > 1 && !(std::isfinite(pitch) && pitch > 0))
-    throw InvalidParameter(name + ".pitch", pitch, "must be > 0");
-  for (long long c = 0; c < count; ++c) {
-    RowPart one = p;
-    one.x = p.x + static_cast<double>(c) * pitch;
-    q.parts.push_back(one);
   }
 }
 
@@ -128,16 +111,18 @@ PartsSetup read_parts_config(const PartsFlags& f) {
   doc.erase("parts");
   const KeyTable table{kPartsKeys, "docs/rows.md"};
   const ConfigValues v = read_config_values(doc, table, f.config);
-  s.table = {number(v, "table", "period", 1.0), number(v, "table", "stroke", 0.084),
-             number(v, "table", "a2", 3.0), number(v, "table", "a3", 0.9)};
-  if (v.find("friction", "step_position")) s.step_position = number(v, "friction", "step_position", 0);
-  s.c_mu = number(v, "friction", "c_mu", 2.5);
-  if (const ConfigValue* m = v.find("run", "method")) s.solver.method = parse_method(std::get<std::string>(*m));
-  s.solver.steps_per_period = whole(v, "run", "steps_per_period", 2000, f.config);
-  s.periods = whole(v, "run", "periods", 20, f.config);
-  s.max_periods = whole(v, "run", "max_periods", 1000, f.config);
-  s.samples = whole(v, "run", "samples_per_period", 20, f.config);
-  s.queue.restitution = number(v, "run", "restitution", 0.0);
+  const ConfigSection tab(v, "table", InputUnits()), fr(v, "friction", InputUnits()),
+      run(v, "run", InputUnits());
+  s.table = {tab.number("period", 1.0), tab.number("stroke", 0.084), tab.number("a2", 3.0),
+             tab.number("a3", 0.9)};
+  if (fr.has("step_position")) s.step_position = fr.number("step_position", 0);
+  s.c_mu = fr.number("c_mu", 2.5);
+  if (run.has("method")) s.solver.method = parse_method(run.text("method", ""));
+  s.solver.steps_per_period = run.integer("steps_per_period", 2000, 1, 1'000'000'000);
+  s.periods = run.integer("periods", 20, 1, 100'000'000);
+  s.max_periods = run.integer("max_periods", 1000, 1, 100'000'000);
+  s.samples = run.integer("samples_per_period", 20, 1, 100'000);
+  s.queue.restitution = run.number("restitution", 0.0);
   for (std::size_t i = 0; i < parts.size(); ++i) read_part(parts[i], i, f.config, s.queue);
   // flags override the config
   if (f.method) s.solver.method = parse_method(*f.method);
