@@ -172,16 +172,9 @@ void add_montecarlo_command(CLI::App& app) {
       ->group("Process");
   sub->add_option("--x-mu", p.x_mu, "start of the rough region [m]")->group("Process");
   MonteCarloOptions& o = f->options;
-  sub->add_option("--runs", o.runs, "Monte-Carlo runs, in [1, 1e7]. Default: 10000")
-      ->group("Monte Carlo");
-  sub->add_option("--seed", o.seed, "seed of the draws. Default: 1")->group("Monte Carlo");
-  sub->add_option("--first-run", o.first_run,
-                  "index of the first run (a chunk of a larger study). Default: 0")
-      ->group("Monte Carlo");
+  add_monte_carlo_run_flags(sub, o.runs, o.seed, o.first_run, o.threads);
   sub->add_option("--max-periods", o.max_periods,
                   "table periods after which a run counts as not stopped. Default: 3000")
-      ->group("Monte Carlo");
-  sub->add_option("--threads", o.threads, "worker threads, >= 0 (0: all cores). Default: 0")
       ->group("Monte Carlo");
   sub->add_option("--time-quantile", f->time_quantile,
                   "the T_p quantile reported beside 0.5, 0.9, 0.99, in (0, 1). Default: 0.99")

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "parts_config.hpp"
 #include "report.hpp"
 #include "selfalign/analysis/row.hpp"
 #include "selfalign/error.hpp"
@@ -51,24 +52,6 @@ constexpr KeySpec kPartKeys[] = {
     {"", "count", ValueType::number}, {"", "pitch", ValueType::number},
 };
 
-struct PartsFlags {
-  std::string config;
-  std::optional<std::string> method;
-  std::optional<long long> periods, max_periods, steps_per_period, samples_per_period;
-  std::optional<double> restitution, frequency;
-  bool as_json = false;
-  std::optional<std::string> out, csv;
-};
-
-struct PartsSetup {
-  ThreePhaseParameters table{1.0, 0.084, 3.0, 0.9};
-  std::optional<double> step_position;
-  double c_mu = 2.5;
-  RowQueue queue;
-  RowSolver solver;
-  long long periods = 20, max_periods = 1000, samples = 20;
-};
-
 // One [[parts]] entry: `count` parts (default 1) at `pitch` (default: the length) from x.
 void read_part(const json& entry, std::size_t index, const std::string& file, RowQueue& q) {
   const std::string name = "parts[" + std::to_string(index) + "]";
@@ -102,6 +85,8 @@ void read_part(const json& entry, std::size_t index, const std::string& file, Ro
   }
 }
 
+}  // namespace
+
 PartsSetup read_parts_config(const PartsFlags& f) {
   json doc = read_document(f.config, kPartsDocument);
   PartsSetup s;
@@ -133,6 +118,8 @@ PartsSetup read_parts_config(const PartsFlags& f) {
   if (f.restitution) s.queue.restitution = *f.restitution;
   return s;
 }
+
+namespace {
 
 json numbers(const std::vector<double>& v) {
   json a = json::array();
@@ -278,6 +265,7 @@ void add_parts_command(CLI::App& app) {
   add_common(stop, *g);
   stop->add_option("--max-periods", g->max_periods, "periods before the queue is reported as not stopped (1000)");
   stop->callback([g] { run_parts_stop(*g); });
+  add_parts_montecarlo_command(*parts);
 }
 
 }  // namespace selfalign::cli

@@ -72,6 +72,19 @@ void add_uncertainty_flags(CLI::App* sub, UncertaintyFlags& f) {
       ->group("Uncertainty");
 }
 
+void add_monte_carlo_run_flags(CLI::App* sub, int& runs, std::uint64_t& seed,
+                               std::uint64_t& first_run, int& threads) {
+  sub->add_option("--runs", runs,
+                  "Monte-Carlo runs, in [1, 1e7]. Default: " + std::to_string(runs))
+      ->group("Monte Carlo");
+  sub->add_option("--seed", seed, "seed of the draws. Default: 1")->group("Monte Carlo");
+  sub->add_option("--first-run", first_run,
+                  "index of the first run (a chunk of a larger study). Default: 0")
+      ->group("Monte Carlo");
+  sub->add_option("--threads", threads, "worker threads, >= 0 (0: all cores). Default: 0")
+      ->group("Monte Carlo");
+}
+
 void warn_about_request(const DesignRequest& q, bool mu_given) {
   warn_default_mu(mu_given, q.mu, q.mu_static, q.mu_backward);
   warn_if_millimetres("--width", q.width, 1);

@@ -2,6 +2,7 @@
 // What `design` and `montecarlo` share: the request's flags (SI), the uncertainty flags
 // (--uncertain NAME=DIST, --uncertainty-file), and the JSON of the robustness results.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,11 @@ void add_uncertainty_flags(CLI::App* sub, UncertaintyFlags& flags);
 /// lengths that look like millimetres (width, stroke-max, tolerance >= 1 m; distance >= 10 m),
 /// a mass that looks like grams (>= 10 kg).
 void warn_about_request(const DesignRequest& request, bool mu_given);
+
+/// The flags of a Monte-Carlo study's runs (group "Monte Carlo"): --runs (its default shown),
+/// --seed, --first-run, --threads; `montecarlo` and `parts montecarlo` share them.
+void add_monte_carlo_run_flags(CLI::App* sub, int& runs, std::uint64_t& seed,
+                               std::uint64_t& first_run, int& threads);
 
 /// Whether any input of `u` is uncertain (not known).
 bool any_uncertain(const ProcessUncertainty& u);

@@ -41,9 +41,6 @@ const std::array<UncertainInput, kUncertainInputs> kInputs{{
      [](const DesignRequest&) { return 1.0; }, 0, false, "factor on the table's period"},
 }};
 
-// The widest a normal draw reaches: u in [2^-54, 1 - 2^-54] maps to about +-8.3 sd.
-constexpr double kDrawSigmas = 8.3;
-
 std::uint64_t splitmix64(std::uint64_t z) {
   z += 0x9e3779b97f4a7c15ULL;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -99,9 +96,16 @@ double uniform_draw(std::uint64_t seed, std::uint64_t run, std::uint64_t input) 
 
 InputValues draw_inputs(const DesignRequest& q, const ProcessUncertainty& u, std::uint64_t seed,
                         std::uint64_t run) {
+  InputValues known{};
+  for (std::size_t k = 0; k < kInputs.size(); ++k) known[k] = kInputs[k].known(q);
+  return draw_inputs(known, u, seed, run, 0);
+}
+
+InputValues draw_inputs(const InputValues& known, const ProcessUncertainty& u, std::uint64_t seed,
+                        std::uint64_t run, std::uint64_t stream) {
   InputValues v{};
   for (std::size_t k = 0; k < kInputs.size(); ++k)
-    v[k] = quantile(u.*kInputs[k].member, uniform_draw(seed, run, k), kInputs[k].known(q));
+    v[k] = quantile(u.*kInputs[k].member, uniform_draw(seed, run, stream + k), known[k]);
   return v;
 }
 

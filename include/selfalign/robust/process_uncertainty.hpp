@@ -29,6 +29,10 @@ namespace selfalign {
 
 inline constexpr std::size_t kUncertainInputs = 7;
 
+/// The widest a normal draw reaches: u in [2^-54, 1 - 2^-54] maps to about +-8.3 sd (the
+/// box(d, known, kDrawSigmas) every draw lies in).
+inline constexpr double kDrawSigmas = 8.3;
+
 /// One value per uncertain input, in the order of uncertain_inputs().
 using InputValues = std::array<double, kUncertainInputs>;
 
@@ -77,6 +81,14 @@ InputValues nominal_inputs(const DesignRequest& request, const ProcessUncertaint
 /// threads, chunks or machines draws the same values.
 InputValues draw_inputs(const DesignRequest& request, const ProcessUncertainty& u,
                         std::uint64_t seed, std::uint64_t run);
+
+/// The same draw with the known values given (`known`, InputValues order: what an input
+/// without uncertainty takes) and input k taking uniform_draw(seed, run, stream + k):
+/// draw_inputs(request, u, seed, run) is stream 0 with the request's known values. A queue's
+/// part i draws stream kUncertainInputs * i (robust/row_monte_carlo.hpp), so part 0 draws
+/// what the single-part study draws.
+InputValues draw_inputs(const InputValues& known, const ProcessUncertainty& u,
+                        std::uint64_t seed, std::uint64_t run, std::uint64_t stream);
 
 /// The uniform number in (0, 1) behind draw (seed, run, input): SplitMix64 of a mix of the
 /// three, top 53 bits, offset by half a unit so 0 and 1 never occur.
