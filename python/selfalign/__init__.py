@@ -206,6 +206,8 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     RowStop,
     row_run,
     row_stop,
+    RowMonteCarloResult,
+    row_monte_carlo,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

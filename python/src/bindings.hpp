@@ -7,6 +7,10 @@
 
 #include "int_enum.hpp"
 
+namespace selfalign {
+struct RowQueue;
+}  // namespace selfalign
+
 namespace selfalign::python {
 
 namespace py = pybind11;
@@ -31,6 +35,9 @@ void bind_planar(py::module_& m);        // contact patches, planar fields, rigi
 void bind_parameters(py::module_& m);    // the parameter view: model_parameters, with_parameters
 void bind_feeder(py::module_& m);        // the vibratory feeder: drive, onsets, runs (issue 23)
 void bind_rows(py::module_& m);          // queues of 1-D parts: RowPart, RowQueue, row_run, row_stop (issue 24)
+void bind_row_monte_carlo(py::module_& m);  // row_monte_carlo, RowMonteCarloResult (after rows, uncertainty)
+/// A `queue` argument: a RowQueue, or a list of RowPart (restitution 0); TypeError otherwise (rows.cpp).
+RowQueue to_row_queue(const py::handle& queue);
 
 /// Rules for every class bound above (classes.cpp): an object whose __init__ was not called
 /// raises TypeError when used; pickling under every protocol, or a TypeError. Called last.

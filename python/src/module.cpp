@@ -28,5 +28,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_parameters(m);
   bind_feeder(m);
   bind_rows(m);
+  bind_row_monte_carlo(m);
   finish_classes(m);
 }

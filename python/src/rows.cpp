@@ -36,16 +36,6 @@ std::vector<RowPart> to_parts(const py::handle& parts, const std::string& name) 
   return out;
 }
 
-// A row_run/row_stop `queue` argument: a RowQueue, or a list of RowPart (restitution 0).
-RowQueue to_queue(const py::handle& queue) {
-  if (py::isinstance<RowQueue>(queue)) return queue.cast<RowQueue>();
-  if (py::isinstance<py::str>(queue) || py::isinstance<py::bytes>(queue) ||
-      !PySequence_Check(queue.ptr()))
-    throw py::type_error("queue: expected a RowQueue or a list of RowPart, got " +
-                         python_type_name(queue));
-  return RowQueue{to_parts(queue, "queue"), 0.0};
-}
-
 // samples x parts as a 2-D float64 array (a read-only copy).
 py::array positions_array(const std::vector<std::vector<double>>& positions) {
   const auto rows = static_cast<py::ssize_t>(positions.size());
@@ -239,7 +229,7 @@ void bind_analyses(py::module_& m) {
       [](const TableProfile& profile, const py::object& queue_in, long long periods,
          std::optional<FrictionField> field, Method method, long long steps_per_period,
          long long samples_per_period) {
-        const RowQueue queue = to_queue(queue_in);
+        const RowQueue queue = to_row_queue(queue_in);
         check_run_size(queue, periods, "periods", method, steps_per_period, samples_per_period);
         const py::gil_scoped_release release;
         return row_run(profile, queue, field ? &*field : nullptr, periods,
@@ -268,7 +258,7 @@ samples_per_period + 1) x parts) or take more than 1e9 Moreau steps. Runs withou
       [](const TableProfile& profile, const py::object& queue_in, const FrictionField& field,
          long long max_periods, Method method, long long steps_per_period,
          long long samples_per_period) {
-        const RowQueue queue = to_queue(queue_in);
+        const RowQueue queue = to_row_queue(queue_in);
         check_run_size(queue, max_periods, "max_periods", method, steps_per_period,
                        samples_per_period);
         const py::gil_scoped_release release;
@@ -294,6 +284,16 @@ or 1e9 Moreau steps. Runs without the GIL; max_periods bounds its work.)doc");
 }
 
 }  // namespace
+
+// A row_run/row_stop `queue` argument: a RowQueue, or a list of RowPart (restitution 0).
+RowQueue to_row_queue(const py::handle& queue) {
+  if (py::isinstance<RowQueue>(queue)) return queue.cast<RowQueue>();
+  if (py::isinstance<py::str>(queue) || py::isinstance<py::bytes>(queue) ||
+      !PySequence_Check(queue.ptr()))
+    throw py::type_error("queue: expected a RowQueue or a list of RowPart, got " +
+                         python_type_name(queue));
+  return RowQueue{to_parts(queue, "queue"), 0.0};
+}
 
 void bind_rows(py::module_& m) {
   bind_parts(m);

@@ -203,6 +203,9 @@ EXAMPLES = {
     "RowStop": lambda: sa.row_stop(  # not stopped: NaN stop time
         PROFILE, example("RowQueue"), sa.FrictionField.steps([1.5], [1.0, 4.0]), 2,
         samples_per_period=3),
+    "RowMonteCarloResult": lambda: sa.row_monte_carlo(  # not stopped in 2 periods: NaN columns
+        PROFILE, example("RowQueue"), 1.5, 4.0, sa.ProcessUncertainty(c_mu="uniform:3.5,4.5"),
+        runs=3, max_periods=2),
 }
 
 # Bound classes that are not value types.

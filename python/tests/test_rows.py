@@ -198,3 +198,62 @@ def test_the_queue_figure(tmp_path):
     import matplotlib.pyplot as plt
 
     plt.close(fig)
+
+
+# --- Monte Carlo of a queue (robust/row_monte_carlo.hpp, docs/rows.md section 11) ----------
+
+
+def test_row_monte_carlo_without_uncertainty_is_row_stop_in_every_run():
+    # every input known: each run is the nominal queue, so row_stop's end positions and errors
+    # (sampled once a period, as the study samples) in every run, bit for bit
+    ref = sa.row_stop(PROFILE, stopping_queue(), STEP, 400, samples_per_period=1)
+    r = sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0, sa.ProcessUncertainty(),
+                           runs=3, max_periods=400, tolerance=0.3)
+    assert r.end_position.shape == (3, 3)
+    assert r.stopped.dtype == np.bool_ and r.stopped.all()
+    for run in range(3):
+        np.testing.assert_array_equal(r.end_position[run], ref.x)
+        np.testing.assert_array_equal(r.error[run], ref.error)
+    np.testing.assert_array_equal(r.p_within, [1.0, 1.0, 1.0])
+    assert r.p_all_within == 1.0
+
+
+def test_row_monte_carlo_draws_follow_draw_inputs_and_the_threads_do_not_matter():
+    # part 0 of run r draws what the single-part study draws (draw_inputs); mu is the factor on
+    # the nominal 0.3; the per-run inputs are part 0's for every part
+    u = sa.ProcessUncertainty(mu="normal:0.3,5%", c_mu="uniform:3.5,4.5",
+                              x_mu_offset="uniform:-0.02,0.02")
+    one = sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0, u, runs=8, seed=3,
+                             max_periods=400, threads=1)
+    two = sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0, u, runs=8, seed=3,
+                             max_periods=400, threads=2)
+    assert one == two
+    single = sa.draw_inputs(sa.DesignRequest(mu=0.3, c_mu=4.0), u, seed=3, runs=8)
+    np.testing.assert_array_equal(one.inputs["mu"][:, 0], single["mu"] / 0.3)
+    for name in ("c_mu", "x_mu_offset"):
+        for part in range(3):
+            np.testing.assert_array_equal(one.inputs[name][:, part], single[name])
+    assert np.isnan(one.inputs["width"]).all()
+    assert not np.array_equal(one.inputs["mu"][:, 1], one.inputs["mu"][:, 0])  # own stream
+    # the summary from the columns
+    stopped = one.queue_stopped
+    np.testing.assert_allclose(one.end_mean, one.end_position[stopped].mean(axis=0), rtol=1e-14)
+    np.testing.assert_allclose(one.error_sd, one.error[stopped].std(axis=0, ddof=1), rtol=1e-12)
+    assert pickle.loads(pickle.dumps(one)) == one
+
+
+def test_row_monte_carlo_absent_values_are_nan_and_bad_input_is_named():
+    u = sa.ProcessUncertainty(c_mu="uniform:3.5,4.5")
+    r = sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0, u, runs=2, max_periods=2)
+    assert not r.queue_stopped.any()
+    assert np.isnan(r.end_position).all() and np.isnan(r.error).all()
+    assert np.isnan(r.end_mean).all() and (r.within == 0).all()
+    # no run stopped: no quantile (empirical_quantile's NaN, as MonteCarloResult's)
+    assert math.isnan(r.process_time_quantile(0, 0.5))
+    with pytest.raises(sa.InvalidParameter, match="width.uncertain"):
+        sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0,
+                           sa.ProcessUncertainty(width="uniform:0.9,1.1"), runs=2)
+    with pytest.raises(sa.InvalidParameter, match="runs"):
+        sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0, u, runs=0)
+    with pytest.raises(sa.InvalidParameter, match="tolerance"):
+        sa.row_monte_carlo(PROFILE, stopping_queue(), 1.5, 4.0, u, runs=2, tolerance=0.0)
