@@ -6,7 +6,7 @@
 #include <variant>
 
 #include "../planar/rigid_body_step.hpp"
-#include "disc_stage.hpp"
+#include "outline_stage.hpp"
 #include "row_stage.hpp"
 #include "selfalign/core/model.hpp"
 #include "selfalign/core/state.hpp"
@@ -96,8 +96,7 @@ void validate(const Model& m) {
                               require_planar_law(b.law);
                               if (!(b.mass > 0 && b.mass <= 1e50))
                                 throw InvalidParameter("mass", b.mass, "must be in (0, 1e50]");
-                              if (!(b.radius >= 0 && b.radius <= 1e50))
-                                throw InvalidParameter("radius", b.radius, "must be in [0, 1e50]");
+                              validate(b.outline);
                             },
                             [&m](const SliderBody& b) {
                               if (const auto* u = std::get_if<UniformFootprint>(&b.footprint)) {
@@ -124,7 +123,7 @@ void validate(const Model& m) {
     }
   }
   detail::validate_part_contacts(m);
-  detail::validate_disc_contacts(m);
+  detail::validate_outline_contacts(m);
 }
 
 State make_state(const Model& model, double t, std::span<const PlanarPose> poses,
@@ -163,7 +162,7 @@ State make_state(const Model& model, double t, std::span<const PlanarPose> poses
     }
   }
   detail::prepare_row(model, s);
-  detail::check_disc_overlap(model, s);
+  detail::check_outline_overlap(model, s);
   return s;
 }
 
@@ -189,7 +188,7 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
   }
   const bool flight = model.gravity && model.gravity->flight;  // Moreau-Jean's normal stage
   const bool rows = !model.part_contacts.empty();
-  const bool discs = !model.disc_contacts.empty();
+  const bool outlines = !model.outline_contacts.empty();
   s.loads.resize(n);
   long long taken = 0;
   for (; taken < steps && s.status == StepStatus::ok; ++taken) {
@@ -213,9 +212,9 @@ long long step(const Model& model, State& s, long long steps, MotionObserver* ob
                                            model.gravity->restitution, loads, s.bodies[i])
                           : loads;
     // the body stages, block by block: rigid bodies in contact with each other are coupled by
-    // the disc stage, touching 1-D parts by the row stage; a body alone takes its own step
-    if (discs) {
-      detail::disc_step(model, s, s.table, tb1, s.loads.data());
+    // the outline stage, touching 1-D parts by the row stage; a body alone takes its own step
+    if (outlines) {
+      detail::outline_step(model, s, s.table, tb1, s.loads.data());
     } else {
       for (std::size_t i = 0; i < n; ++i)
         if (const auto* b = std::get_if<RigidBody>(&model.bodies[i]))

@@ -27,7 +27,7 @@ namespace selfalign::detail {
 using StepLoads = core::StepLoads;
 
 // One rigid body's step in stages, so that bodies in contact with each other (core::
-// DiscContact) can exchange impulses between the impulse and the integrate stages:
+// OutlineContact) can exchange impulses between the impulse and the integrate stages:
 //   rigid_body_prepare    contacts and loads at the midpoint pose, the free relative twist
 //   rigid_body_solve      the patch's friction impulse (PatchImpulseSolver: exact stick) for
 //                         the free twist plus an external impulse per unit mass (world axes)
@@ -36,6 +36,7 @@ using StepLoads = core::StepLoads;
 struct RigidStage {
   std::array<double, 3> rel{};  // the free relative twist (v_x, v_y, omega), world axes
   double xm = 0, ym = 0;        // the centre's world position at the step's midpoint
+  double am = 0;                // the body's world angle at the step's midpoint
   std::size_t n = 0;
   double inertia = 0;
   PlanarTwist u;                // the relative twist at t_k, table axes
@@ -70,7 +71,7 @@ RigidStage rigid_body_prepare(const PlanarField& field, const FrictionLaw& law,
   const double cp = std::cos(psi), sp = std::sin(psi);
   const double xm = tb.x + 0.5 * h * tb.vx + cp * xi - sp * eta;
   const double ym = tb.y + 0.5 * h * tb.vy + sp * xi + cp * eta;
-  g.xm = xm, g.ym = ym;
+  g.xm = xm, g.ym = ym, g.am = psi + phi;
   const double cf = std::cos(phi), sf = std::sin(phi);
   const double ca = std::cos(psi + phi), sa = std::sin(psi + phi);
   for (std::size_t i = 0; i < n; ++i) {

@@ -8,8 +8,8 @@
 /// (planar_field.hpp), its normal motion with gravity and the incline (Gravity); the time step.
 /// The number of bodies is a runtime value. Flight after a lift-off is Gravity::flight's
 /// (Moreau-Jean); otherwise the step reports lift_off and stops. Part-part contacts: between
-/// 1-D parts of a row (PartContact, issue 24; docs/rows.md) and between planar parts with disc
-/// outlines (DiscContact); not yet between rectangles and polygons.
+/// 1-D parts of a row (PartContact, issue 24; docs/rows.md) and between planar parts with
+/// outlines (OutlineContact: discs and convex polygons, planar/outline.hpp).
 
 #include <optional>
 #include <variant>
@@ -17,6 +17,7 @@
 
 #include "selfalign/friction/friction_law.hpp"
 #include "selfalign/friction/friction_field.hpp"
+#include "selfalign/planar/outline.hpp"
 #include "selfalign/planar/planar_field.hpp"
 #include "selfalign/planar/rigid_part.hpp"
 #include "selfalign/planar/planar_table_motion.hpp"
@@ -30,8 +31,9 @@ struct RigidBody {
   RigidPart part;       ///< inertia j = I/(m L^2) [-] and contact patch (body frame)
   FrictionLaw law{};    ///< body-table law: isotropic, velocity-independent (planar solvers)
   double mass = 1;      ///< m / m_ref [-], in (0, 1e50]: ratios between bodies in contact
-  /// The radius of its disc outline about the centre of mass [-] (DiscContact); 0: no outline.
-  double radius = 0;
+  /// Its outline (OutlineContact): a disc or a convex polygon about the centre of mass, body
+  /// frame [-]; NoOutline: it touches no other part.
+  Outline outline{};
 };
 
 /// The paper's 1-D part (Sect. 3) as a body: one translational coordinate x [-] relative to the
@@ -98,14 +100,18 @@ struct PartContact {
   double restitution = 0;  ///< e in [0, 1]
 };
 
-/// A unilateral contact between two planar parts with disc outlines (RigidBody::radius > 0;
-/// issue 24, docs/rows.md section 10): the distance between their centres stays >= the sum of
-/// their radii. Moreau's step treats it as active where the gap at the step's midpoint is
-/// <= 0, with Newton's restitution e on the normal relative velocity and Coulomb friction
-/// `friction` between the parts at the contact point; the bodies' patch friction with the
-/// table keeps its exact stick (block Gauss-Seidel: each body's patch problem solved exactly
-/// for the impulses of its contacts, each contact's impulse projected on its cone).
-struct DiscContact {
+/// A unilateral contact between two planar parts with outlines (RigidBody::outline: discs and
+/// convex polygons; issue 24, docs/rows.md section 10): the outlines do not overlap. At each
+/// step the contact's manifold (planar/outline.hpp: one point, or two for parallel faces) is
+/// found at the step's midpoint poses; the contact is active where its smallest gap is <= 0,
+/// and then each of its points carries a unilateral normal impulse (Newton's restitution e on
+/// the normal relative velocity where the point touches; where it is still apart, the
+/// speculative bound that it may close its gap by the step's end) and a Coulomb tangential
+/// impulse `friction` between the parts. Rows of polygons pushed together turn unstably so
+/// far (docs/rows.md section 10). The bodies' patch friction with the table keeps its exact stick (block
+/// Gauss-Seidel: each body's patch problem solved exactly for the impulses of its contacts,
+/// each point's impulse projected on its cone).
+struct OutlineContact {
   int a = 0, b = 1;
   double restitution = 0;  ///< e in [0, 1]
   double friction = 0.5;   ///< Coulomb coefficient between the parts, >= 0
@@ -123,8 +129,8 @@ struct Model {
   /// front of at most one, the contacts form chains (no cycle), and the parts of a contact
   /// have a length > 0 and a velocity-independent law. Empty: the bodies never touch.
   std::vector<PartContact> part_contacts{};
-  /// Contacts between planar parts with disc outlines (rigid bodies); empty: none.
-  std::vector<DiscContact> disc_contacts{};
+  /// Contacts between planar parts with outlines (rigid bodies); empty: none.
+  std::vector<OutlineContact> outline_contacts{};
 };
 
 /// Throws InvalidParameter naming the first invalid part ("gravity.g", "gravity.incline",
@@ -133,8 +139,11 @@ struct Model {
 /// outside [1e-50, 1e50], or a uniform footprint on a field other than uniform or axis) and
 /// "bodies[i].motion" (a table that turns), "bodies[i].mass", "bodies[i].length" (not > 0 in
 /// a row), "bodies[i].law" (velocity-dependent in a row); "part_contacts[j]" (an index out of
-/// range, a body that is not a 1-D part, a body in two contacts on one side, a cycle) and
-/// "part_contacts[j].restitution").
+/// range, a body that is not a 1-D part, a body in two contacts on one side, a cycle),
+/// "part_contacts[j].restitution"; for a rigid body "bodies[i].mass", "bodies[i].radius",
+/// "bodies[i].outline" (outline.hpp's checks); "outline_contacts[j]" (an index out of range,
+/// not a rigid body, a == b), "bodies[i].outline" (a body of a contact without one),
+/// "outline_contacts[j].restitution" and "outline_contacts[j].friction").
 void validate(const Model& model);
 
 /// The gap (x_front - length_front) - x_rear of part contact `contact` with its parts' leading
