@@ -203,12 +203,7 @@ TEST(OutlineContacts, OutlinesAreValidatedByName) {
 // along the axis is the 1-D part's with a point footprint at its centre (the 1-D field shifted
 // by L/2: its leading edge). The two points resist turning; the parts' outlines meet face to
 // face (two-point manifolds).
-// DISABLED: not met yet (issue 24). After the first collision the row turns: every part's
-// angle grows from 1e-20 to 1e-6 within one period (about 1.6 % a step, far faster than any
-// physical buckling of the pushed row), and the block Gauss-Seidel runs to its sweep cap
-// (the test takes ~200 s): two manifold points and exact stick make the impulses redundant,
-// and the impulse-change stopping test never settles. Kept so the defect reproduces.
-TEST(OutlineContacts, DISABLED_ARowOfRectanglesInARoughPocketStopsAsTheOneDimensionalRow) {
+TEST(OutlineContacts, ARowOfRectanglesInARoughPocketStopsAsTheOneDimensionalRow) {
   constexpr double kL = 0.25, kW = 0.1, kStep = 1.5;
   const std::vector<FrictionLaw> laws{FrictionLaw(1.1, 0.8), FrictionLaw(1.2, 1.0), FrictionLaw(1.2, 1.0)};
   const std::vector<double> masses{1.0, 1.5, 1.0}, centres{0.0, 0.3, 0.55};  // touching: 2, 3
@@ -254,12 +249,15 @@ TEST(OutlineContacts, DISABLED_ARowOfRectanglesInARoughPocketStopsAsTheOneDimens
     core::State s2 = core::make_state(planar, 0.0, p, twists);
     core::step(planar, s2, kSteps);
     // the same per-step problem solved by block Gauss-Seidel (tolerance 1e-12 a step) against
-    // the chain problem: agreement to 1e-9 over 240 000 steps; nothing turns
+    // the chain problem over 240 000 steps: the accumulated bound is 240 000 x 1e-12 = 2.4e-7;
+    // measured within 1e-9 along x and 1.4e-8 turned by 30 degrees (the turned frame rounds every
+    // position and field reading differently), so 1e-9 and 1e-7. Nothing turns.
+    const double tolerance = angle == 0 ? 1e-9 : 1e-7;
     for (std::size_t i = 0; i < 3; ++i) {
       const auto& q = s2.bodies[i].pose;
-      EXPECT_NEAR(q.x * c + q.y * sn, expected[i], 1e-9) << "angle " << angle << " part " << i;
-      EXPECT_NEAR(-q.x * sn + q.y * c, 0, 1e-9) << "angle " << angle << " part " << i;
-      EXPECT_NEAR(q.angle, angle, 1e-9) << "angle " << angle << " part " << i;
+      EXPECT_NEAR(q.x * c + q.y * sn, expected[i], tolerance) << "angle " << angle << " part " << i;
+      EXPECT_NEAR(-q.x * sn + q.y * c, 0, tolerance) << "angle " << angle << " part " << i;
+      EXPECT_NEAR(q.angle, angle, tolerance) << "angle " << angle << " part " << i;
     }
   }
 }

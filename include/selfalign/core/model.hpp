@@ -107,8 +107,7 @@ struct PartContact {
 /// and then each of its points carries a unilateral normal impulse (Newton's restitution e on
 /// the normal relative velocity where the point touches; where it is still apart, the
 /// speculative bound that it may close its gap by the step's end) and a Coulomb tangential
-/// impulse `friction` between the parts. Rows of polygons pushed together turn unstably so
-/// far (docs/rows.md section 10). The bodies' patch friction with the table keeps its exact stick (block
+/// impulse `friction` between the parts. The bodies' patch friction with the table keeps its exact stick (block
 /// Gauss-Seidel: each body's patch problem solved exactly for the impulses of its contacts,
 /// each point's impulse projected on its cone).
 struct OutlineContact {
