@@ -5,12 +5,13 @@
 //   per body    rigid_body_prepare: its patch contacts and free relative twist at the midpoint
 //   contacts    each contact's manifold at the midpoint poses (planar/outline.hpp); active
 //               where its smallest gap is <= 0, with its points of gap <= kManifoldSlop
-//   coupling    block Gauss-Seidel over the active points: each body's patch problem solved
+//   coupling    block Gauss-Seidel over the active contacts: each body's patch problem solved
 //               exactly (PatchImpulseSolver: exact stick) for the impulses of its contacts,
-//               then each point's normal impulse projected on >= 0 (Newton's target
-//               -e min(u_n, 0)) and its tangential one on the Coulomb interval; until no
-//               impulse changes by more than kOutlineTolerance of the largest (or
-//               kOutlineSweeps sweeps)
+//               then each contact's points (one or two) solved together exactly for their
+//               impulses (free-body Delassus block, Coulomb's law, normal >= 0 with Newton's
+//               target -e min(u_n, 0) or the speculative one; by enumeration of the points'
+//               modes); until no impulse changes by more than kOutlineTolerance of the
+//               largest (or kOutlineSweeps sweeps)
 //   integrate   rigid_body_integrate
 // A body in no active contact takes rigid_body_step itself (bit for bit as alone).
 
