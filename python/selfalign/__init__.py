@@ -208,6 +208,8 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     row_stop,
     RowMonteCarloResult,
     row_monte_carlo,
+    # measured motion for identification (issue 25; docs/identification.md)
+    read_measured_motion,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

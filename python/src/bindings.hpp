@@ -36,6 +36,7 @@ void bind_parameters(py::module_& m);    // the parameter view: model_parameters
 void bind_feeder(py::module_& m);        // the vibratory feeder: drive, onsets, runs (issue 23)
 void bind_rows(py::module_& m);          // queues of 1-D parts: RowPart, RowQueue, row_run, row_stop (issue 24)
 void bind_row_monte_carlo(py::module_& m);  // row_monte_carlo, RowMonteCarloResult (after rows, uncertainty)
+void bind_measured_motion(py::module_& m);  // read_measured_motion (issue 25)
 /// A `queue` argument: a RowQueue, or a list of RowPart (restitution 0); TypeError otherwise (rows.cpp).
 RowQueue to_row_queue(const py::handle& queue);
 

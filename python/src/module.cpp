@@ -29,5 +29,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_feeder(m);
   bind_rows(m);
   bind_row_monte_carlo(m);
+  bind_measured_motion(m);
   finish_classes(m);
 }
