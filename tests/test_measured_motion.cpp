@@ -119,5 +119,42 @@ TEST(MeasuredMotion, AMissingFileIsNamed) {
   }
 }
 
+
+// The side file's units: parsed, applied by column name, and checked against the header.
+MeasuredMotion parse_with(const std::string& text, const std::string& units_text) {
+  std::istringstream u(units_text);
+  const auto units = parse_measured_units(u, "run.csv.units");
+  std::istringstream in(text);
+  return parse_measured_motion(in, "run.csv", units, "run.csv.units");
+}
+
+std::string side_error(const std::string& text, const std::string& units_text) {
+  try {
+    parse_with(text, units_text);
+  } catch (const InvalidParameter& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(MeasuredMotion, ASideFileGivesTheUnitsTheHeaderCannotCarry) {
+  const MeasuredMotion m = parse_with("t x angle\n0 2 180\n40 3 90\n",
+                                      "# tracker export units\nt = ms\nx = \"mm\"\nangle = deg\n");
+  EXPECT_DOUBLE_EQ(m.t[1], 0.04);
+  EXPECT_DOUBLE_EQ(m.x[0], 2e-3);
+  EXPECT_DOUBLE_EQ(m.angle[0], std::acos(-1.0));
+  // the same unit in both places is fine; a different one is an error naming both
+  EXPECT_DOUBLE_EQ(parse_with("t,x [mm]\n0,5\n", "x = mm\n").x[0], 5e-3);
+  const std::string clash = side_error("t,x [mm]\n0,5\n", "x = cm\n");
+  EXPECT_NE(clash.find("run.csv.units x = cm: disagrees with the header's unit 'mm'"),
+            std::string::npos) << clash;
+  EXPECT_NE(side_error("t,x\n0,5\n", "y = mm\n").find("does not have"), std::string::npos);
+  EXPECT_NE(side_error("t,x\n0,5\n", "x mm\n").find("run.csv.units:1"), std::string::npos);
+  EXPECT_NE(side_error("t,x\n0,5\n", "x = mm\nx = cm\n").find("run.csv.units:2"),
+            std::string::npos);
+  EXPECT_NE(side_error("t,x\n0,5\n", "x = parsec\n").find("must be one of: m, cm, mm, um"),
+            std::string::npos);
+}
+
 }  // namespace measured_motion_test
 }  // namespace selfalign

@@ -51,8 +51,9 @@ void bind_measured_motion(py::module_& m) {
 Reads a measured run of a part (docs/identification.md, "Data in"): a CSV or a video-tracking
 export with a header naming its columns (t/time, x/position, y, angle/theta, table_x/
 table_position, table_a/table_acceleration; units as suffixes "x [mm]", "x (mm)", "x/mm" or
-"x_mm", SI without one), fields separated by commas, semicolons, tabs or spaces, title lines
-above the header, '#' comments. Returns a dict, all in SI:
+"x_mm", or in a side file `<path>.units` of lines "column = unit"; SI without one), fields
+separated by commas, semicolons, tabs or spaces, title lines above the header, '#'
+comments. Returns a dict, all in SI:
   float64  t [s] (strictly increasing, not necessarily uniform), x [m]; y [m], angle [rad],
            table_position [m], table_acceleration [m/s^2] (None where the file has no such
            column)
@@ -61,7 +62,8 @@ above the header, '#' comments. Returns a dict, all in SI:
   str      source, title; list[str] ignored_columns
 Raises InvalidParameter with one line naming the file and line: no time column, time that does
 not increase, a field that is text, an unknown unit, a column named twice, no x, no complete
-row.)doc");
+row; in the side file a bad line, a column the data lacks or a unit that disagrees with the
+header's.)doc");
 }
 
 }  // namespace selfalign::python

@@ -42,3 +42,12 @@ def test_no_time_column_and_a_wrong_type(tmp_path):
         sa.read_measured_motion(path)
     with pytest.raises(TypeError, match="path"):
         sa.read_measured_motion(3)
+
+
+def test_a_side_file_gives_the_units(tmp_path):
+    path = tmp_path / "run2.txt"
+    path.write_text("t x\n0 2\n40 3\n")
+    (tmp_path / "run2.txt.units").write_text("t = ms\nx = mm\n")
+    r = sa.read_measured_motion(path)
+    np.testing.assert_array_equal(r["t"], [0.0, 0.04])
+    np.testing.assert_array_equal(r["x"], [2e-3, 3e-3])

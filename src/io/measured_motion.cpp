@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -144,7 +145,33 @@ bool blank_or_comment(const std::string& line) {
 
 }  // namespace
 
-MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source) {
+std::map<std::string, std::string> parse_measured_units(std::istream& in,
+                                                        const std::string& source) {
+  std::map<std::string, std::string> units;
+  std::string text;
+  long long number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    if (blank_or_comment(text)) continue;
+    const auto eq = text.find('=');
+    const std::string name = eq == std::string::npos ? "" : lower(detail::trim_csv(text.substr(0, eq)));
+    std::string unit = eq == std::string::npos ? "" : lower(detail::trim_csv(text.substr(eq + 1)));
+    if (unit.size() >= 2 && (unit.front() == '"' || unit.front() == '\'') && unit.back() == unit.front())
+      unit = unit.substr(1, unit.size() - 2);
+    if (name.empty() || unit.empty())
+      throw InvalidParameter(source + ":" + std::to_string(number), "'" + detail::trim_csv(text) + "'",
+                             "must be 'column = unit' (e.g. x = mm)");
+    if (units.count(name))
+      throw InvalidParameter(source + ":" + std::to_string(number), name,
+                             "gives a unit for a column a line before it already does");
+    units[name] = unit;
+  }
+  return units;
+}
+
+MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source,
+                                     const std::map<std::string, std::string>& units,
+                                     const std::string& units_source) {
   MeasuredMotion out;
   out.source = source;
   const auto where = [&](long long n) { return source + ":" + std::to_string(n); };
@@ -166,6 +193,10 @@ MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source
     const std::vector<std::string> fields = split(text, sep);
     std::vector<Column> columns;
     for (const std::string& f : fields) columns.push_back(split_column(f));
+    const auto side = [&](const Column& c) {
+      const auto u = units.find(c.name);
+      return u == units.end() ? std::string() : u->second;
+    };
     if (std::none_of(columns.begin(), columns.end(),
                      [](const Column& c) { return quantity_of(c.name) == kTime; })) {
       out.title += (out.title.empty() ? "" : "; ") + detail::trim_csv(text);
@@ -183,6 +214,13 @@ MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source
                                "'" + detail::trim_csv(fields[i]) + "'",
                                "names a quantity a column before it already holds");
       present[*q] = true;
+      if (const std::string u = side(columns[i]); !u.empty()) {
+        if (!columns[i].unit.empty() && columns[i].unit != u)
+          throw InvalidParameter(units_source + " " + columns[i].name, u,
+                                 "disagrees with the header's unit '" + columns[i].unit + "' (" +
+                                     where(number) + ")");
+        columns[i].unit = u;
+      }
       const auto f = columns[i].unit.empty() ? std::optional<double>(1.0)
                                              : unit_factor(kDimension[*q], columns[i].unit);
       if (!f)
@@ -190,6 +228,11 @@ MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source
                                columns[i].unit, units_allowed(kDimension[*q]));
       factor[*q] = *f;
     }
+    for (const auto& [name, unit] : units)
+      if (std::none_of(columns.begin(), columns.end(),
+                       [&name = name](const Column& c) { return c.name == name; }))
+        throw InvalidParameter(units_source + " " + name, unit,
+                               "names a column the header of " + source + " does not have");
     width = fields.size();
     break;
   }
@@ -250,9 +293,15 @@ MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source
 MeasuredMotion read_measured_motion(const std::string& path) {
   constexpr std::uintmax_t kMaxBytes = 512u << 20;
   require_input_file("data", path, "data", kMaxBytes);
+  std::map<std::string, std::string> units;
+  const std::string side = path + ".units";
+  if (std::ifstream u(side); u) {
+    require_input_file("data units", side, "data", 1u << 20);
+    units = parse_measured_units(u, side);
+  }
   std::ifstream in(path);
   if (!in) throw InvalidParameter("data", path, "must be a readable CSV file");
-  return parse_measured_motion(in, path);
+  return parse_measured_motion(in, path, units, side);
 }
 
 }  // namespace selfalign

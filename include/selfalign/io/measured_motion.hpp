@@ -15,12 +15,15 @@
 ///    table_acceleration); other columns are ignored and listed;
 ///  - each column's unit as a suffix: "x [mm]", "x (mm)", "x/mm" or "x_mm"; without one, SI
 ///    (s, m, rad, m/s^2). Units: time s, ms, us, min; length m, cm, mm, um; angle rad, deg;
-///    acceleration m/s^2, mm/s^2, g (9.80665 m/s^2);
+///    acceleration m/s^2, mm/s^2, g (9.80665 m/s^2); or in a side file beside the data,
+///    `<data>.units`, of lines `column = unit` ('#' comments), for files whose header cannot
+///    carry them (a unit in both places must agree);
 ///  - time stamps need not be uniform but must strictly increase;
 ///  - a row with a missing value (an empty field, nan, NA, '-', or fewer fields than the header)
 ///    is skipped and counted.
 
 #include <istream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,13 +44,22 @@ struct MeasuredMotion {
   std::vector<std::string> ignored_columns; ///< header columns that name no known quantity
 };
 
-/// Reads a measured run from `path` (at most 512 MB). Throws InvalidParameter with one line
-/// naming the file and line: no header with a time column, a column named twice, an unknown
-/// unit, a field that is neither a number nor a missing value, time that does not strictly
-/// increase, no x column, or no complete row.
+/// Reads a measured run from `path` (at most 512 MB), with the units of `path + ".units"` where
+/// that file exists. Throws InvalidParameter with one line naming the file and line: no header
+/// with a time column, a column named twice, an unknown unit, a field that is neither a number
+/// nor a missing value, time that does not strictly increase, no x column, or no complete row;
+/// in the side file a line that is not `column = unit`, a column the data does not have, or a
+/// unit that disagrees with the header's.
 MeasuredMotion read_measured_motion(const std::string& path);
 
-/// The same from a stream; `source` names it in errors and in the result.
-MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source);
+/// The column units of a side file (`column = unit` per line, '#' comments, blank lines;
+/// quotes around the unit allowed): column name (lower case) -> unit; `source` names the file.
+std::map<std::string, std::string> parse_measured_units(std::istream& in, const std::string& source);
+
+/// The run from a stream; `source` names it in errors and in the result; `units` (from
+/// parse_measured_units, named `units_source` in errors) gives units for columns by name.
+MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source,
+                                     const std::map<std::string, std::string>& units = {},
+                                     const std::string& units_source = "");
 
 }  // namespace selfalign
