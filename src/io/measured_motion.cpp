@@ -20,10 +20,11 @@ namespace {
 
 // The quantities a column can hold, in MeasuredMotion's order.
 enum Quantity { kTime, kX, kY, kAngle, kTablePosition, kTableAcceleration, kQuantities };
-// Each quantity's dimension for its units.
-enum Dimension { kSeconds, kMetres, kRadians, kMetresPerSecondSquared };
+// Each quantity's kind of unit, for its units' SI factors (named apart from selfalign::Dimension,
+// the model's scaling, which a unity build may see beside it).
+enum UnitKind { kSeconds, kMetres, kRadians, kMetresPerSecondSquared };
 
-constexpr std::array<Dimension, kQuantities> kDimension{kSeconds, kMetres, kMetres, kRadians,
+constexpr std::array<UnitKind, kQuantities> kUnitKind{kSeconds, kMetres, kMetres, kRadians,
                                                         kMetres, kMetresPerSecondSquared};
 
 std::string lower(std::string s) {
@@ -42,7 +43,7 @@ std::optional<Quantity> quantity_of(const std::string& name) {
 }
 
 // The factor from `unit` to SI for dimension d, or none.
-std::optional<double> unit_factor(Dimension d, const std::string& unit) {
+std::optional<double> unit_factor(UnitKind d, const std::string& unit) {
   const double pi = std::acos(-1.0);
   switch (d) {
     case kSeconds:
@@ -70,7 +71,7 @@ std::optional<double> unit_factor(Dimension d, const std::string& unit) {
   return std::nullopt;
 }
 
-const char* units_allowed(Dimension d) {
+const char* units_allowed(UnitKind d) {
   switch (d) {
     case kSeconds: return "must be one of: s, ms, us, min";
     case kMetres: return "must be one of: m, cm, mm, um";
@@ -97,7 +98,7 @@ Column split_column(const std::string& field) {
     return {detail::trim_csv(f.substr(0, s)), detail::trim_csv(f.substr(s + 1))};
   if (const auto u = f.rfind('_'); u != std::string::npos && !quantity_of(f)) {
     const Column c{f.substr(0, u), f.substr(u + 1)};
-    if (const auto q = quantity_of(c.name); q && unit_factor(kDimension[*q], c.unit)) return c;
+    if (const auto q = quantity_of(c.name); q && unit_factor(kUnitKind[*q], c.unit)) return c;
   }
   return {f, ""};
 }
@@ -222,10 +223,10 @@ MeasuredMotion parse_measured_motion(std::istream& in, const std::string& source
         columns[i].unit = u;
       }
       const auto f = columns[i].unit.empty() ? std::optional<double>(1.0)
-                                             : unit_factor(kDimension[*q], columns[i].unit);
+                                             : unit_factor(kUnitKind[*q], columns[i].unit);
       if (!f)
         throw InvalidParameter(where(number) + " column '" + columns[i].name + "' unit",
-                               columns[i].unit, units_allowed(kDimension[*q]));
+                               columns[i].unit, units_allowed(kUnitKind[*q]));
       factor[*q] = *f;
     }
     for (const auto& [name, unit] : units)
