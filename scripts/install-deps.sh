@@ -9,7 +9,7 @@ packages=(
   libboost-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pil python3-pytest python3-venv
   python3-distributed python3-mpi4py openmpi-bin python3-scipy
-  libsiconos-numerics-dev
+  libsiconos-numerics-dev libceres-dev
 )
 
 missing=()
