@@ -47,6 +47,8 @@ void add_feeder_design_command(CLI::App& app);
 void add_parts_command(CLI::App& app);
 /// `selfalign parameters`: the model's named parameter view, --set NAME=VALUE (cmd_parameters.cpp).
 void add_parameters_command(CLI::App& app);
+/// `selfalign identify`: friction identified from measured motion (cmd_identify.cpp).
+void add_identify_command(CLI::App& app);
 /// Hidden `selfalign completion bash|zsh` and `selfalign man`: completion scripts and a man
 /// page generated from the app's own tree of subcommands and flags (cmd_completion.cpp).
 void add_completion_command(CLI::App& app);

@@ -139,6 +139,7 @@ constexpr void (*kCommands[])(CLI::App&) = {
     &selfalign::cli::add_feeder_design_command,
     &selfalign::cli::add_parts_command,
     &selfalign::cli::add_parameters_command,
+    &selfalign::cli::add_identify_command,
     &selfalign::cli::add_completion_command,  // hidden: completion bash|zsh, man
 };
 

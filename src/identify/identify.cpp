@@ -30,6 +30,8 @@ namespace {
 
 using namespace identify_detail;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Rounds of re-shot window states after the local stage (see identify()).
+constexpr int kPolishRounds = 4;
 
 // Every value the fit estimates: the model parameters, one offset per run, a state per window.
 struct Estimate {
@@ -406,7 +408,20 @@ Identification identify(const std::vector<IdentificationRun>& runs,
   }
   fit.reset_rss(e);  // window states consistent with the model at the starting values
   const Estimate initial = e;
-  const ceres::Solver::Summary summary = fit.local_stage(e);
+  // Local stage, then polish: the window states re-shot from the model at the estimate
+  // (reset_rss) and the fit repeated while that lowers the RSS by more than 1e-6 of it. A
+  // window state can settle on the wrong side of a stick/slip event (a local minimum of its
+  // own); the re-shot states are consistent with the fitted model.
+  ceres::Solver::Summary summary = fit.local_stage(e);
+  double best_rss = fit.rss(e);
+  for (int round = 0; round < kPolishRounds; ++round) {
+    Estimate trial = e;
+    fit.reset_rss(trial);
+    const ceres::Solver::Summary s = fit.local_stage(trial);
+    const double trial_rss = fit.rss(trial);
+    if (!(trial_rss < best_rss * (1 - 1e-6))) break;
+    e = std::move(trial), best_rss = trial_rss, summary = s;
+  }
   out.iterations = static_cast<int>(summary.iterations.size()) - 1;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   out.termination = summary.message;

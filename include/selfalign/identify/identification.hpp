@@ -88,8 +88,9 @@ struct IdentificationOptions {
   std::map<std::string, IdentificationBounds> bounds;
   double window_periods = 1;             ///< shooting window length [table periods], > 0
   IdentificationLoss loss = SquaredLoss{};
-  int starts = 0;  ///< global stage: MLSL starting points (0: skip it; start at the config)
-  int global_evaluations = 200;  ///< global stage budget of objective evaluations
+  int starts = 16;  ///< global stage: MLSL starting points (0: skip it; start at the config)
+  int global_evaluations = 4000;  ///< global stage budget of objective evaluations (each one
+                                  ///< pass of position-reset shooting over the data)
   int max_iterations = 100;      ///< Levenberg-Marquardt iterations
   /// Parameters whose profile likelihood is computed (free and identifiable ones only).
   std::vector<std::string> profile;
