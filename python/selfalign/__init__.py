@@ -210,6 +210,8 @@ from ._selfalign import (  # the whole public API of the extension; _selfalign.p
     row_monte_carlo,
     # measured motion for identification (issue 25; docs/identification.md)
     read_measured_motion,
+    Identification,
+    identify,
 )
 
 # Studies that also take executor= and chunk_size= (a concurrent.futures.Executor: Dask,

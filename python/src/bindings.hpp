@@ -9,6 +9,7 @@
 
 namespace selfalign {
 struct RowQueue;
+struct SimulateConfig;
 }  // namespace selfalign
 
 namespace selfalign::python {
@@ -37,8 +38,13 @@ void bind_feeder(py::module_& m);        // the vibratory feeder: drive, onsets,
 void bind_rows(py::module_& m);          // queues of 1-D parts: RowPart, RowQueue, row_run, row_stop (issue 24)
 void bind_row_monte_carlo(py::module_& m);  // row_monte_carlo, RowMonteCarloResult (after rows, uncertainty)
 void bind_measured_motion(py::module_& m);  // read_measured_motion (issue 25)
+void bind_identification(py::module_& m);   // identify, Identification (issue 25)
 /// A `queue` argument: a RowQueue, or a list of RowPart (restitution 0); TypeError otherwise (rows.cpp).
 RowQueue to_row_queue(const py::handle& queue);
+
+/// A model config from a dict of config keys (the keys of `selfalign simulate`'s config files;
+/// arrays as lists), as model_parameters takes it (parameters.cpp). Throws InvalidParameter.
+SimulateConfig config_of(const py::dict& d);
 
 /// Rules for every class bound above (classes.cpp): an object whose __init__ was not called
 /// raises TypeError when used; pickling under every protocol, or a TypeError. Called last.

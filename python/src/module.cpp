@@ -30,5 +30,6 @@ PYBIND11_MODULE(_selfalign, m) {
   bind_rows(m);
   bind_row_monte_carlo(m);
   bind_measured_motion(m);
+  bind_identification(m);
   finish_classes(m);
 }

@@ -51,6 +51,8 @@ std::string text_of(const std::string& key, const py::handle& value) {
                          "must be a string, a number or a list of numbers");
 }
 
+}  // namespace
+
 SimulateConfig config_of(const py::dict& d) {
   SimulateConfig c;
   for (const auto& [k, v] : d) {
@@ -59,6 +61,8 @@ SimulateConfig config_of(const py::dict& d) {
   }
   return c;
 }
+
+namespace {
 
 py::dict dict_of(const SimulateConfig& c) {
   py::dict d;

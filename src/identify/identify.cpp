@@ -32,6 +32,10 @@ using namespace identify_detail;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Rounds of re-shot window states after the local stage (see identify()).
 constexpr int kPolishRounds = 4;
+// Candidates of the global stage refined by the local stage (see Fit::global_stage).
+constexpr std::size_t kLocalStarts = 4;
+// Points of each pass of the offset scan (Fit::scan_offsets).
+constexpr int kOffsetGrid = 41;
 
 // Every value the fit estimates: the model parameters, one offset per run, a state per window.
 struct Estimate {
@@ -153,6 +157,7 @@ class Fit {
   const ShootingRun& run(std::size_t r) const { return *runs_[r]; }
   std::size_t run_count() const { return runs_.size(); }
   const std::vector<IdentificationBounds>& bounds() const { return bounds_; }
+  const IdentificationBounds& offset_box() const { return offset_bounds_; }
 
   // Position-reset shooting over every run (reset_shooting): the window states consistent with
   // the model at e.theta, written into e.states; the RSS, NaN where the model fails.
@@ -172,6 +177,37 @@ class Fit {
     return s;
   }
 
+  // The offsets alone (when free), run by run, at e.theta: the reset-shooting RSS on a grid of
+  // kOffsetGrid points over the offset box, then on a finer grid about the best. A clock
+  // offset of a few per cent of the period misplaces every event of every window, and the
+  // local stage started there can wander into another basin; the scan costs 2 kOffsetGrid
+  // passes over the data. Leaves e.states re-shot at the result.
+  void scan_offsets(Estimate& e) const {
+    if (!offset_free_) return;
+    for (std::size_t r = 0; r < runs_.size(); ++r) {
+      std::size_t k = 0;
+      while (k < windows_.size() && windows_[k].run != r) ++k;
+      std::size_t end = k;
+      while (end < windows_.size() && windows_[end].run == r) ++end;
+      const auto model = runs_[r]->model(e.theta);
+      if (!model) return;
+      const auto windows = std::span<const Window>(windows_).subspan(k, end - k);
+      double lo = offset_bounds_.lower, hi = offset_bounds_.upper, best = e.tau[r];
+      for (int pass = 0; pass < 2; ++pass) {
+        double best_rss = reset_shooting(*model, runs_[r]->data(), windows, best, &e.states[2 * k]);
+        const double step = (hi - lo) / (kOffsetGrid - 1);
+        for (int i = 0; i < kOffsetGrid; ++i) {
+          const double tau = lo + step * i;
+          const double rss = reset_shooting(*model, runs_[r]->data(), windows, tau, &e.states[2 * k]);
+          if (rss < best_rss) best_rss = rss, best = tau;
+        }
+        lo = std::max(offset_bounds_.lower, best - step), hi = std::min(offset_bounds_.upper, best + step);
+      }
+      e.tau[r] = best;
+    }
+    reset_rss(e);
+  }
+
   // Sum of squared residuals with the window states as given; NaN where the model fails.
   double rss(const Estimate& e) const {
     double s = 0;
@@ -188,9 +224,16 @@ class Fit {
   }
 
   // Global stage: MLSL with low-discrepancy starts over the box of theta (and the offsets),
-  // each point scored by position-reset shooting (reset_rss). Returns the best RSS and its
-  // evaluations.
-  std::pair<double, int> global_stage(Estimate& e) const {
+  // each point scored by position-reset shooting (reset_rss). Returns up to kLocalStarts
+  // candidates, best first, pairwise at least 5 % of the box apart (the reset-shooting
+  // objective's minima are near the full fit's but need not be in the same order), the best
+  // RSS and the evaluations.
+  struct GlobalResult {
+    std::vector<Estimate> candidates;
+    double best_rss;
+    int evaluations;
+  };
+  GlobalResult global_stage(const Estimate& e) const {
     const std::size_t p = names_.size(), m = p + (offset_free_ ? runs_.size() : 0);
     std::vector<double> lo(m), hi(m), x(m);
     for (std::size_t j = 0; j < p; ++j) lo[j] = bounds_[j].lower, hi[j] = bounds_[j].upper, x[j] = e.theta[j];
@@ -200,7 +243,8 @@ class Fit {
       const Fit* fit;
       Estimate e;
       int evaluations = 0;
-    } ctx{this, e};
+      std::vector<std::pair<double, std::vector<double>>> seen;  // (rss, point)
+    } ctx{this, e, 0, {}};
     auto objective = [](unsigned n, const double* v, double*, void* data) {
       auto* c = static_cast<Context*>(data);
       const std::size_t pp = c->fit->names_.size();
@@ -208,6 +252,7 @@ class Fit {
       for (std::size_t j = pp; j < n; ++j) c->e.tau[j - pp] = v[j];
       ++c->evaluations;
       const double s = c->fit->reset_rss(c->e);
+      if (std::isfinite(s)) c->seen.emplace_back(s, std::vector<double>(v, v + n));
       return std::isfinite(s) ? s : std::numeric_limits<double>::max();
     };
     nlopt::opt global(nlopt::GN_MLSL_LDS, static_cast<unsigned>(m));
@@ -225,9 +270,27 @@ class Fit {
     } catch (const nlopt::roundoff_limited&) {
     } catch (const std::runtime_error&) {
     }
-    std::copy(x.begin(), x.begin() + static_cast<long>(p), e.theta.begin());
-    for (std::size_t j = p; j < m; ++j) e.tau[j - p] = x[j];
-    return {best, ctx.evaluations};
+    std::sort(ctx.seen.begin(), ctx.seen.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    GlobalResult out{{}, ctx.seen.empty() ? kNaN : ctx.seen.front().first, ctx.evaluations};
+    std::vector<std::vector<double>> chosen;
+    for (const auto& [rss, point] : ctx.seen) {
+      if (chosen.size() >= kLocalStarts) break;
+      bool far = true;
+      for (const auto& c : chosen) {
+        double d = 0;
+        for (std::size_t j = 0; j < m; ++j) d = std::max(d, std::abs(point[j] - c[j]) / (hi[j] - lo[j]));
+        far = far && d > 0.05;
+      }
+      if (!far) continue;
+      chosen.push_back(point);
+      Estimate c = e;
+      std::copy(point.begin(), point.begin() + static_cast<long>(p), c.theta.begin());
+      for (std::size_t j = p; j < m; ++j) c.tau[j - p] = point[j];
+      out.candidates.push_back(std::move(c));
+    }
+    (void)best;
+    return out;
   }
 
   // Local stage: Levenberg-Marquardt from e (changed in place). `held`: a theta index kept at
@@ -365,7 +428,7 @@ std::vector<bool> unidentifiable(const Eigen::MatrixXd& S) {
 
 // Why a parameter is not identifiable, from the fitted motion where the data show it.
 std::string reason_for(const std::string& name, const std::vector<FittedRun>& runs,
-                       const Fit& fit, const Estimate& e) {
+                       const Fit& fit, const Estimate& e, bool loose) {
   bool sticks = false;
   for (const FittedRun& r : runs)
     for (unsigned char s : r.stick) sticks = sticks || s;
@@ -388,6 +451,9 @@ std::string reason_for(const std::string& name, const std::vector<FittedRun>& ru
       return "the part never reaches the region where the friction changes, so " + name +
              " is never seen";
   }
+  if (loose)
+    return "the data constrain it less than its box (its standard error is wider than the "
+           "box)";
   return "the positions do not depend on it independently of the other free parameters "
          "(the Jacobian's scaled singular value is below 1e-6)";
 }
@@ -401,26 +467,35 @@ Identification identify(const std::vector<IdentificationRun>& runs,
   Identification out;
   Estimate e = fit.start();
   out.global_best_rss = kNaN;
+  std::vector<Estimate> candidates{e};
   if (options.starts > 0) {
-    const auto [best, evaluations] = fit.global_stage(e);
-    out.global_best_rss = best;
-    out.global_evaluations = evaluations;
+    Fit::GlobalResult g = fit.global_stage(e);
+    out.global_best_rss = g.best_rss;
+    out.global_evaluations = g.evaluations;
+    // The start itself stays a candidate: the global stage adds basins, never loses one.
+    candidates.insert(candidates.end(), g.candidates.begin(), g.candidates.end());
   }
-  fit.reset_rss(e);  // window states consistent with the model at the starting values
-  const Estimate initial = e;
-  // Local stage, then polish: the window states re-shot from the model at the estimate
-  // (reset_rss) and the fit repeated while that lowers the RSS by more than 1e-6 of it. A
-  // window state can settle on the wrong side of a stick/slip event (a local minimum of its
-  // own); the re-shot states are consistent with the fitted model.
-  ceres::Solver::Summary summary = fit.local_stage(e);
-  double best_rss = fit.rss(e);
-  for (int round = 0; round < kPolishRounds; ++round) {
-    Estimate trial = e;
-    fit.reset_rss(trial);
-    const ceres::Solver::Summary s = fit.local_stage(trial);
-    const double trial_rss = fit.rss(trial);
-    if (!(trial_rss < best_rss * (1 - 1e-6))) break;
-    e = std::move(trial), best_rss = trial_rss, summary = s;
+  // Local stage from each candidate, then polish: the window states re-shot from the model at
+  // the estimate (reset_rss) and the fit repeated while that lowers the RSS by more than 1e-6
+  // of it (a window state can settle on the wrong side of a stick/slip event, a local minimum
+  // of its own; the re-shot states are consistent with the fitted model). The lowest RSS wins.
+  Estimate initial;
+  ceres::Solver::Summary summary;
+  double best_rss = kNaN;
+  for (Estimate& c : candidates) {
+    fit.scan_offsets(c);  // the offsets at the candidate, window states consistent with it
+    const Estimate from = c;
+    ceres::Solver::Summary sc = fit.local_stage(c);
+    double rss_c = fit.rss(c);
+    for (int round = 0; round < kPolishRounds; ++round) {
+      Estimate trial = c;
+      fit.reset_rss(trial);
+      const ceres::Solver::Summary s = fit.local_stage(trial);
+      const double trial_rss = fit.rss(trial);
+      if (!(trial_rss < rss_c * (1 - 1e-6))) break;
+      c = std::move(trial), rss_c = trial_rss, sc = s;
+    }
+    if (!(rss_c >= best_rss)) e = c, best_rss = rss_c, summary = sc, initial = from;
   }
   out.iterations = static_cast<int>(summary.iterations.size()) - 1;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
@@ -471,20 +546,41 @@ Identification identify(const std::vector<IdentificationRun>& runs,
 
   // Covariance: sigma^2 S^-1 over the identifiable global columns.
   const Eigen::MatrixXd S = fit.schur(e);
-  const std::vector<bool> lost = unidentifiable(S);
-  std::vector<long> keep;
-  for (long j = 0; j < S.rows(); ++j)
-    if (!lost[static_cast<std::size_t>(j)]) keep.push_back(j);
+  // A parameter is also not identifiable when the data constrain it less than its box does
+  // (standard error wider than the box): a column that is small but not collinear.
+  std::vector<bool> lost = unidentifiable(S);
+  std::vector<double> box;
+  for (const IdentificationBounds& b : fit.bounds()) box.push_back(b.upper - b.lower);
+  for (std::size_t r = 0; r < (fit.offset_free() ? fit.run_count() : 0); ++r)
+    box.push_back(fit.offset_box().upper - fit.offset_box().lower);
   const long g = S.rows();
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Constant(g, g, kNaN);
-  if (!keep.empty()) {
-    const long m = static_cast<long>(keep.size());
-    Eigen::MatrixXd Sk(m, m);
-    for (long a = 0; a < m; ++a)
-      for (long b = 0; b < m; ++b) Sk(a, b) = S(keep[a], keep[b]);
-    const Eigen::MatrixXd inv = Sk.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
-    for (long a = 0; a < m; ++a)
-      for (long b = 0; b < m; ++b) cov(keep[a], keep[b]) = out.sigma * out.sigma * inv(a, b);
+  Eigen::MatrixXd cov;
+  std::vector<bool> loose(static_cast<std::size_t>(g), false);
+  for (bool again = true; again;) {
+    std::vector<long> keep;
+    for (long j = 0; j < g; ++j)
+      if (!lost[static_cast<std::size_t>(j)]) keep.push_back(j);
+    cov = Eigen::MatrixXd::Constant(g, g, kNaN);
+    if (!keep.empty()) {
+      const long m = static_cast<long>(keep.size());
+      Eigen::MatrixXd Sk(m, m);
+      for (long a = 0; a < m; ++a)
+        for (long b = 0; b < m; ++b) Sk(a, b) = S(keep[a], keep[b]);
+      const Eigen::MatrixXd inv = Sk.ldlt().solve(Eigen::MatrixXd::Identity(m, m));
+      for (long a = 0; a < m; ++a)
+        for (long b = 0; b < m; ++b) cov(keep[a], keep[b]) = out.sigma * out.sigma * inv(a, b);
+    }
+    again = false;
+    long worst = -1;
+    double worst_ratio = 1;
+    for (long j : keep) {
+      const double ratio = std::sqrt(cov(j, j)) / box[static_cast<std::size_t>(j)];
+      if (!(ratio <= worst_ratio)) worst = j, worst_ratio = std::isfinite(ratio) ? ratio : 1e300;
+    }
+    if (worst >= 0) {
+      lost[static_cast<std::size_t>(worst)] = loose[static_cast<std::size_t>(worst)] = true;
+      again = true;
+    }
   }
   out.covariance.assign(p * p, kNaN);
   out.correlation.assign(p * p, kNaN);
@@ -518,7 +614,7 @@ Identification identify(const std::vector<IdentificationRun>& runs,
                                "]: widen it (bounds) if the value is plausible");
     } else {
       ip.estimate = ip.standard_error = ip.lower = ip.upper = kNaN;
-      ip.reason = reason_for(ip.name, out.runs, fit, e);
+      ip.reason = reason_for(ip.name, out.runs, fit, e, loose[j]);
       out.warnings.push_back(ip.name + " is not identifiable from these data: " + ip.reason);
     }
     out.parameters.push_back(std::move(ip));

@@ -24,7 +24,7 @@ class WindowCost final : public ceres::CostFunction {
  public:
   /// `floors` are the absolute step floors of theta, then tau, then x and v.
   WindowCost(const ShootingRun& run, const Window& window, std::size_t p,
-             std::vector<double> floors);
+             std::vector<double> floors, double relative_step = kRelativeStep);
 
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override;
@@ -37,6 +37,7 @@ class WindowCost final : public ceres::CostFunction {
   Window window_;
   std::size_t p_;
   std::vector<double> floors_;
+  double relative_step_;
 };
 
 }  // namespace selfalign::identify_detail

@@ -21,7 +21,8 @@ nlohmann::json matrix_json(const std::vector<double>& m, std::size_t n) {
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t a = 0; a < n; ++a) {
     nlohmann::json row = nlohmann::json::array();
-    for (std::size_t b = 0; b < n; ++b) row.push_back(value_or_null(m[a * n + b]));
+    for (std::size_t b = 0; b < n; ++b)
+      row.push_back(m.size() == n * n ? value_or_null(m[a * n + b]) : nlohmann::json(nullptr));
     rows.push_back(row);
   }
   return rows;
