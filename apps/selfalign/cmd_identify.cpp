@@ -31,7 +31,7 @@ struct IdentifyFlags {
   std::vector<std::string> data_config;
   std::string free;
   std::vector<std::string> bounds;  // NAME=LO:HI
-  double window_periods = 1;
+  double window_periods = 2;
   std::string loss = "squared";
   int starts = 16;
   int global_evaluations = 4000;
@@ -193,7 +193,7 @@ void add_identify_command(CLI::App& app) {
       ->type_name("NAME=LO:HI")
       ->group("Fit");
   sub->add_option("--window-periods", f->window_periods,
-                  "length of a shooting window in table periods, > 0. Default: 1")
+                  "length of a shooting window in table periods, > 0. Default: 2")
       ->group("Fit");
   sub->add_option("--loss", f->loss,
                   "squared, huber:SCALE or cauchy:SCALE (SCALE a length in the data's units, "

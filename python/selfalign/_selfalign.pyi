@@ -2577,7 +2577,7 @@ def identify(
     free: list[str],
     *,
     bounds: dict[str, tuple[float, float]] = ...,
-    window_periods: float = 1.0,
+    window_periods: float = 2.0,
     loss: str = "squared",
     loss_scale: float = 1.0,
     starts: int = 16,

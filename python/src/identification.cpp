@@ -256,7 +256,7 @@ report as a dict; uncertainty_text(mu) the uncertainty file (TOML) for design_ro
       },
       py::arg("data"), py::arg("config"), py::arg("free"), py::kw_only(),
       py::arg("bounds") = std::map<std::string, std::pair<double, double>>{},
-      py::arg("window_periods") = 1.0, py::arg("loss") = "squared", py::arg("loss_scale") = 1.0,
+      py::arg("window_periods") = 2.0, py::arg("loss") = "squared", py::arg("loss_scale") = 1.0,
       py::arg("starts") = 16, py::arg("global_evaluations") = 4000,
       py::arg("max_iterations") = 100, py::arg("profile") = py::none(),
       py::arg("profile_points") = 13, py::arg("confidence") = 0.95, py::arg("threads") = 2,

@@ -295,7 +295,7 @@ class Fit {
 
   // Local stage: Levenberg-Marquardt from e (changed in place). `held`: a theta index kept at
   // its value (profile likelihood). Returns Ceres' summary.
-  ceres::Solver::Summary local_stage(Estimate& e, int held = -1) const {
+  ceres::Solver::Summary local_stage(Estimate& e, int held = -1, bool hold_sticks = true) const {
     const std::size_t p = names_.size();
     std::unique_ptr<ceres::LossFunction> loss = std::visit(
         Overloaded{[](const SquaredLoss&) -> std::unique_ptr<ceres::LossFunction> { return nullptr; },
@@ -313,9 +313,14 @@ class Fit {
     auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
     for (std::size_t k = 0; k < windows_.size(); ++k) {
       const Window& w = windows_[k];
-      problem.AddResidualBlock(new WindowCost(*runs_[w.run], w, p, floors_), loss.get(),
+      problem.AddResidualBlock(new WindowCost(*runs_[w.run], w, p, floors_, true), loss.get(),
                                {e.theta.data(), &e.tau[w.run], &e.states[2 * k]});
       ordering->AddElementToGroup(&e.states[2 * k], 0);
+      // A window that starts in stick (its re-shot start velocity exactly 0) keeps v = 0: the
+      // residuals have a kink in v there (any v != 0 slips, then sticks again), where
+      // Levenberg-Marquardt would crawl; only its position is estimated.
+      if (hold_sticks && e.states[2 * k + 1] == 0)
+        problem.SetManifold(&e.states[2 * k], new ceres::SubsetManifold(2, {1}));
     }
     ordering->AddElementToGroup(e.theta.data(), 1);
     for (std::size_t r = 0; r < runs_.size(); ++r) {
@@ -373,6 +378,7 @@ class Fit {
       if (offset_free_) G.col(static_cast<long>(p + w.run)) = Jtau.col(0);
       // G's part orthogonal to the span of X (the state columns): S += G_perp^T G_perp, which
       // is positive semidefinite by construction (no normal-equation inverse to round).
+      // Both state columns: the last local stage frees every start velocity.
       const Eigen::MatrixXd X = Jx;
       Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(X);
       const long rank = qr.rank();
@@ -491,9 +497,16 @@ Identification identify(const std::vector<IdentificationRun>& runs,
       Estimate trial = c;
       fit.reset_rss(trial);
       const ceres::Solver::Summary s = fit.local_stage(trial);
-      const double trial_rss = fit.rss(trial);
+        const double trial_rss = fit.rss(trial);
       if (!(trial_rss < rss_c * (1 - 1e-6))) break;
       c = std::move(trial), rss_c = trial_rss, sc = s;
+    }
+    // Last, every start velocity free (a held window may in truth start slipping slowly).
+    {
+      Estimate trial = c;
+      const ceres::Solver::Summary s = fit.local_stage(trial, -1, false);
+      const double trial_rss = fit.rss(trial);
+      if (trial_rss <= rss_c) c = std::move(trial), rss_c = trial_rss, sc = s;
     }
     if (!(rss_c >= best_rss)) e = c, best_rss = rss_c, summary = sc, initial = from;
   }

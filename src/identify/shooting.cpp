@@ -62,21 +62,27 @@ std::shared_ptr<const BuiltModel> ShootingRun::model(std::span<const double> the
 std::vector<Window> cut_windows(std::size_t run, std::span<const double> t, double length) {
   std::vector<Window> windows;
   std::size_t first = 0;
+  double boundary = t.empty() ? 0 : t[0] + length;
   while (first < t.size()) {
-    const double t_end = t[first] + length;
     std::size_t end = first;
-    while (end < t.size() && t[end] < t_end) ++end;
-    end = std::max(end, first + 1);
-    if (end - first < kMinWindowSamples && !windows.empty())
-      windows.back().end = end;  // too short to fix its own state: joins the one before
-    else
-      windows.push_back({run, first, end});
+    while (end < t.size() && t[end] < boundary) ++end;
+    boundary += length;
+    if (end == first) continue;  // no sample in this span
+    windows.push_back({run, first, end});
     first = end;
   }
-  // A first window that is still too short takes the next one in.
-  if (windows.size() > 1 && windows.front().end - windows.front().first < kMinWindowSamples) {
-    windows[1].first = windows[0].first;
-    windows.erase(windows.begin());
+  // Too short to fix their own state: merged into a neighbour (the one before, or after).
+  for (std::size_t k = 0; k < windows.size() && windows.size() > 1;) {
+    if (windows[k].end - windows[k].first >= kMinWindowSamples) {
+      ++k;
+      continue;
+    }
+    if (k > 0) {
+      windows[k - 1].end = windows[k].end;
+    } else {
+      windows[1].first = windows[0].first;
+    }
+    windows.erase(windows.begin() + static_cast<long>(k));
   }
   return windows;
 }

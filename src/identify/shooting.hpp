@@ -57,9 +57,10 @@ class ShootingRun {
 };
 
 /// The windows of one run: consecutive spans of `length` [data time] from its first sample;
-/// a window with fewer than kMinWindowSamples samples is merged into the one before it.
+/// a window with fewer than kMinWindowSamples samples is merged into a neighbour.
 inline constexpr std::size_t kMinWindowSamples = 3;
 std::vector<Window> cut_windows(std::size_t run, std::span<const double> t, double length);
+
 
 /// A window's start state (x, v) in data units from the data: a least-squares line through
 /// its first (up to) five samples, evaluated at its first sample.

@@ -9,8 +9,8 @@
 namespace selfalign::identify_detail {
 
 WindowCost::WindowCost(const ShootingRun& run, const Window& window, std::size_t p,
-                       std::vector<double> floors, double relative_step)
-    : run_(run), window_(window), p_(p), floors_(std::move(floors)), relative_step_(relative_step) {
+                       std::vector<double> floors, bool central)
+    : run_(run), window_(window), p_(p), floors_(std::move(floors)), central_(central) {
   set_num_residuals(static_cast<int>(window.end - window.first));
   mutable_parameter_block_sizes()->assign({static_cast<int>(p), 1, 2});
 }
@@ -32,11 +32,14 @@ bool WindowCost::Evaluate(double const* const* parameters, double* r, double** j
   // Column j of block b, by central differences in the one coordinate `value` points at.
   auto column = [&](double* value, std::size_t floor_index, double* jac, int stride, int col) {
     const double v = *value;
-    const double h = relative_step_ * std::max(std::abs(v), floors_[floor_index]);
+    const double h = kRelativeStep * std::max(std::abs(v), floors_[floor_index]);
     *value = v + h;
-    const bool ok_plus = residuals(theta.data(), tau, state, plus.data());
-    *value = v - h;
-    const bool ok_minus = residuals(theta.data(), tau, state, minus.data());
+    bool ok_plus = residuals(theta.data(), tau, state, plus.data());
+    bool ok_minus = false;
+    if (central_ || !ok_plus) {
+      *value = v - h;
+      ok_minus = residuals(theta.data(), tau, state, minus.data());
+    }
     *value = v;
     if (!ok_plus && !ok_minus) return false;
     // One-sided at the edge of the model's range (a bound such as mu_static >= mu).

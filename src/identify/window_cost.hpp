@@ -18,13 +18,15 @@ namespace selfalign::identify_detail {
 /// event where the stick/slip sequence changes, giving the mean of the one-sided slopes).
 inline constexpr double kRelativeStep = 1e-6;
 
+/// Central differences (the covariance) or forward ones (the local stage: half the model
+/// evaluations; the estimate depends on the residuals, not on the Jacobian's accuracy).
 /// Parameter blocks of a window: theta (model parameters, p), tau (1: the run's offset), the
 /// window's state (2: x, v at its first sample, data units).
 class WindowCost final : public ceres::CostFunction {
  public:
   /// `floors` are the absolute step floors of theta, then tau, then x and v.
   WindowCost(const ShootingRun& run, const Window& window, std::size_t p,
-             std::vector<double> floors, double relative_step = kRelativeStep);
+             std::vector<double> floors, bool central = true);
 
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override;
@@ -37,7 +39,7 @@ class WindowCost final : public ceres::CostFunction {
   Window window_;
   std::size_t p_;
   std::vector<double> floors_;
-  double relative_step_;
+  bool central_;
 };
 
 }  // namespace selfalign::identify_detail

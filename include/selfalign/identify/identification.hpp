@@ -86,7 +86,7 @@ struct IdentificationOptions {
   /// v (1 -+ kDefaultBoxWidth) about its config value v ([-1, 1] for v = 0), and time_offset
   /// [-period/2, period/2] (the first run's period).
   std::map<std::string, IdentificationBounds> bounds;
-  double window_periods = 1;             ///< shooting window length [table periods], > 0
+  double window_periods = 2;             ///< shooting window length [table periods], > 0
   IdentificationLoss loss = SquaredLoss{};
   int starts = 16;  ///< global stage: MLSL starting points (0: skip it; start at the config)
   int global_evaluations = 4000;  ///< global stage budget of objective evaluations (each one
