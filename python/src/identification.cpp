@@ -90,16 +90,16 @@ report as a dict; uncertainty_text(mu) the uncertainty file (TOML) for design_ro
        std::vector<std::string> n;
        for (const IdentifiedParameter& p : r.parameters) n.push_back(p.name);
        return n;
-     })
+     }, "free parameter names, in the order given (time_offset excluded)")
       .def_property_readonly("estimates", [](const Identification& r) {
         return column(r, [](const IdentifiedParameter& p) { return p.estimate; });
-      })
+      }, "estimates; NaN where not identifiable")
       .def_property_readonly("initial", [](const Identification& r) {
         return column(r, [](const IdentifiedParameter& p) { return p.initial; });
-      })
+      }, "the values the local stage started from (config or global stage)")
       .def_property_readonly("standard_errors", [](const Identification& r) {
         return column(r, [](const IdentifiedParameter& p) { return p.standard_error; });
-      })
+      }, "standard errors; NaN where not identifiable")
       .def_property_readonly("intervals", [](const Identification& r) {
         py::array_t<double> a({static_cast<py::ssize_t>(r.parameters.size()), py::ssize_t{2}});
         auto v = a.mutable_unchecked<2>();
@@ -107,7 +107,7 @@ report as a dict; uncertainty_text(mu) the uncertainty file (TOML) for design_ro
           v(static_cast<py::ssize_t>(i), 0) = r.parameters[i].lower,
                                         v(static_cast<py::ssize_t>(i), 1) = r.parameters[i].upper;
         return a;
-      })
+      }, "n x 2 Wald intervals estimate -+ z se at the confidence asked")
       .def_property_readonly("profile_intervals", [](const Identification& r) {
         py::array_t<double> a({static_cast<py::ssize_t>(r.parameters.size()), py::ssize_t{2}});
         auto v = a.mutable_unchecked<2>();
@@ -116,24 +116,24 @@ report as a dict; uncertainty_text(mu) the uncertainty file (TOML) for design_ro
                                         v(static_cast<py::ssize_t>(i), 1) =
                                             r.parameters[i].profile_upper;
         return a;
-      })
+      }, "n x 2 profile-likelihood intervals; NaN where not profiled or beyond the grid")
       .def_property_readonly("identifiable", [](const Identification& r) {
         py::array_t<bool> a(static_cast<py::ssize_t>(r.parameters.size()));
         for (std::size_t i = 0; i < r.parameters.size(); ++i)
           a.mutable_at(static_cast<py::ssize_t>(i)) = r.parameters[i].identifiable;
         return a;
-      })
+      }, "bool per parameter")
       .def_property_readonly("reasons", [](const Identification& r) {
         std::vector<std::string> n;
         for (const IdentifiedParameter& p : r.parameters) n.push_back(p.reason);
         return n;
-      })
+      }, "why a parameter is not identifiable ('' when it is)")
       .def_property_readonly("covariance", [](const Identification& r) {
         return matrix(r.covariance, r.parameters.size());
-      })
+      }, "n x n covariance; NaN rows/columns where not identifiable")
       .def_property_readonly("correlation", [](const Identification& r) {
         return matrix(r.correlation, r.parameters.size());
-      })
+      }, "n x n correlation; unit diagonal")
       .def_property_readonly("runs", [](const Identification& r) {
         py::list out;
         for (const FittedRun& f : r.runs) {
@@ -154,7 +154,7 @@ report as a dict; uncertainty_text(mu) the uncertainty file (TOML) for design_ro
           out.append(d);
         }
         return out;
-      })
+      }, "per run: dict of t, x_measured, x_fitted, residual, window, stick arrays and source, time_offset, time_offset_standard_error, rms")
       .def_property_readonly("profiles", [](const Identification& r) {
         py::list out;
         for (const ProfileLikelihood& p : r.profiles) {
@@ -165,20 +165,20 @@ report as a dict; uncertainty_text(mu) the uncertainty file (TOML) for design_ro
           out.append(d);
         }
         return out;
-      })
+      }, "per profiled parameter: dict of name, values, rss")
       .def_readonly("sigma", &Identification::sigma, "residual sd [m]")
       .def_readonly("rss", &Identification::rss, "sum of squared residuals [m^2]")
       .def_readonly("max_abs_residual", &Identification::max_abs_residual, "[m]")
-      .def_readonly("samples", &Identification::samples)
+      .def_readonly("samples", &Identification::samples, "residuals (samples), all runs")
       .def_readonly("windows", &Identification::windows, "shooting windows, all runs")
       .def_readonly("estimated", &Identification::estimated,
                     "parameters estimated: free + offsets + 2 per window")
-      .def_readonly("iterations", &Identification::iterations)
-      .def_readonly("converged", &Identification::converged)
-      .def_readonly("termination", &Identification::termination)
-      .def_readonly("global_best_rss", &Identification::global_best_rss)
-      .def_readonly("global_evaluations", &Identification::global_evaluations)
-      .def_readonly("warnings", &Identification::warnings)
+      .def_readonly("iterations", &Identification::iterations, "Levenberg-Marquardt iterations of the kept fit")
+      .def_readonly("converged", &Identification::converged, "whether the kept local stage converged")
+      .def_readonly("termination", &Identification::termination, "Ceres' termination message")
+      .def_readonly("global_best_rss", &Identification::global_best_rss, "best RSS of the global stage (NaN when skipped) [m^2]")
+      .def_readonly("global_evaluations", &Identification::global_evaluations, "passes the global stage used")
+      .def_readonly("warnings", &Identification::warnings, "plain-text warnings (identifiability, bounds, convergence)")
       .def(
           "report",
           [](const Identification& r) {

@@ -164,8 +164,9 @@ def test_classes_without_an_example_are_not_value_types():
     # Every class is pickled above either as a value type or as a refusal.
     enums = {c.__name__ for c in bound_classes() if hasattr(c, "__members__")}
     rest = {c.__name__ for c in bound_classes()} - set(EXAMPLES) - enums
+    # Identification (issue 25) refuses pickling for now: its report() is the portable form.
     assert rest == {"TableProfile", "FrictionMap", "ProfileFamily", "PeriodMap",
-                    "StickPositionMap", "PeriodStickPositionMap"}
+                    "StickPositionMap", "PeriodStickPositionMap", "Identification"}
     for name in ("TableProfile", "FrictionMap", "ProfileFamily"):  # abstract: no instance (their
         with pytest.raises(TypeError):                              # __new__ objects: above)
             getattr(_selfalign, name)()

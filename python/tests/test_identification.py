@@ -151,3 +151,28 @@ def test_bad_input_names_the_parameter(tmp_path):
     with pytest.raises(sa.InvalidParameter, match="run.csv"):
         sa.identify(str(tmp_path / "run.csv"), config(), ["mu"], starts=0)
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(before + ["run.csv"])
+
+
+def test_identification_figure_from_the_fit_csv(tmp_path):
+    import subprocess
+    import sys
+    data = synthesize(2, periods=6)
+    r = sa.identify(data, config(mu=0.31, mu_static=0.34), ["mu", "mu_static", "time_offset"],
+                    starts=0, profile=[])
+    run = r.runs[0]
+    csv = tmp_path / "fit.csv"
+    with open(csv, "w") as f:
+        f.write("run,t,x_measured,x_fitted,residual,window,stick\n")
+        for i in range(run["t"].size):
+            f.write(f"0,{run['t'][i]!r},{run['x_measured'][i]!r},{run['x_fitted'][i]!r},"
+                    f"{run['residual'][i]!r},{run['window'][i]},{int(run['stick'][i])}\n")
+    png = tmp_path / "fit.png"
+    cmd = [sys.executable, "-m", "selfalign", "identification-figure"]
+    done = subprocess.run(cmd + [str(csv), str(png)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # Bad input: one line, exit 2, nothing written.
+    bad = subprocess.run(cmd + [str(tmp_path / "none.csv"), str(tmp_path / "x.png")],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and len(bad.stderr.splitlines()) == 1 and "none.csv" in bad.stderr
+    assert not (tmp_path / "x.png").exists()

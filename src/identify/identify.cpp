@@ -523,6 +523,7 @@ Identification identify(const std::vector<IdentificationRun>& runs,
   for (std::size_t r = 0; r < fit.run_count(); ++r) {
     FittedRun fr;
     fr.source = fit.run(r).data().source;
+    fr.skipped = fit.run(r).data().skipped;
     fr.t = fit.run(r).data().t;
     fr.x_measured = fit.run(r).data().x;
     const std::size_t n = fr.t.size();

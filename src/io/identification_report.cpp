@@ -75,6 +75,7 @@ nlohmann::json identification_json(const Identification& r) {
   for (const FittedRun& f : r.runs)
     j["runs"].push_back({{"source", f.source},
                          {"samples", f.t.size()},
+                         {"skipped_rows", f.skipped},
                          {"time_offset", value_or_null(f.time_offset)},
                          {"time_offset_standard_error", value_or_null(f.time_offset_standard_error)},
                          {"residual_rms", value_or_null(f.rms)}});

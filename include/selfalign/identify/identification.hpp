@@ -127,6 +127,7 @@ struct FittedRun {
   double time_offset = 0;           ///< [s] (0 unless free)
   double time_offset_standard_error = 0;  ///< [s] (NaN unless free)
   double rms = 0;                   ///< of this run's residuals [m]
+  std::size_t skipped = 0;          ///< rows the data file skipped (a missing value)
 };
 
 struct Identification {
