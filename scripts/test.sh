@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test: installs the Debian dependencies (idempotent), builds, and runs ctest.
 #   scripts/test.sh          Release build (build/release), all tests, then the Python module's
-#                            pytest suite (python/tests) against .venv (scripts/install-python.sh)
+#                            pytest suite (python/tests) against .venv (scripts/install-python.sh),
+#                            then the WebAssembly core (scripts/build-wasm.sh) against the CLI
+#                            (node --test wasm/tests/)
 #   scripts/test.sh --asan   Debug build with AddressSanitizer + UBSan (build/asan), all tests
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,4 +21,7 @@ fi
 ctest --preset "$preset"
 if [ "$preset" = release ]; then
   .venv/bin/python -m pytest python/tests -q
+  # The C++ core in WebAssembly (issue 26) against the native CLI just built.
+  bash scripts/build-wasm.sh
+  SELFALIGN_CLI="$PWD/build/release/apps/selfalign/selfalign" node --test wasm/tests/
 fi

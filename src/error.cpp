@@ -1,5 +1,7 @@
 #include "selfalign/error.hpp"
 
+#include "double_chars.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -10,7 +12,7 @@ std::string format_number(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   char buffer[64];
-  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  auto [end, ec] = detail::double_to_chars(buffer, buffer + sizeof buffer, value);
   return ec == std::errc{} ? std::string(buffer, end) : std::string("?");
 }
 

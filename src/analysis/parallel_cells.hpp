@@ -2,10 +2,12 @@
 // Internal: the deterministic parallel loop of every grid study. Cell i is computed by
 // body(i) into its own slot, so results do not depend on the thread count.
 
+#ifndef SELFALIGN_SERIAL
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
+#endif
 #include <time.h>
 
 #include <algorithm>
@@ -44,6 +46,17 @@ inline std::chrono::nanoseconds coarse_now() {
 // exception propagates.
 template <class Body, class Fail>
 void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body, const Fail& fail) {
+#ifdef SELFALIGN_SERIAL
+  // The single-threaded build (WebAssembly, wasm/CMakeLists.txt): the same cells in order.
+  for (std::size_t i = 0; i < n; ++i) {
+    try {
+      body(i);
+    } catch (const std::exception& e) {
+      fail(i, std::string(e.what()));
+    }
+    if (o.progress) o.progress(i + 1, n);
+  }
+#else
   const int threads = worker_threads(o.threads);
   std::atomic<std::size_t> done{0};
   std::mutex progress_mutex;
@@ -75,6 +88,7 @@ void parallel_cells(std::size_t n, const SweepOptions& o, const Body& body, cons
   };
   tbb::task_arena arena(threads);
   arena.execute(run);
+#endif
 }
 
 // The same for studies whose cells cannot fail on their own (the first failure is rethrown).

@@ -2,7 +2,9 @@
 
 #include "selfalign/analysis/three_phase_steady_state.hpp"
 
+#ifndef SELFALIGN_SERIAL
 #include <tbb/info.h>
+#endif
 
 #include <algorithm>
 #include <cmath>
@@ -43,7 +45,11 @@ std::vector<double> log_grid(double lo, double hi, int n) {
 
 int worker_threads(int requested) {
   if (requested < 0) throw InvalidParameter("threads", requested, "must be >= 0 (0: all cores)");
+#ifdef SELFALIGN_SERIAL
+  const int cores = 1;  // the single-threaded build (WebAssembly)
+#else
   const int cores = std::max(1, tbb::info::default_concurrency());
+#endif
   return requested == 0 ? cores : std::min(requested, cores);
 }
 

@@ -156,8 +156,9 @@ void add_bodies(Slots& s, const Flat& flat) {
 // A field kind's plain numbers: (name, member) pairs of the alternative F.
 template <class F>
 void add_members(Slots& s, std::initializer_list<std::pair<const char*, double F::*>> members) {
-  for (const auto& [name, member] : members) {
-    const std::string n = name;
+  for (const auto& entry : members) {
+    const std::string n = entry.first;
+    const auto member = entry.second;  // a variable (not a structured binding) to capture
     const D d = n == "c_mu" || n == "angle" || n == "level" ? D::none : D::length;
     s.add("field." + n, d, "field", n == "c_mu" ? "mu_2 / mu_1" : n,
           [member](Flat& f) -> double& { return std::get<F>(f.model.field).*member; });

@@ -3,6 +3,8 @@
 
 #include "selfalign/io/config_reader.hpp"
 
+#include "../double_chars.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -153,7 +155,7 @@ bool parse_c_number(std::string_view text, double& out) {
   std::string t = trim(text);
   if (!t.empty() && t[0] == '+') t.erase(0, 1);
   if (t.empty()) return false;
-  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+  const auto [end, ec] = detail::double_from_chars(t.data(), t.data() + t.size(), out);
   return ec == std::errc{} && end == t.data() + t.size();
 }
 

@@ -5,6 +5,8 @@
 
 #include <cctype>
 #include <charconv>
+
+#include "../double_chars.hpp"
 #include <istream>
 #include <string>
 #include <string_view>
@@ -20,7 +22,7 @@ inline CsvField parse_csv_double(const std::string& text, double& out) {
   std::string_view v(text);
   if (!v.empty() && v.front() == '+') v.remove_prefix(1);
   if (v.empty()) return CsvField::text;
-  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
+  const auto [end, ec] = detail::double_from_chars(v.data(), v.data() + v.size(), out);
   if (end != v.data() + v.size()) return CsvField::text;
   if (ec == std::errc::result_out_of_range) return CsvField::out_of_range;
   return ec == std::errc{} ? CsvField::number : CsvField::text;

@@ -1,5 +1,7 @@
 #include "selfalign/io/trajectory_csv.hpp"
 
+#include "../double_chars.hpp"
+
 #include <charconv>
 #include <sstream>
 
@@ -9,7 +11,7 @@ namespace {
 // Shortest text that reads back as the same double (std::to_chars round-trip guarantee).
 void append_number(std::string& line, double value) {
   char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  const auto [end, ec] = detail::double_to_chars(buffer, buffer + sizeof buffer, value);
   line.append(buffer, ec == std::errc{} ? end : buffer);
 }
 
