@@ -9,10 +9,6 @@
 
 namespace selfalign::cli {
 
-nlohmann::json number_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
 std::string csv_number(double value) { return format_number(value); }
 
 std::string unit_label(UnitSystem units, Dimension d) {

@@ -16,8 +16,9 @@
 
 namespace selfalign::cli {
 
-/// The value as a JSON number, or null for NaN and ±inf (JSON has neither).
-nlohmann::json number_or_null(double value);
+/// The value as a JSON number, or null for NaN and ±inf (JSON has neither): the library's
+/// (io/summary_json.hpp).
+using selfalign::number_or_null;
 
 
 /// A CSV field: shortest text that reads back as the same double; "nan", "inf", "-inf".

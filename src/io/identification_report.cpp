@@ -9,20 +9,17 @@
 #include <string>
 
 #include "selfalign/error.hpp"
+#include "selfalign/io/summary_json.hpp"
 
 namespace selfalign {
 namespace {
-
-nlohmann::json value_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
 
 nlohmann::json matrix_json(const std::vector<double>& m, std::size_t n) {
   nlohmann::json rows = nlohmann::json::array();
   for (std::size_t a = 0; a < n; ++a) {
     nlohmann::json row = nlohmann::json::array();
     for (std::size_t b = 0; b < n; ++b)
-      row.push_back(m.size() == n * n ? value_or_null(m[a * n + b]) : nlohmann::json(nullptr));
+      row.push_back(m.size() == n * n ? number_or_null(m[a * n + b]) : nlohmann::json(nullptr));
     rows.push_back(row);
   }
   return rows;
@@ -50,12 +47,12 @@ nlohmann::json identification_json(const Identification& r) {
   j["parameters"] = nlohmann::json::array();
   for (const IdentifiedParameter& p : r.parameters)
     j["parameters"].push_back({{"name", p.name},
-                               {"initial", value_or_null(p.initial)},
-                               {"estimate", value_or_null(p.estimate)},
-                               {"standard_error", value_or_null(p.standard_error)},
-                               {"interval", {value_or_null(p.lower), value_or_null(p.upper)}},
+                               {"initial", number_or_null(p.initial)},
+                               {"estimate", number_or_null(p.estimate)},
+                               {"standard_error", number_or_null(p.standard_error)},
+                               {"interval", {number_or_null(p.lower), number_or_null(p.upper)}},
                                {"profile_interval",
-                                {value_or_null(p.profile_lower), value_or_null(p.profile_upper)}},
+                                {number_or_null(p.profile_lower), number_or_null(p.profile_upper)}},
                                {"identifiable", p.identifiable},
                                {"reason", p.identifiable ? nlohmann::json(nullptr)
                                                          : nlohmann::json(p.reason)}});
@@ -68,7 +65,7 @@ nlohmann::json identification_json(const Identification& r) {
   j["profiles"] = nlohmann::json::array();
   for (const ProfileLikelihood& pl : r.profiles) {
     nlohmann::json rss = nlohmann::json::array();
-    for (double v : pl.rss) rss.push_back(value_or_null(v));
+    for (double v : pl.rss) rss.push_back(number_or_null(v));
     j["profiles"].push_back({{"name", pl.name}, {"values", pl.values}, {"rss", rss}});
   }
   j["runs"] = nlohmann::json::array();
@@ -76,19 +73,19 @@ nlohmann::json identification_json(const Identification& r) {
     j["runs"].push_back({{"source", f.source},
                          {"samples", f.t.size()},
                          {"skipped_rows", f.skipped},
-                         {"time_offset", value_or_null(f.time_offset)},
-                         {"time_offset_standard_error", value_or_null(f.time_offset_standard_error)},
-                         {"residual_rms", value_or_null(f.rms)}});
+                         {"time_offset", number_or_null(f.time_offset)},
+                         {"time_offset_standard_error", number_or_null(f.time_offset_standard_error)},
+                         {"residual_rms", number_or_null(f.rms)}});
   j["residuals"] = {{"samples", r.samples},
                     {"estimated_parameters", r.estimated},
                     {"shooting_windows", r.windows},
-                    {"rss", value_or_null(r.rss)},
-                    {"sigma", value_or_null(r.sigma)},
-                    {"max_abs", value_or_null(r.max_abs_residual)}};
+                    {"rss", number_or_null(r.rss)},
+                    {"sigma", number_or_null(r.sigma)},
+                    {"max_abs", number_or_null(r.max_abs_residual)}};
   j["fit"] = {{"iterations", r.iterations},
               {"converged", r.converged},
               {"termination", r.termination},
-              {"global_best_rss", value_or_null(r.global_best_rss)},
+              {"global_best_rss", number_or_null(r.global_best_rss)},
               {"global_evaluations", r.global_evaluations}};
   j["warnings"] = r.warnings;
   return j;

@@ -15,8 +15,6 @@ namespace {
 
 using nlohmann::json;
 
-json steady_number(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-
 // The profile part of the report, in the run's units: kind, Δt, Δy, and for three-phase
 // profiles y2'', y3'' and the switch times of the appendix (null where there are none).
 void add_profile(json& j, const ProfileModel& model) {
@@ -65,9 +63,9 @@ json steady_report_json(const ProfileModel& model, const std::optional<SteadySta
   if (!steady) return j;
   j["pattern"] = steady->pattern;  // the stick/slip sequence, e.g. "stick,forward,backward"
   j["v_bar"] = u.velocity(steady->v_bar);
-  j["f"] = steady_number(steady->f);  // [-] always: f of the dimensionless v̄
+  j["f"] = number_or_null(steady->f);  // [-] always: f of the dimensionless v̄
   j["x_dot_0s"] = u.velocity(steady->x_dot_0s);
-  j["x_dot_0s_error"] = steady_number(u.velocity(steady->x_dot_0s_error));  // a bound
+  j["x_dot_0s_error"] = number_or_null(u.velocity(steady->x_dot_0s_error));  // a bound
   j["phase"] = u.time(steady->phase);
   j["displacement"] = u.length(steady->displacement);
   j["converged"] = steady->converged;

@@ -12,8 +12,6 @@ namespace {
 
 using nlohmann::json;
 
-json number_or_null(double v) { return std::isnan(v) ? json(nullptr) : json(v); }
-
 json profile_json(const TableProfile& p, const OutputUnits& u) {
   json j = {{"kind", p.kind()},
             {"period", u.time(p.period())},                       // Δt [-] | [s]
@@ -66,6 +64,10 @@ json scales_json(const SimulateModel& m) {
 }
 
 }  // namespace
+
+json number_or_null(double value) {
+  return std::isfinite(value) ? json(value) : json(nullptr);
+}
 
 json friction_json(const FrictionMap& f, const OutputUnits& u) {
   if (const TwoRegionTable* two = f.two_region())

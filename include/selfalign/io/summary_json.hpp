@@ -33,6 +33,10 @@ nlohmann::json integrator_json(Method method, const IntegratorOptions& options,
 /// the run's units.
 nlohmann::json friction_json(const FrictionMap& f, const OutputUnits& units);
 
+/// `value` as a JSON number, or null when it is not finite (JSON has neither NaN nor +-inf):
+/// the one rule of every report (CLI, Python, WebAssembly) for absent values.
+nlohmann::json number_or_null(double value);
+
 nlohmann::json simulate_summary_json(const SimulateModel& model, const SimulationResult& result,
                                      const std::optional<std::string>& trajectory_file);
 
