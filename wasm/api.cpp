@@ -14,7 +14,6 @@
 #include <exception>
 #include <vector>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -30,31 +29,9 @@
 namespace selfalign::wasm {
 namespace {
 
-// A config from JSON text: every key as `set_simulate_config_value` takes it (numbers written
-// with 17 digits, arrays comma-separated), so the page's keys are the config files' keys.
+// A config from JSON text, read as a config file's keys are (simulate_config_from_json).
 SimulateConfig config_of(const std::string& text) {
-  const nlohmann::json j = nlohmann::json::parse(text);
-  SimulateConfig c;
-  for (const auto& [key, value] : j.items()) {
-    std::string v;
-    if (value.is_string()) {
-      v = value.get<std::string>();
-    } else if (value.is_array()) {
-      for (const auto& e : value) {
-        std::ostringstream s;
-        s.precision(17);
-        s << e.get<double>();
-        v += (v.empty() ? "" : ",") + s.str();
-      }
-    } else {
-      std::ostringstream s;
-      s.precision(17);
-      s << value.get<double>();
-      v = s.str();
-    }
-    set_simulate_config_value(c, key, v);
-  }
-  return c;
+  return simulate_config_from_json(nlohmann::json::parse(text), "config");
 }
 
 std::string error_json(const std::exception& e) {
@@ -91,10 +68,6 @@ std::string steady_json(const std::string& config_text) {
   }
 }
 
-nlohmann::json value_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
 // As `selfalign sweep accelerations --a2-range LO:HI:N --a3-range LO:HI:N` (linear grids).
 std::string sweep_json(const std::string& config_text, double a2_lo, double a2_hi, int n2,
                        double a3_lo, double a3_hi, int n3) {
@@ -122,8 +95,8 @@ std::string sweep_json(const std::string& config_text, double a2_lo, double a2_h
     for (const AccelerationCell& c : cells) {
       j["case_a_priori"].push_back(static_cast<int>(c.predicted));
       j["case"].push_back(static_cast<int>(c.observed));
-      j["v_bar"].push_back(value_or_null(u.velocity(c.v_bar)));
-      j["f"].push_back(value_or_null(c.f));
+      j["v_bar"].push_back(number_or_null(u.velocity(c.v_bar)));
+      j["f"].push_back(number_or_null(c.f));
     }
     return j.dump();
   } catch (const std::exception& e) {

@@ -27,8 +27,14 @@ SimulateConfig load_simulate_config(const std::string& path) {
   const nlohmann::json doc = read_document(path, kConfigDocument);
   if (!doc.is_object())
     throw InvalidParameter("config file", path, "must contain one JSON object of keys");
+  return simulate_config_from_json(doc, path);
+}
+
+SimulateConfig simulate_config_from_json(const nlohmann::json& doc, const std::string& source) {
+  if (!doc.is_object())
+    throw InvalidParameter("config", source, "must be one JSON object of keys");
   SimulateConfig config;
-  const ConfigValues values = read_config_values(doc, simulate_config_key_table(), path);
+  const ConfigValues values = read_config_values(doc, simulate_config_key_table(), source);
   for (const ConfigValues::Entry& entry : values.entries())
     set_simulate_config_value(config, *find_simulate_config_key(entry.key->name),
                               entry.value);

@@ -128,6 +128,11 @@ SimulateConfig simulate_config_defaults();
 /// unreadable, malformed or too deeply nested file. Values are not range-checked here.
 SimulateConfig load_simulate_config(const std::string& path);
 
+/// The same from a document already read (a JSON object of keys, e.g. the WebAssembly core's
+/// argument): the keys, types and messages of a config file; `source` names it in messages
+/// ("(in <source>)"). Throws InvalidParameter("config", source, ...) unless `doc` is an object.
+SimulateConfig simulate_config_from_json(const nlohmann::json& doc, const std::string& source);
+
 /// Sets one key from command-line text (numbers as C-locale text, "nan" parsed and refused by
 /// resolve_simulate_config, whatever the key; arrays comma-separated: "0.3,0.2,0.5"). Throws InvalidParameter for an unknown key
 /// or text that is not of the key's type.
