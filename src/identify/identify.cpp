@@ -16,6 +16,7 @@
 #include <limits>
 #include <memory>
 #include <set>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -96,8 +97,10 @@ class Fit {
       const double period = model->out.time(model->model.profile->period());
       periods_.push_back(period);
       const auto w = cut_windows(r, runs_[r]->data().t, o.window_periods * period);
+      run_first_.push_back(windows_.size());
       windows_.insert(windows_.end(), w.begin(), w.end());
     }
+    run_first_.push_back(windows_.size());
     std::size_t samples = 0;
     for (const auto& r : runs_) samples += r->data().t.size();
     estimated_ = p + (offset_free_ ? runs_.size() : 0) + 2 * windows_.size();
@@ -163,16 +166,11 @@ class Fit {
   // the model at e.theta, written into e.states; the RSS, NaN where the model fails.
   double reset_rss(Estimate& e) const {
     double s = 0;
-    std::size_t k = 0;
     for (std::size_t r = 0; r < runs_.size(); ++r) {
-      std::size_t end = k;
-      while (end < windows_.size() && windows_[end].run == r) ++end;
       const auto model = runs_[r]->model(e.theta);
       if (!model) return kNaN;
-      s += reset_shooting(*model, runs_[r]->data(),
-                          std::span<const Window>(windows_).subspan(k, end - k), e.tau[r],
-                          &e.states[2 * k]);
-      k = end;
+      s += reset_shooting(*model, runs_[r]->data(), run_windows(r), e.tau[r],
+                          &e.states[2 * run_first_[r]]);
     }
     return s;
   }
@@ -185,13 +183,10 @@ class Fit {
   void scan_offsets(Estimate& e) const {
     if (!offset_free_) return;
     for (std::size_t r = 0; r < runs_.size(); ++r) {
-      std::size_t k = 0;
-      while (k < windows_.size() && windows_[k].run != r) ++k;
-      std::size_t end = k;
-      while (end < windows_.size() && windows_[end].run == r) ++end;
+      const std::size_t k = run_first_[r];
       const auto model = runs_[r]->model(e.theta);
       if (!model) return;
-      const auto windows = std::span<const Window>(windows_).subspan(k, end - k);
+      const auto windows = run_windows(r);
       double lo = offset_bounds_.lower, hi = offset_bounds_.upper, best = e.tau[r];
       for (int pass = 0; pass < 2; ++pass) {
         double best_rss = reset_shooting(*model, runs_[r]->data(), windows, best, &e.states[2 * k]);
@@ -356,10 +351,10 @@ class Fit {
     return summary;
   }
 
-  // The Jacobian's Schur complement S = sum_k G_k^T (I - P_k) G_k, P_k the projection onto
-  // the span of X_k
-  // over the global columns G (theta, then each run's free offset) with the window states X
-  // eliminated, and the residuals. Throws nothing; a window whose model fails gives zeros.
+  // The Jacobian's Schur complement S = sum_k G_k^T (I - P_k) G_k over the global columns G_k
+  // (theta, then each run's free offset), P_k the projection onto the span of window k's state
+  // columns X_k (the states eliminated). Throws nothing; a window whose model fails gives
+  // zeros.
   Eigen::MatrixXd schur(const Estimate& e) const {
     const std::size_t p = names_.size(), R = offset_free_ ? runs_.size() : 0, g = p + R;
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(static_cast<long>(g), static_cast<long>(g));
@@ -390,6 +385,11 @@ class Fit {
   }
 
  private:
+  // Run r's windows: cut run by run, so a contiguous span of windows_.
+  std::span<const Window> run_windows(std::size_t r) const {
+    return std::span<const Window>(windows_).subspan(run_first_[r], run_first_[r + 1] - run_first_[r]);
+  }
+
   const IdentificationOptions& o_;
   std::vector<std::unique_ptr<ShootingRun>> runs_;
   std::vector<std::string> names_;
@@ -397,6 +397,7 @@ class Fit {
   Estimate start_;
   std::vector<double> periods_;
   std::vector<Window> windows_;
+  std::vector<std::size_t> run_first_;  // run r's windows are [run_first_[r], run_first_[r+1])
   std::vector<IdentificationBounds> bounds_;
   IdentificationBounds offset_bounds_{0, 0};
   std::vector<double> floors_;
