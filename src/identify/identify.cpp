@@ -175,13 +175,16 @@ class Fit {
     return s;
   }
 
-  // The offsets alone (when free), run by run, at e.theta: the reset-shooting RSS on a grid of
+  // The offsets (when free), run by run, at e.theta: the reset-shooting RSS on a grid of
   // kOffsetGrid points over the offset box, then on a finer grid about the best. A clock
   // offset of a few per cent of the period misplaces every event of every window, and the
   // local stage started there can wander into another basin; the scan costs 2 kOffsetGrid
   // passes over the data. Leaves e.states re-shot at the result.
   void scan_offsets(Estimate& e) const {
-    if (!offset_free_) return;
+    if (!offset_free_) {
+      reset_rss(e);  // no offset to scan: the window states alone, re-shot at e.theta
+      return;
+    }
     for (std::size_t r = 0; r < runs_.size(); ++r) {
       const std::size_t k = run_first_[r];
       const auto model = runs_[r]->model(e.theta);
