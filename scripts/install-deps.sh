@@ -10,7 +10,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pil python3-pytest python3-venv
   python3-distributed python3-mpi4py openmpi-bin python3-scipy
   libsiconos-numerics-dev libceres-dev
-  emscripten
+  emscripten nodejs
 )
 
 missing=()
