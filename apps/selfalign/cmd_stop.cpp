@@ -27,20 +27,6 @@ struct StopFlags {
   int max_periods = StoppingOptions{}.max_periods;
 };
 
-// End of the CSV trajectory [-]: the stop (permanent stick); the last fraction reached plus one
-// period (accumulation, whose stop is at t = inf); the whole run (not stopped).
-double trajectory_end(const StoppingRun& r, double t0, double period, int max_periods) {
-  double end = t0 + max_periods * period;
-  if (r.kind == StopKind::permanent_stick) end = r.process_time;
-  if (r.kind == StopKind::accumulation) {
-    double last = std::isnan(r.entry_time) ? t0 : r.entry_time;
-    for (double t : r.time_to_fraction)
-      if (std::isfinite(t)) last = std::max(last, t);
-    end = last + period;
-  }
-  return end > t0 ? end : t0 + period;
-}
-
 // Header "t,x,x_dot,stick": time, position, velocity in the run's units; stick 0/1.
 std::string phase_portrait_csv(const Trajectory& tr, const OutputUnits& u) {
   std::string csv = "t,x,x_dot,stick\n";
@@ -48,40 +34,6 @@ std::string phase_portrait_csv(const Trajectory& tr, const OutputUnits& u) {
     csv += csv_number(u.time(tr.t[i])) + ',' + csv_number(u.length(tr.x[i])) + ',' +
            csv_number(u.velocity(tr.xd[i])) + ',' + (tr.stick[i] ? "1" : "0") + '\n';
   return csv;
-}
-
-json stop_json(const SimulateModel& model, const StoppingOptions& o, const StoppingRun& r) {
-  const OutputUnits u = model.output_units();
-  json j = stopping_context_json(model, true);
-  const bool stopped = r.kind != StopKind::not_stopped;
-  j["stop"] = to_string(r.kind);
-  j["accumulation_proven"] = r.kind == StopKind::accumulation && r.accumulation_proven;
-  j["law"] = law_json(model.law, model.output_units(), model.scales.mu());
-  // The solver of the run: the exact one, or the slip integrator for a Stribeck/viscous law.
-  j["method"] = to_string(r.method);
-  j["end_position"] = stopped ? json(u.length(r.end_position)) : json(nullptr);
-  j["process_time"] = stopped ? number_or_null(u.time(r.process_time)) : json(nullptr);
-  j["entry_time"] = number_or_null(u.time(r.entry_time));
-  j["x_stick_min"] = length_or_null(u, r.x_stick_min);
-  j["stick_positions"] = json::array();
-  for (double x : r.stick_positions) j["stick_positions"].push_back(u.length(x));
-  j["fractions"] = json::array();
-  // Where stopping_run measures the fractions from: x_mu, or the rise of a field's level.
-  const double x_mu = friction_rise(*model.friction);
-  for (std::size_t k = 0; k < o.fractions.size(); ++k) {
-    const double p = o.fractions[k];
-    const int periods = r.periods_to_fraction[k];
-    j["fractions"].push_back(
-        {{"p", p},
-         {"position", length_or_null(u, x_mu + p * (r.x_stick_min - x_mu))},
-         {"time", number_or_null(u.time(r.time_to_fraction[k]))},
-         {"periods_from_entry", periods < 0 ? json(nullptr) : json(periods)}});
-  }
-  j["initial"] = {{"t", u.time(model.initial.t)},
-                  {"x", u.length(model.initial.x)},
-                  {"x_dot", u.velocity(model.initial.xd)}};
-  j["max_periods"] = o.max_periods;
-  return j;
 }
 
 std::string stop_table(const json& j, UnitSystem units) {
@@ -124,12 +76,12 @@ void run_stop(const ConfigFlags& flags, const StopFlags& f) {
   std::string csv;
   if (paths.csv) {  // the same run, sampled by simulate() with the exact solver
     SimulationOptions o = model.options;
-    o.duration = trajectory_end(run, model.initial.t, model.profile->period(), f.max_periods) -
+    o.duration = stop_trajectory_end(run, model.initial.t, model.profile->period(), f.max_periods) -
                  model.initial.t;
     csv = phase_portrait_csv(simulate(*model.profile, friction, model.law, model.initial, o).trajectory,
                              model.output_units());
   }
-  const json report = stop_json(model, options, run);
+  const json report = stop_report_json(model, options, run);
   deliver_csv_and_report(paths, csv, report, stop_table(report, model.units));
 }
 
