@@ -10,13 +10,16 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-matplotlib python3-pil python3-pytest python3-venv
   python3-distributed python3-mpi4py openmpi-bin python3-scipy
   libsiconos-numerics-dev libceres-dev
-  emscripten nodejs
+  emscripten nodejs chromium
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# npm (the explorer's pinned packages): Debian's package where no npm came with nodejs (a
+# nodejs built elsewhere may carry its own npm, which Debian's would conflict with).
+command -v npm >/dev/null || missing+=(npm)
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"

@@ -1,15 +1,22 @@
 // The explorer's API (issue 26, item 1): the library's own front doors behind embind, with
 // configs and results as JSON text so that the page and the native CLI speak the same keys.
-//   simulate(configJson)  -> the CLI's `simulate --summary` JSON (io/summary_json.hpp)
+//   simulate(configJson)  -> the CLI's `simulate --summary` JSON (io/summary_json.hpp) plus
+//                            "trajectory": the CSV's columns as arrays (io/trajectory_csv.hpp)
 //   steady(configJson)    -> the CLI's `steady --json` report (io/steady_report.hpp)
 //   sweep(configJson, a2Lo, a2Hi, n2, a3Lo, a3Hi, n3)
 //                         -> `sweep accelerations`' cells on a linear (y2'', y3'') grid (run
 //                            units), row-major with a2 outer: {a2, a3, case_a_priori, case,
 //                            v_bar, f} as arrays (null for NaN)
+//   stop(configJson, maxPeriods)
+//                         -> the CLI's `stop --json` report (io/stop_report.hpp) plus
+//                            "trajectory" (as `stop --out`, at most 20000 samples) and "map": eq. (59) sampled between
+//                            x_mu and past its fixed point (three-phase on the two-region table;
+//                            else null)
 // Errors come back as {"error": "<the CLI's one-line message>"} rather than as exceptions.
 
 #include <emscripten/bind.h>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <vector>
@@ -20,9 +27,12 @@
 
 #include "selfalign/analysis/sweep.hpp"
 #include "selfalign/error.hpp"
+#include "selfalign/friction/friction_field.hpp"
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/simulate_model.hpp"
+#include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/io/steady_report.hpp"
+#include "selfalign/io/stop_report.hpp"
 #include "selfalign/io/summary_json.hpp"
 #include "selfalign/simulate/simulate.hpp"
 
@@ -38,6 +48,24 @@ std::string error_json(const std::exception& e) {
   return nlohmann::json{{"error", e.what()}}.dump();
 }
 
+// The trajectory CSV's columns (io/trajectory_csv.hpp) as arrays in the run's units.
+nlohmann::json trajectory_json(const Trajectory& tr, const OutputUnits& u) {
+  nlohmann::json j;
+  auto column = [&](const char* key, const std::vector<double>& v, double (OutputUnits::*f)(double) const) {
+    std::vector<double> c(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) c[i] = (u.*f)(v[i]);
+    j[key] = std::move(c);
+  };
+  column("t", tr.t, &OutputUnits::time);
+  column("x", tr.x, &OutputUnits::length);
+  column("x_dot", tr.xd, &OutputUnits::velocity);
+  column("y", tr.y, &OutputUnits::length);
+  column("y_dot", tr.yd, &OutputUnits::velocity);
+  column("y_ddot", tr.ydd, &OutputUnits::acceleration);
+  j["stick"] = tr.stick;
+  return j;
+}
+
 std::string simulate_json(const std::string& config_text) {
   try {
     SimulateConfig config = config_of(config_text);
@@ -47,7 +75,9 @@ std::string simulate_json(const std::string& config_text) {
     SimulationOptions options = model.options;
     const SimulationResult result =
         simulate(*model.profile, *model.friction, model.law, model.initial, options);
-    return simulate_summary_json(model, result, std::nullopt).dump();
+    nlohmann::json j = simulate_summary_json(model, result, std::nullopt);
+    j["trajectory"] = trajectory_json(result.trajectory, model.output_units());
+    return j.dump();
   } catch (const std::exception& e) {
     return error_json(e);
   }
@@ -104,6 +134,57 @@ std::string sweep_json(const std::string& config_text, double a2_lo, double a2_h
   }
 }
 
+// Eq. (59) on kMapSamples points from x_mu to past the fixed point (eq. 60), in the run's units;
+// null unless the profile is three-phase and the table the paper's two-region one.
+nlohmann::json stick_position_map_json(const SimulateModel& model) {
+  constexpr int kMapSamples = 200;
+  const ThreePhaseProfile* profile = model.profile->three_phase();
+  const std::optional<TwoRegionTable> table = as_two_region_table(*model.friction);
+  if (!profile || !table) return nullptr;
+  const StickPositionMap map(*profile, *table);
+  const double lo = table->x_mu(), fixed = map.fixed_point();
+  const double hi = fixed + 0.25 * std::max(fixed - lo, table->width());
+  const OutputUnits u = model.output_units();
+  nlohmann::json j;
+  j["fixed_point"] = length_or_null(u, fixed);
+  j["x_n"] = nlohmann::json::array();
+  j["x_next"] = nlohmann::json::array();
+  for (int i = 0; i < kMapSamples; ++i) {
+    const double x = lo + (hi - lo) * i / (kMapSamples - 1);
+    j["x_n"].push_back(u.length(x));
+    j["x_next"].push_back(length_or_null(u, map(x)));
+  }
+  return j;
+}
+
+// As `selfalign stop --json --max-periods N` (and its --out trajectory, sampled by simulate()).
+std::string stop_json(const std::string& config_text, int max_periods) {
+  try {
+    const SimulateModel model = stopping_model(config_of(config_text), "stop");
+    StoppingOptions options;
+    options.max_periods = max_periods;
+    options.integrator = model.options.integrator;
+    const StoppingRun run =
+        stopping_run(*model.profile, *model.friction, model.law, model.initial, options);
+    nlohmann::json j = stop_report_json(model, options, run);
+    // The trajectory of `stop --out`, thinned to at most kMaxStopSamples samples for the page
+    // (a run that never stops spans max_periods periods).
+    constexpr double kMaxStopSamples = 20000;
+    SimulationOptions o = model.options;
+    o.duration = stop_trajectory_end(run, model.initial.t, model.profile->period(), max_periods) -
+                 model.initial.t;
+    const double step = o.output_step > 0 ? o.output_step : model.profile->period() / 200;
+    o.output_step = std::max(step, o.duration / kMaxStopSamples);
+    j["trajectory"] = trajectory_json(
+        simulate(*model.profile, *model.friction, model.law, model.initial, o).trajectory,
+        model.output_units());
+    j["map"] = stick_position_map_json(model);
+    return j.dump();
+  } catch (const std::exception& e) {
+    return error_json(e);
+  }
+}
+
 }  // namespace
 }  // namespace selfalign::wasm
 
@@ -111,4 +192,5 @@ EMSCRIPTEN_BINDINGS(selfalign) {
   emscripten::function("simulate", &selfalign::wasm::simulate_json);
   emscripten::function("steady", &selfalign::wasm::steady_json);
   emscripten::function("sweep", &selfalign::wasm::sweep_json);
+  emscripten::function("stop", &selfalign::wasm::stop_json);
 }

@@ -7,12 +7,10 @@
 const test = require('node:test');
 const assert = require('node:assert');
 const fs = require('node:fs');
-const os = require('node:os');
 const path = require('node:path');
-const { execFileSync, spawnSync } = require('node:child_process');
 
-const root = path.resolve(__dirname, '..', '..');
-const cli = process.env.SELFALIGN_CLI || path.join(root, 'build/release/apps/selfalign/selfalign');
+const { root, settings, runCli, nativeSimulate, nativeSteady, nativeStop, cliError, close } =
+  require('./cli.cjs');
 const wasmDir = path.join(root, 'build/wasm');
 
 let core;
@@ -21,59 +19,12 @@ test.before(async () => {
   core = await create({ wasmBinary: fs.readFileSync(path.join(wasmDir, 'selfalign_core.wasm')) });
 });
 
-// A small seeded generator (mulberry32): the same 20 settings on every run.
-function rng(seed) {
-  return () => {
-    seed |= 0; seed = (seed + 0x6D2B79F5) | 0;
-    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
-    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
-function settings(n) {
-  const r = rng(26);
-  const out = [];
-  while (out.length < n) {
-    const period = 0.5 + r();
-    const stroke = 0.05 + 0.05 * r();
-    const a2 = 1.2 + 2 * r(), a3 = 1.1 + 2 * r();
-    // physical (eq. 28): 1/a2 + 1/a3 <= period^2 / (8 stroke)
-    if (1 / a2 + 1 / a3 > period * period / (8 * stroke)) continue;
-    const c = { profile: 'three-phase', period, stroke, a2, a3, periods: 5 + Math.floor(10 * r()),
-                friction: 'two-region', x_mu: 0.1 + 0.3 * r(), width: 0.02 + 0.05 * r(),
-                c_mu: 2 + 2 * r() };
-    c.mu = 0.3;
-    if (r() < 0.5) c.mu_static = 0.3 * (1 + 0.3 * r());
-    out.push(c);
-  }
-  return out;
-}
-
-function native(config) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'selfalign-wasm-'));
-  try {
-    const file = path.join(dir, 'c.json');
-    fs.writeFileSync(file, JSON.stringify(config));
-    // with the trajectory written, as the page records it (stick fraction over the samples)
-    return JSON.parse(execFileSync(cli, ['simulate', '--config', file, '--out',
-                                         path.join(dir, 't.csv'), '--summary', '-']));
-  } finally {
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
-}
-
-function close(a, b, what) {
-  const tol = 1e-12 * Math.max(1, Math.abs(b));
-  assert.ok(Math.abs(a - b) <= tol, `${what}: wasm ${a} vs native ${b}`);
-}
-
 test('simulate agrees with the native CLI at 20 random settings', () => {
   let worst = 0;
   for (const c of settings(20)) {
     const w = JSON.parse(core.simulate(JSON.stringify(c)));
     assert.ok(!w.error, w.error);
-    const n = native(c);
+    const n = nativeSimulate(c);
     close(w.final.x, n.final.x, 'final x');
     close(w.final.x_dot, n.final.x_dot, 'final x_dot');
     close(w.mean_velocity_last_period, n.mean_velocity_last_period, 'v_bar last period');
@@ -83,17 +34,6 @@ test('simulate agrees with the native CLI at 20 random settings', () => {
   }
   console.log(`largest relative difference of the end position: ${worst}`);
 });
-
-function nativeSteady(config) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'selfalign-wasm-'));
-  try {
-    const file = path.join(dir, 'c.json');
-    fs.writeFileSync(file, JSON.stringify(config));
-    return JSON.parse(execFileSync(cli, ['steady', '--config', file, '--json']));
-  } finally {
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
-}
 
 test('steady state agrees with the native CLI at 20 random settings', () => {
   let worst = 0;
@@ -122,18 +62,13 @@ test('steady state agrees with the native CLI at 20 random settings', () => {
 
 // `sweep accelerations --out cells.csv`: a2,a3,case_a_priori,case,v_bar,f,x_dot_0s,converged,status
 function nativeSweep(config, r2, r3) {
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'selfalign-wasm-'));
-  try {
-    const file = path.join(dir, 'c.json'), out = path.join(dir, 'cells.csv');
-    fs.writeFileSync(file, JSON.stringify(config));
-    execFileSync(cli, ['sweep', 'accelerations', '--config', file, '--a2-range', r2.join(':'),
-                       '--a3-range', r3.join(':'), '--out', out, '--quiet']);
-    const [header, ...rows] = fs.readFileSync(out, 'utf8').trim().split('\n');
-    const cols = header.split(',');
-    return rows.map(r => Object.fromEntries(r.split(',').map((v, i) => [cols[i], v])));
-  } finally {
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
+  const r = runCli(['sweep', 'accelerations', '--a2-range', r2.join(':'), '--a3-range', r3.join(':'),
+                    '--quiet'], config, (dir) => ['--out', path.join(dir, 'cells.csv')],
+                   (dir) => fs.readFileSync(path.join(dir, 'cells.csv'), 'utf8'));
+  assert.strictEqual(r.status, 0, r.stderr);
+  const [header, ...rows] = r.after.trim().split('\n');
+  const cols = header.split(',');
+  return rows.map(row => Object.fromEntries(row.split(',').map((v, i) => [cols[i], v])));
 }
 
 test('the (a2, a3) sweep agrees with the native CLI cell by cell', () => {
@@ -163,13 +98,37 @@ test('the (a2, a3) sweep agrees with the native CLI cell by cell', () => {
 test('bad input gives the CLI message', () => {
   const bad = { profile: 'three-phase', a2: 0.5, a3: 0.5 };
   const w = JSON.parse(core.simulate(JSON.stringify(bad)));
-  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'selfalign-wasm-'));
-  const file = path.join(dir, 'c.json');
-  fs.writeFileSync(file, JSON.stringify(bad));
-  const n = spawnSync(cli, ['simulate', '--config', file], { encoding: 'utf8' });
-  fs.rmSync(dir, { recursive: true, force: true });
-  assert.strictEqual(n.status, 2);
-  assert.strictEqual(`selfalign: error: ${w.error}\n`, n.stderr);
+  assert.strictEqual(w.error, cliError(['simulate'], bad));
   const unknown = JSON.parse(core.simulate(JSON.stringify({ stroke: -1 })));
   assert.match(unknown.error, /stroke/);
+  // stop on a table without a rise of friction: the CLI's refusal, word for word
+  const uniform = { friction: 'uniform' };
+  assert.strictEqual(JSON.parse(core.stop(JSON.stringify(uniform), 100)).error,
+                     cliError(['stop', '--json'], uniform));
+});
+
+test('stopping runs agree with the native CLI at 20 random settings', () => {
+  let worst = 0;
+  for (const s of settings(20, 59)) {
+    const c = { ...s, x0: s.x_mu - 0.2 };
+    delete c.periods;
+    const w = JSON.parse(core.stop(JSON.stringify(c), 3000));
+    assert.ok(!w.error, w.error);
+    const n = nativeStop(c, 3000);
+    assert.strictEqual(w.stop, n.stop);
+    assert.strictEqual(w.accumulation_proven, n.accumulation_proven);
+    assert.strictEqual(w.stick_positions.length, n.stick_positions.length);
+    for (const key of ['end_position', 'x_stick_min', 'entry_time', 'process_time']) {
+      if (n[key] === null) assert.strictEqual(w[key], null, key);
+      else close(w[key], n[key], key);
+    }
+    w.stick_positions.forEach((x, k) => close(x, n.stick_positions[k], `stick position ${k}`));
+    if (n.end_position !== null)
+      worst = Math.max(worst, Math.abs(w.end_position - n.end_position) / Math.max(1, Math.abs(n.end_position)));
+    // the trajectory ends where the CLI's --out does, and the map's fixed point is x_stick,min
+    // where eq. (59) applies (the paper's law: mu_static = mu)
+    assert.ok(w.trajectory.t.length > 1);
+    if (w.map && c.mu_static === undefined && n.stop === 'accumulation') close(w.map.fixed_point, n.x_stick_min, 'fixed point');
+  }
+  console.log(`largest relative difference of the stopping end position: ${worst}`);
 });
