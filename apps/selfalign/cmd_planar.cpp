@@ -22,6 +22,7 @@
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
 #include "selfalign/io/planar_config.hpp"
+#include "selfalign/io/planar_report.hpp"
 #include "selfalign/simulate/simulate.hpp"  // kMaxTimeSteps, kMaxRecordedSamples
 
 namespace selfalign::cli {
@@ -36,26 +37,7 @@ struct PlanarFlags {
   bool as_json = false, quiet = false;
 };
 
-// SI views of dimensionless values.
-struct Si {
-  const PlanarSetup& s;
-  double length(double v) const { return s.si ? s.scales.length_to_si(v) : v; }
-  double time(double v) const { return s.si ? s.scales.time_to_si(v) : v; }
-  double velocity(double v) const { return s.si ? s.scales.velocity_to_si(v) : v; }
-  double rate(double v) const { return s.si ? to_si(Dimension::rate, v, s.scales) : v; }
-  std::string u(const char* si, const char* dimless) const { return s.si ? si : dimless; }
-};
-
-json census_json(const PlanarCensus& c) {
-  const double n = static_cast<double>(c.total());
-  return {{"stick", c.stick}, {"pivot", c.pivot}, {"slip", c.slip},
-          {"stick_fraction", n > 0 ? c.stick / n : NAN}};
-}
-
-json pose_json(const PlanarPose& p, const Si& si) {
-  return {{"x", number_or_null(si.length(p.x))}, {"y", number_or_null(si.length(p.y))},
-          {"angle_rad", number_or_null(p.angle)}};
-}
+using Si = PlanarUnits;
 
 // A key the config gives that nothing read has no effect: say so (after the output).
 void warn_unused_keys(const PlanarSetup& s) {
@@ -69,16 +51,6 @@ PlanarSetup load(const PlanarFlags& f, std::vector<ConfigSection::Read>* reads =
   PlanarSetup s = load_planar_config(f.config, f.set, reads);
   warn_unused_keys(s);
   return s;
-}
-
-json header(const PlanarSetup& s) {
-  return {{"config", s.path},
-          {"units", s.si ? "si" : "dimensionless"},
-          {"scales", {{"length_m", s.scales.length()}, {"mu", s.scales.mu()}, {"g", s.scales.gravity()}, {"time_s", s.scales.time()}}},
-          {"contact_points", s.problem.part.patch.size()},
-          {"inertia_per_unit_mass", s.problem.part.inertia},
-          {"step", s.problem.options.step},
-          {"steps_per_period", steps_per_period(s.problem)}};
 }
 
 // The recorded run as CSV rows, in the run's units; the world pose of the part is the table's
@@ -105,41 +77,13 @@ std::string trajectory_csv(const PlanarTrajectory& r, const Si& si) {
 
 void run_simulate(const PlanarFlags& f) {
   const PlanarSetup s = load(f);
-  require_planar_steps("run.periods", s.periods, s.problem);
-  const double rows = s.periods * static_cast<double>(steps_per_period(s.problem)) / s.every;
-  if (!(rows <= kMaxRecordedSamples))
-    throw InvalidParameter("run.every", s.every,
-                           "records " + format_number(rows) + " rows; at most " +
-                               format_number(kMaxRecordedSamples));
-  if (s.method == Method::exact && !exact_point_applies(s.problem))
-    throw InvalidParameter("run.method", "exact",
-                           "the exact point solver needs a point part at its centre on a uniform "
-                           "field and a translating table with piecewise-constant accelerations");
-  if (s.method == Method::integrator && !patch_integrator_applies(s.problem))
-    throw InvalidParameter("run.method", "integrator",
-                           "the patch integrator needs a translating table with "
-                           "piecewise-constant accelerations");
   const Si si{s};
   ProgressBar bar(std::cerr, !f.quiet && stderr_is_terminal());
-  const PlanarTrajectory run = simulate_planar(
-      s.problem, s.pose, s.twist, planar_steps_of_periods(s.problem, s.periods), s.every,
-      [&bar](long long done, long long total) {
-        bar.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
-      },
-      s.method);
+  const PlanarTrajectory run = planar_simulate_run(s, [&bar](long long done, long long total) {
+    bar.update(static_cast<std::size_t>(done), static_cast<std::size_t>(total));
+  });
   bar.finish();
-  const PlanarRigidState& st = run.end;
-  json r = header(s);
-  r["command"] = "planar simulate";
-  r["method"] = to_string(s.method);
-  r["periods"] = s.periods;
-  r["end_pose"] = pose_json(st.pose, si);
-  r["end_twist"] = {{"ux", si.velocity(st.twist.ux)}, {"uy", si.velocity(st.twist.uy)}, {"omega", si.rate(st.twist.omega)}};
-  r["census"] = census_json(run.census);
-  r["solver"] = {{"sweeps", st.sweeps}, {"newton_steps", st.newton_steps}};
-  r["integrator"] = integrator_json(s.method, s.problem.integrator, run.integration,
-                                    "Boost.Odeint runge_kutta_dopri5, controlled steps");
-  if (s.method == Method::integrator) r["integrator"]["pivots"] = run.integration.pivots;
+  const json r = planar_simulate_report_json(s, run);
   TextTable t;
   t.row("end pose x, y [" + si.u("m", "-") + "], angle [rad]",
         table_text(r["end_pose"]["x"]) + ", " + table_text(r["end_pose"]["y"]) + ", " + table_text(r["end_pose"]["angle_rad"]));
@@ -159,7 +103,7 @@ void run_steady(const PlanarFlags& f) {
   options.max_periods = s.steady_periods;
   options.tolerance = s.tolerance;
   const PlanarSteadyState res = planar_steady_state(s.problem, s.pose, s.twist, options);
-  json r = header(s);
+  json r = planar_report_header(s);
   r["command"] = "planar steady";
   r["method"] = res.method == Method::exact ? "exact point solver" : "time-stepping";
   r["transient_periods"] = s.transient;
@@ -173,8 +117,8 @@ void run_steady(const PlanarFlags& f) {
                    {"omega", si.rate(res.twist_0s.omega)}};
   r["residual"] = res.residual;   // [-]: |z_n - z_(n-1)|, twist and displacement per time
   r["error"] = res.error;         // [-]: its estimate of |z - z*|
-  r["census"] = res.method == Method::exact ? json(nullptr) : census_json(res.census);
-  r["end_pose"] = pose_json(res.end_pose, si);
+  r["census"] = res.method == Method::exact ? json(nullptr) : planar_census_json(res.census);
+  r["end_pose"] = planar_pose_json(res.end_pose, si);
   r["level_under_part"] = {{"min", res.level_min}, {"max", res.level_max}};
   r["level_changed"] = res.level_changed;
   if (res.level_changed)
@@ -220,7 +164,7 @@ void run_field(const PlanarFlags& f) {
         << d.census.slip << ',' << cell_status(d.failure) << '\n';
     if (d.failure.empty()) largest = std::max(largest, std::hypot(d.drift_x, d.drift_y));
   }
-  json r = header(s);
+  json r = planar_report_header(s);
   r["command"] = "planar field";
   r["samples"] = samples.size();
   r["periods_per_sample"] = s.field_periods;
@@ -276,15 +220,15 @@ void run_stop(const PlanarFlags& f) {
         << csv_number(si.length(run.end.x)) << ',' << csv_number(si.length(run.end.y)) << ','
         << csv_number(run.end.angle) << ',' << csv_number(si.time(run.process_time)) << ','
         << cell_status(run.failure) << '\n';
-  json r = header(s);
+  json r = planar_report_header(s);
   r["command"] = "planar stop";
   r["runs"] = sum.runs.size();
   r["stopped"] = sum.stopped;
   r["failures"] = failures_json(sum.runs, [&si](const PlanarStopRun& run) {
-    return json{{"entry", pose_json(run.entry, si)}};
+    return json{{"entry", planar_pose_json(run.entry, si)}};
   });
   r["max_periods"] = s.max_periods;
-  r["mean_end"] = pose_json({sum.mean_x, sum.mean_y, sum.mean_angle}, si);
+  r["mean_end"] = planar_pose_json({sum.mean_x, sum.mean_y, sum.mean_angle}, si);
   r["end_region"] = {{"min_x", number_or_null(si.length(sum.min_x))}, {"max_x", number_or_null(si.length(sum.max_x))},
                      {"min_y", number_or_null(si.length(sum.min_y))}, {"max_y", number_or_null(si.length(sum.max_y))},
                      {"radius", number_or_null(si.length(sum.radius))}};
