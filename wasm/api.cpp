@@ -12,6 +12,13 @@
 //                            "trajectory" (as `stop --out`, at most 20000 samples) and "map": eq. (59) sampled between
 //                            x_mu and past its fixed point (three-phase on the two-region table;
 //                            else null)
+//   regimes(requestJson)  -> the feeder's regime chart (`selfalign regimes --json` and its --csv
+//                            rows as arrays); the request's keys are the CLI's flags with _
+//                            (angle_min, angles, k_min, machine_numbers, mu_static, ...)
+//   planar(configText, format)
+//                         -> `selfalign planar simulate --json` for a planar config given as text
+//                            ("toml" or "json"; docs/planar.md), plus "trajectory" (the --csv
+//                            columns as arrays, in the config's units)
 // Errors come back as {"error": "<the CLI's one-line message>"} rather than as exceptions.
 
 #include <emscripten/bind.h>
@@ -19,9 +26,11 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <fstream>
 #include <vector>
 #include <optional>
 #include <string>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
@@ -31,6 +40,8 @@
 #include "selfalign/io/simulate_config.hpp"
 #include "selfalign/io/simulate_model.hpp"
 #include "selfalign/analysis/stick_position.hpp"
+#include "selfalign/io/planar_report.hpp"
+#include "selfalign/io/regime_chart_report.hpp"
 #include "selfalign/io/steady_report.hpp"
 #include "selfalign/io/stop_report.hpp"
 #include "selfalign/io/summary_json.hpp"
@@ -185,6 +196,107 @@ std::string stop_json(const std::string& config_text, int max_periods) {
   }
 }
 
+// The request's keys: the CLI's flag names with '_' for '-'; an unknown key is refused.
+RegimeChartRequest regime_request_of(const nlohmann::json& j) {
+  RegimeChartRequest r;
+  r.threads = 1;
+  if (!j.is_object()) throw InvalidParameter("request", j.dump(), "must be a JSON object");
+  for (auto item = j.begin(); item != j.end(); ++item) {
+    // (no structured binding: clang 14 cannot capture one in the lambda below)
+    const std::string key = item.key();
+    const nlohmann::json& value = item.value();
+    auto number = [&](auto& target) {
+      if (!value.is_number()) throw InvalidParameter(key, value.dump(), "must be a number");
+      target = value.get<std::remove_reference_t<decltype(target)>>();
+    };
+    if (key == "angle_min") number(r.angle_min);
+    else if (key == "angle_max") number(r.angle_max);
+    else if (key == "angles") number(r.angles);
+    else if (key == "k_min") number(r.k_min);
+    else if (key == "k_max") number(r.k_max);
+    else if (key == "machine_numbers") number(r.machine_numbers);
+    else if (key == "incline") number(r.incline);
+    else if (key == "mu_static") number(r.mu_static);
+    else if (key == "mu_kinetic") number(r.mu_kinetic);
+    else if (key == "periods") number(r.periods);
+    else if (key == "steps_per_period") number(r.steps_per_period);
+    else if (key == "restitution") number(r.restitution);
+    else if (key == "method" && value.is_string()) r.method = value.get<std::string>();
+    else
+      throw InvalidParameter(key, value.dump(),
+                             "not a key of a regime chart (angle_min, angle_max, angles, k_min, "
+                             "k_max, machine_numbers, incline, mu_static, mu_kinetic, periods, "
+                             "steps_per_period, method, restitution)");
+  }
+  return r;
+}
+
+// As `selfalign regimes --json --csv F` (single-threaded): the summary and the rows as arrays.
+std::string regimes_json(const std::string& request_text) {
+  try {
+    const RegimeChartRequest request = regime_request_of(nlohmann::json::parse(request_text));
+    const std::vector<FeederChartCell> cells = regime_chart(request);
+    nlohmann::json j = regime_chart_summary_json(request, cells);
+    nlohmann::json rows;
+    for (const char* key : {"vibration_angle_rad", "machine_number", "throw_number", "regime",
+                            "first_event", "lifted_off", "dimensionless_speed", "stick_fraction",
+                            "flight_fraction", "status"})
+      rows[key] = nlohmann::json::array();
+    for (const FeederChartCell& c : cells) {
+      rows["vibration_angle_rad"].push_back(c.vibration_angle);
+      rows["machine_number"].push_back(c.machine_number);
+      rows["throw_number"].push_back(number_or_null(c.throw_number));
+      rows["regime"].push_back(feeder_regime_name(c.regime));
+      rows["first_event"].push_back(feeder_event_name(c.run.first_event));
+      rows["lifted_off"].push_back(c.run.lifted_off);
+      rows["dimensionless_speed"].push_back(number_or_null(c.dimensionless_speed));
+      rows["stick_fraction"].push_back(number_or_null(c.run.stick_fraction));
+      rows["flight_fraction"].push_back(number_or_null(c.run.flight_fraction));
+      rows["status"].push_back(c.failure.empty() ? "ok" : "failed");
+    }
+    j["rows"] = std::move(rows);
+    return j.dump();
+  } catch (const std::exception& e) {
+    return error_json(e);
+  }
+}
+
+// As `selfalign planar simulate --config F --json` (and its --csv columns): the config text is
+// written to the module's in-memory file system and read as a file is (load_planar_config).
+std::string planar_json(const std::string& config_text, const std::string& format) {
+  try {
+    if (format != "toml" && format != "json")
+      throw InvalidParameter("format", format, "must be toml or json");
+    const std::string path = "/planar." + format;
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << config_text;
+    const PlanarSetup setup = load_planar_config(path);
+    const PlanarTrajectory run = planar_simulate_run(setup);
+    nlohmann::json j = planar_simulate_report_json(setup, run);
+    j["config"] = nullptr;  // given as text
+    j["unused_keys"] = setup.unused_keys;
+    const PlanarUnits u{setup};
+    nlohmann::json tr;
+    auto column = [&](const char* key, const std::vector<double>& v, auto convert) {
+      std::vector<double> c(v.size());
+      for (std::size_t i = 0; i < v.size(); ++i) c[i] = convert(v[i]);
+      tr[key] = std::move(c);
+    };
+    column("t", run.t, [&](double v) { return u.time(v); });
+    column("x", run.x, [&](double v) { return u.length(v); });
+    column("y", run.y, [&](double v) { return u.length(v); });
+    column("angle_rad", run.angle, [](double v) { return v; });
+    column("ux", run.ux, [&](double v) { return u.velocity(v); });
+    column("uy", run.uy, [&](double v) { return u.velocity(v); });
+    column("omega", run.omega, [&](double v) { return u.rate(v); });
+    tr["mode"] = nlohmann::json::array();
+    for (PatchMode m : run.mode) tr["mode"].push_back(patch_mode_name(m));
+    j["trajectory"] = std::move(tr);
+    return j.dump();
+  } catch (const std::exception& e) {
+    return error_json(e);
+  }
+}
+
 }  // namespace
 }  // namespace selfalign::wasm
 
@@ -193,4 +305,6 @@ EMSCRIPTEN_BINDINGS(selfalign) {
   emscripten::function("steady", &selfalign::wasm::steady_json);
   emscripten::function("sweep", &selfalign::wasm::sweep_json);
   emscripten::function("stop", &selfalign::wasm::stop_json);
+  emscripten::function("regimes", &selfalign::wasm::regimes_json);
+  emscripten::function("planar", &selfalign::wasm::planar_json);
 }

@@ -41,15 +41,17 @@ function settings(n, seed = 26) {
   return out;
 }
 
-// Runs `selfalign <args...> --config <config as a JSON file>`; `withDir(dir)` may add paths in
+// Runs `selfalign <args...> --config <config as a JSON file>` (no --config when config is
+// null); `withDir(dir)` may add paths in
 // the run's temporary folder and `after(dir)` read what the run wrote there before it is
 // removed. Returns {status, stdout, stderr, after: what after returned}.
 function runCli(args, config, withDir = () => [], after = () => undefined) {
   const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'selfalign-cli-'));
   try {
     const file = path.join(dir, 'c.json');
-    fs.writeFileSync(file, JSON.stringify(config));
-    const r = spawnSync(cli, [...args, '--config', file, ...withDir(dir)], { encoding: 'utf8' });
+    if (config !== null) fs.writeFileSync(file, JSON.stringify(config));
+    const withConfig = config === null ? [] : ['--config', file];
+    const r = spawnSync(cli, [...args, ...withConfig, ...withDir(dir)], { encoding: 'utf8' });
     return { status: r.status, stdout: r.stdout, stderr: r.stderr, after: r.status === 0 ? after(dir) : undefined };
   } finally {
     fs.rmSync(dir, { recursive: true, force: true });

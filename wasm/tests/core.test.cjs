@@ -132,3 +132,57 @@ test('stopping runs agree with the native CLI at 20 random settings', () => {
   }
   console.log(`largest relative difference of the stopping end position: ${worst}`);
 });
+
+test('the feeder regime chart agrees with `selfalign regimes` cell by cell', () => {
+  const request = { mu_static: 0.5, mu_kinetic: 0.4, incline: 0.05, angles: 7, machine_numbers: 6,
+                    angle_min: 0.1, angle_max: 1.1, k_min: 0.2, k_max: 5, periods: 8 };
+  const w = JSON.parse(core.regimes(JSON.stringify(request)));
+  assert.ok(!w.error, w.error);
+  const flags = Object.entries(request).flatMap(([k, v]) => [`--${k.replace(/_/g, '-')}`, String(v)]);
+  const r = runCli(['regimes', ...flags, '--json', '--quiet'], null,
+                   (dir) => ['--csv', path.join(dir, 'cells.csv')],
+                   (dir) => fs.readFileSync(path.join(dir, 'cells.csv'), 'utf8'));
+  assert.strictEqual(r.status, 0, r.stderr);
+  const summary = JSON.parse(r.stdout);
+  assert.deepStrictEqual(w.regimes, summary.regimes);
+  assert.strictEqual(w.failed, summary.failed);
+  const [header, ...rows] = r.after.trim().split('\n');
+  const cols = header.split(',');
+  assert.strictEqual(rows.length, w.rows.regime.length);
+  rows.forEach((line, k) => {
+    const row = Object.fromEntries(line.split(',').map((v, i) => [cols[i], v]));
+    for (const key of ['regime', 'first_event', 'status']) assert.strictEqual(w.rows[key][k], row[key], `${key} of cell ${k}`);
+    assert.strictEqual(String(w.rows.lifted_off[k]), row.lifted_off);
+    for (const key of ['vibration_angle_rad', 'machine_number', 'throw_number', 'dimensionless_speed',
+                       'stick_fraction', 'flight_fraction']) {
+      const native = row[key] === 'nan' || row[key] === '' ? null : Number(row[key]);
+      if (native === null || w.rows[key][k] === null) assert.strictEqual(w.rows[key][k], native, key);
+      else close(w.rows[key][k], native, `${key} of cell ${k}`);
+    }
+  });
+  // bad input: the CLI's flag name in the message
+  assert.strictEqual(JSON.parse(core.regimes(JSON.stringify({ mu_static: 0.5, mu_kinetic: 0.6 }))).error,
+                     cliError(['regimes', '--mu-static', '0.5', '--mu-kinetic', '0.6', '--quiet'], null));
+});
+
+test('a planar run agrees with `selfalign planar simulate` (examples/planar.toml, 20 periods)', () => {
+  const text = fs.readFileSync(path.join(root, 'examples/planar.toml'), 'utf8')
+    .replace(/^periods = 200\b/m, 'periods = 20');
+  assert.ok(text.includes('periods = 20\n') || /^periods = 20\b/m.test(text));
+  const w = JSON.parse(core.planar(text, 'toml'));
+  assert.ok(!w.error, w.error);
+  const dir = fs.mkdtempSync(path.join(root, 'build', 'planar-'));
+  let n;
+  try {
+    fs.writeFileSync(path.join(dir, 'p.toml'), text);
+    n = JSON.parse(runCli(['planar', 'simulate', '--config', path.join(dir, 'p.toml'), '--json', '--quiet'], null).stdout);
+  } finally {
+    fs.rmSync(dir, { recursive: true, force: true });
+  }
+  for (const key of ['x', 'y', 'angle_rad']) close(w.end_pose[key], n.end_pose[key], `end pose ${key}`);
+  for (const key of ['ux', 'uy', 'omega']) close(w.end_twist[key], n.end_twist[key], `end twist ${key}`);
+  assert.deepStrictEqual(w.census, n.census);
+  assert.strictEqual(w.trajectory.t.length, w.trajectory.mode.length);
+  // a config error names the key with its section, as the CLI's
+  assert.match(JSON.parse(core.planar(text.replace(/^step = 4e-5/m, 'step = -1'), 'toml')).error, /run\.step/);
+});
