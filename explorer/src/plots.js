@@ -27,6 +27,16 @@ function stickShading(stickOf) {
   };
 }
 
+// Tick labels that stay readable at any scale (SI lengths are ~1e-4 m): 4 significant digits,
+// exponent form below 1e-3.
+function tickValues(u, ticks) {
+  return ticks.map((v) => {
+    if (v === null || v === undefined) return '';
+    if (v !== 0 && Math.abs(v) < 1e-3) return v.toExponential(1);
+    return Number(v.toPrecision(4)).toString();
+  });
+}
+
 // A chart of series over t; `series` = [{label, stroke, scale?, dash?}], `stickOf` returns the
 // stick flags of the data shown (or null).
 export function timeChart(el, title, xLabel, series, stickOf, axes = []) {
@@ -37,7 +47,7 @@ export function timeChart(el, title, xLabel, series, stickOf, axes = []) {
     plugins: [stickShading(stickOf)],
     scales: { x: { time: false } },
     series: [{ label: xLabel }, ...series.map((s) => ({ width: 1.5, ...s }))],
-    axes: [{ label: xLabel }, ...axes],
+    axes: [{ label: xLabel, values: tickValues }, ...(axes.length ? axes : [{}]).map((a) => ({ values: tickValues, size: 60, ...a }))],
     legend: { live: false },
   };
   return new uPlot(opts, [[], ...series.map(() => [])], el);

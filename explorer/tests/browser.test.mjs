@@ -170,3 +170,47 @@ test('bad input shows the CLI message next to the control, never NaN', async () 
     await page.screenshot({ path: join(artifacts, `bad-${key}.png`), fullPage: true });
   }
 });
+
+test("each view exports CSV (the CLI's columns) and PNG", async () => {
+  await load('periods=2');
+  const saved = async (selector) => {
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click(selector)]);
+    const file = join(artifacts, download.suggestedFilename());
+    await download.saveAs(file);
+    return { name: download.suggestedFilename(), file };
+  };
+  const { readFileSync } = await import('node:fs');
+  const response = await saved('#response .export-csv');
+  const lines = readFileSync(response.file, 'utf8').trim().split('\n');
+  assert.strictEqual(lines[0], 't,x,x_dot,y,y_dot,y_ddot,stick');  // io/trajectory_csv.hpp's header
+  // the last row is the run's end: the displayed end position
+  assert.strictEqual(Number(lines[lines.length - 1].split(',')[1]), await shownNumber('response', 'end_position'));
+  const map = await saved('#map .export-csv');
+  const mapLines = readFileSync(map.file, 'utf8').trim().split('\n');
+  assert.strictEqual(mapLines[0], 'a2,a3,case_a_priori,case,v_bar,f');
+  assert.strictEqual(mapLines.length, 1 + 100 * 100);
+  const stop = await saved('#stop .export-csv');
+  assert.strictEqual(readFileSync(stop.file, 'utf8').split('\n')[0], 't,x,x_dot,stick');
+  for (const view of ['response', 'map', 'stop']) {
+    const png = await saved(`#${view} .export-png`);
+    const bytes = readFileSync(png.file);
+    assert.deepStrictEqual([...bytes.subarray(1, 4)], [0x50, 0x4e, 0x47], `${png.name} is a PNG`);
+  }
+});
+
+test('switching to SI keeps the physical setting and shows the CLI numbers in SI', async () => {
+  await load();
+  const vDimensionless = await shownNumber('response', 'v_bar');
+  await page.selectOption('[data-key="units"] select', 'si');
+  await page.waitForFunction(() => window.explorer.state.units === 'si');
+  const setting = { units: 'si' };
+  for (const key of ['period', 'stroke', 'a2', 'a3', 'x_mu', 'width', 'x0', 'v0'])
+    setting[key] = Number(await page.inputValue(`[data-key="${key}"] .value`));
+  await compareWithCli(setting, 'in SI');
+  // the same motion: v̄ [m/s] = v̄ [-] L/T (Sect. 3.2), to rounding of the conversions
+  const vSI = await shownNumber('response', 'v_bar');
+  assert.ok(Math.abs(vSI - vDimensionless * (L / T)) <= 1e-9 * Math.abs(vSI), `${vSI} vs ${vDimensionless * L / T}`);
+  assert.match(page.url(), /units=si/);
+  assert.strictEqual(await page.textContent('#response [data-unit="velocity"]'), '[m/s]');
+  await page.screenshot({ path: join(artifacts, 'si.png'), fullPage: true });
+});
