@@ -27,12 +27,19 @@ export function serve(dir, port = 0) {
       res.writeHead(404).end('not found');
     }
   });
-  return new Promise((ok) => server.listen(port, '127.0.0.1', () => ok(server)));
+  return new Promise((ok, fail) => {
+    server.once('error', fail);
+    server.listen(port, '127.0.0.1', () => ok(server));
+  });
 }
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
   const here = dirname(fileURLToPath(import.meta.url));
   const dir = process.argv[2] ?? join(here, '..', 'build', 'explorer');
-  const server = await serve(dir, Number(process.argv[3] ?? 8765));
+  const port = Number(process.argv[3] ?? 8765);
+  const server = await serve(dir, port).catch((e) => {
+    console.error(`invalid port = ${port}: ${e.code === 'EADDRINUSE' ? 'in use; give another' : e.message}`);
+    process.exit(2);
+  });
   console.log(`explorer: http://127.0.0.1:${server.address().port}/  (Ctrl-C stops)`);
 }

@@ -4,6 +4,15 @@
 #   scripts/explorer.sh [port]      (default 8765; Ctrl-C stops the server)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = "-h" ] || [ "${1:-}" = "--help" ]; then
+  cat <<'USAGE'
+Usage: scripts/explorer.sh [PORT]
+Builds the explorer if needed (scripts/build-explorer.sh: the WebAssembly core, the pinned npm
+packages, the bundle) and serves build/explorer/ on http://127.0.0.1:PORT/ (default 8765),
+opening a browser where a display exists. Ctrl-C stops the server. docs/explorer.md.
+USAGE
+  exit 0
+fi
 port="${1:-8765}"
 case "$port" in
   ''|*[!0-9]*) echo "invalid port = $port: must be an integer in [1, 65535]" >&2; exit 2 ;;
