@@ -25,6 +25,7 @@ await build({
   minify: true,
   sourcemap: true,
   outdir: out,
+  loader: { '.toml': 'text' },  // examples/planar.toml, the planar view's starting config
   logLevel: 'warning',
 });
 copyFileSync(join(here, 'index.html'), join(out, 'index.html'));

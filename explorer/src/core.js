@@ -24,5 +24,7 @@ export async function loadCore() {
     sweep: (config, a2lo, a2hi, n2, a3lo, a3hi, n3) =>
       parsed(module.sweep(JSON.stringify(config), a2lo, a2hi, n2, a3lo, a3hi, n3)),
     stop: (config, maxPeriods) => parsed(module.stop(JSON.stringify(config), maxPeriods)),
+    regimes: (request) => parsed(module.regimes(JSON.stringify(request))),
+    planar: (text, format) => parsed(module.planar(text, format)),
   };
 }

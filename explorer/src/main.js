@@ -9,6 +9,8 @@ import { ControlPanel } from './control_panel.js';
 import { ResponseView } from './response_view.js';
 import { MapView } from './map_view.js';
 import { StopView } from './stop_view.js';
+import { FeederView } from './feeder_view.js';
+import { PlanarView } from './planar_view.js';
 import { SI_UNIT } from './units.js';
 
 const kSettleMs = 150;
@@ -18,7 +20,7 @@ const microtask = () => new Promise((r) => queueMicrotask(r));
 async function start() {
   const core = await loadCore();
   const state = stateFromQuery(location.search);
-  const timings = { response: [], map: [], stop: [] };
+  const timings = { response: [], map: [], stop: [], feeder: [], planar: [] };
   const unitLabel = (dim) => (state.units === 'si' && SI_UNIT[dim] ? `[${SI_UNIT[dim]}]` : '[-]');
   let lastKey = null;
 
@@ -30,6 +32,8 @@ async function start() {
     changed('a2');
   });
   const stop = new StopView(document.getElementById('stop'));
+  const feeder = new FeederView(document.getElementById('feeder'), state.feeder);
+  const planar = new PlanarView(document.getElementById('planar'), () => solvePlanar());
   const panel = new ControlPanel(document.getElementById('controls'), state, (key) => changed(key));
 
   // The core's message in the view; next to the controls only for the response view's run
@@ -93,6 +97,34 @@ async function start() {
     }
   }
 
+  // The feeder's regime chart and the planar run have their own inputs (the page's other
+  // controls do not enter them): solved on their own changes.
+  async function solveFeeder() {
+    try {
+      feeder.clearError();
+      timings.feeder.push(await feeder.solve(core));
+    } catch (e) {
+      report(feeder, e, null);
+    }
+  }
+  feeder.onChange = () => {
+    history.replaceState(null, '', `?${queryOfState(state)}`);
+    return solveFeeder();
+  };
+
+  let planarDone = Promise.resolve();
+  function solvePlanar() {
+    planarDone = (async () => {
+      try {
+        planar.clearError();
+        timings.planar.push(await planar.solve(core));
+      } catch (e) {
+        report(planar, e, null);
+      }
+    })();
+    return planarDone;
+  }
+
   let settle = null;
   let settled = Promise.resolve();
   function changed(key) {
@@ -119,8 +151,10 @@ async function start() {
   await solveResponse();
   await solveMap();
   await solveStop();
+  await solveFeeder();
+  await solvePlanar();
   // For the browser test and the curious: the state, the core and the measured times [ms].
-  window.explorer = { state, core, timings, settled: () => settled };
+  window.explorer = { state, core, timings, settled: () => settled, planarDone: () => planarDone };
   document.body.dataset.ready = '1';
 }
 

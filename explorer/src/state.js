@@ -3,9 +3,10 @@
 // core (the config files' keys, docs/config.md).
 import { CONTROLS, BY_KEY, MAP_DEFAULTS, STOP_DEFAULTS } from './controls.js';
 import { scales, toSI, fromSI } from './units.js';
+import { FEEDER_DEFAULTS } from './feeder_view.js';
 
 export function defaultState() {
-  const s = { ...MAP_DEFAULTS, ...STOP_DEFAULTS, enabled: {} };
+  const s = { ...MAP_DEFAULTS, ...STOP_DEFAULTS, enabled: {}, feeder: { ...FEEDER_DEFAULTS } };
   for (const c of CONTROLS) s[c.key] = c.def;
   return s;
 }
@@ -24,6 +25,8 @@ export function stateFromQuery(query) {
       if (c.optional) s.enabled[k] = true;
     } else if (SETTINGS.includes(k)) {
       s[k] = k === 'map_quantity' ? v : Number(v);
+    } else if (k.startsWith('feeder_') && k.slice(7) in FEEDER_DEFAULTS) {
+      s.feeder[k.slice(7)] = Number(v);  // the feeder view's request, "feeder_<key>"
     }
   }
   return s;
@@ -37,6 +40,8 @@ export function queryOfState(s) {
     if (c.optional ? s.enabled[c.key] : s[c.key] !== d[c.key]) q.set(c.key, String(s[c.key]));
   }
   for (const k of SETTINGS) if (s[k] !== d[k]) q.set(k, String(s[k]));
+  for (const k of Object.keys(FEEDER_DEFAULTS))
+    if (s.feeder[k] !== d.feeder[k]) q.set(`feeder_${k}`, String(s.feeder[k]));
   return q.toString();
 }
 
@@ -63,7 +68,7 @@ export function configOfState(s) {
 export function switchUnits(s, units) {
   if (s.units === units) return s;
   const sc = scales(s);
-  const out = { ...s, enabled: { ...s.enabled }, units };
+  const out = { ...s, enabled: { ...s.enabled }, units };  // (the feeder's request is in SI and [-] alike)
   const convert = units === 'si' ? toSI : fromSI;
   for (const c of CONTROLS) if (c.kind === 'number' && c.dim) out[c.key] = convert(c.dim, s[c.key], sc);
   for (const k of ['a2_lo', 'a2_hi', 'a3_lo', 'a3_hi']) out[k] = convert('acceleration', s[k], sc);

@@ -13,13 +13,13 @@
 //                                    SELFALIGN_CLI: the native CLI, default build/release's)
 import test from 'node:test';
 import assert from 'node:assert';
-import { mkdirSync, writeFileSync } from 'node:fs';
+import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { serve } from '../serve.mjs';
 import cliModule from '../../wasm/tests/cli.cjs';
 
-const { root, settings, nativeSimulate, nativeSteady, cliError, close } = cliModule;
+const { root, settings, runCli, nativeSimulate, nativeSteady, cliError, close } = cliModule;
 const artifacts = process.env.SELFALIGN_ARTIFACTS ?? join(root, 'build', 'explorer-artifacts');
 mkdirSync(artifacts, { recursive: true });
 
@@ -213,4 +213,50 @@ test('switching to SI keeps the physical setting and shows the CLI numbers in SI
   assert.match(page.url(), /units=si/);
   assert.strictEqual(await page.textContent('#response [data-unit="velocity"]'), '[m/s]');
   await page.screenshot({ path: join(artifacts, 'si.png'), fullPage: true });
+});
+
+test('the feeder regime chart shows `selfalign regimes` counts (its request in the URL)', async () => {
+  const request = { mu_static: 0.6, mu_kinetic: 0.45, incline: 0.05, angles: 9, machine_numbers: 7, periods: 8 };
+  await load(Object.entries(request).map(([k, v]) => `feeder_${k}=${v}`).join('&'));
+  const flags = Object.entries(request).flatMap(([k, v]) => [`--${k.replace(/_/g, '-')}`, String(v)]);
+  const r = runCli(['regimes', ...flags, '--json', '--quiet'], null);
+  assert.strictEqual(r.status, 0, r.stderr);
+  const { regimes } = JSON.parse(r.stdout);
+  const shownCounts = Object.fromEntries((await shown('feeder', 'regimes')).split(', ').map((p) => {
+    const [name, count] = p.split(' ');
+    return [name, Number(count)];
+  }));
+  assert.deepStrictEqual(shownCounts, regimes);
+  // an input of the view re-solves it and enters the URL; bad input shows the CLI's message
+  await page.fill('[data-feeder="mu_kinetic"]', '0.7');
+  await page.dispatchEvent('[data-feeder="mu_kinetic"]', 'change');
+  assert.strictEqual(await page.textContent('#feeder .view-error'),
+                     cliError(['regimes', ...flags.slice(0, 2), '--mu-kinetic', '0.7', '--quiet'], null));
+  assert.match(page.url(), /feeder_mu_kinetic=0\.7/);
+});
+
+test('the planar view runs its config as `selfalign planar simulate` does', async () => {
+  await load();
+  await page.evaluate(() => window.explorer.planarDone());
+  const text = await page.inputValue('#planar .planar-config');
+  const dir = mkdtempSync(join(root, 'build', 'planar-'));
+  let native;
+  try {
+    writeFileSync(join(dir, 'p.toml'), text);
+    const r = runCli(['planar', 'simulate', '--config', join(dir, 'p.toml'), '--json', '--quiet'], null);
+    assert.strictEqual(r.status, 0, r.stderr);
+    native = JSON.parse(r.stdout);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+  close(await shownNumber('planar', 'end_x'), native.end_pose.x, 'planar end x');
+  close(await shownNumber('planar', 'end_y'), native.end_pose.y, 'planar end y');
+  assert.strictEqual(await shown('planar', 'census'),
+                     `stick ${native.census.stick}, pivot ${native.census.pivot}, slip ${native.census.slip}`);
+  // a bad key: the message names it with its section
+  await page.fill('#planar .planar-config', text.replace(/^step = 4e-5/m, 'step = -1'));
+  await page.click('#planar .planar-run');
+  await page.evaluate(() => window.explorer.planarDone());
+  assert.match(await page.textContent('#planar .view-error'), /run\.step/);
+  await page.screenshot({ path: join(artifacts, 'feeder-planar.png'), fullPage: true });
 });
