@@ -1,6 +1,7 @@
 // The vibratory feeder's regime chart (`selfalign regimes`; docs/feeder.md) over vibration
 // angle x machine number K = a0 w^2 / g: the closed-form regime of each cell (stick, forward,
 // backward, both, hopping) or the simulated dimensionless conveying speed v / (a0 w cos psi).
+import { View } from './view.js';
 import Plotly from 'plotly.js-dist-min';
 import { csvOf, downloadText, downloadPlotlyPng } from './export.js';
 
@@ -13,9 +14,9 @@ export const FEEDER_DEFAULTS = {
   k_min: 0.1, k_max: 10, machine_numbers: 30, periods: 10,
 };
 
-export class FeederView {
+export class FeederView extends View {
   constructor(root, request) {
-    this.root = root;
+    super(root);
     this.request = request;  // the page state's feeder part, edited in place
     this.div = root.querySelector('.chart-regimes');
     this.result = null;
@@ -67,19 +68,13 @@ export class FeederView {
       xaxis: { title: { text: 'vibration angle ψ [rad]' } },
       yaxis: { title: { text: 'machine number K = a0 ω²/g' }, type: 'log' },
     }, { displayModeBar: false });
-    const set = (name, text) => { this.root.querySelector(`[data-number="${name}"]`).textContent = text; };
+    const set = (name, text) => this.setNumber(name, text);
     set('regimes', REGIMES.map((k) => `${k} ${r.regimes[k]}`).join(', '));
     set('failed', String(r.failed));
-    this.root.classList.remove('stale');
+    this.solved();
     return performance.now() - t0;
   }
 
-  fail(message) {
-    this.root.classList.add('stale');
-    this.root.querySelector('.view-error').textContent = message;
-  }
-
-  clearError() { this.root.querySelector('.view-error').textContent = ''; }
 
   exportCsv() {
     if (this.result) downloadText('regimes.csv', csvOf(this.result.rows));  // `regimes --csv`'s columns

@@ -1,11 +1,12 @@
 // The v̄ (or f) map over (y2'', y3'') with the motion cases' regions (sweep accelerations), the
 // current point marked; a click on a cell loads that point into the response view.
+import { View } from './view.js';
 import Plotly from 'plotly.js-dist-min';
 import { csvOf, downloadText, downloadPlotlyPng } from './export.js';
 
-export class MapView {
+export class MapView extends View {
   constructor(root, onPick) {
-    this.root = root;
+    super(root);
     this.div = root.querySelector('.chart-map');
     this.cells = null;
     this.onPick = onPick;
@@ -54,7 +55,7 @@ export class MapView {
     // A map without one physical cell is a result (case 0 everywhere), said in words.
     if (cells.case.every((c) => c === 0))
       this.fail("every cell is case 0 (no physical profile): need 1/y2'' + 1/y3'' <= period^2/(8 stroke)");
-    else this.root.classList.remove('stale');
+    else this.solved();
   }
 
   // Moves the marker only (a2, a3 changed; the map itself does not depend on them).
@@ -62,12 +63,6 @@ export class MapView {
     if (this.cells) Plotly.restyle(this.div, { x: [[a2]], y: [[a3]] }, [2]);
   }
 
-  fail(message) {
-    this.root.classList.add('stale');
-    this.root.querySelector('.view-error').textContent = message;
-  }
-
-  clearError() { this.root.querySelector('.view-error').textContent = ''; }
 
   exportCsv() {
     if (!this.cells) return;

@@ -1,5 +1,6 @@
 // A planar run (`selfalign planar simulate`; docs/planar.md) from a config given as text: the
 // part's path on the table, its orientation, and the step census (stick, pivot, slip).
+import { View } from './view.js';
 import Plotly from 'plotly.js-dist-min';
 import { csvOf, downloadText, downloadPlotlyPng } from './export.js';
 import { exact } from './units.js';
@@ -8,9 +9,9 @@ import example from '../../examples/planar.toml';
 // examples/planar.toml, shortened from 200 to 20 periods (about 0.1 s in the browser).
 export const PLANAR_EXAMPLE = example.replace(/^periods = 200\b/m, 'periods = 20');
 
-export class PlanarView {
+export class PlanarView extends View {
   constructor(root, onRun) {
-    this.root = root;
+    super(root);
     this.result = null;
     this.text = root.querySelector('.planar-config');
     this.format = root.querySelector('.planar-format');
@@ -36,23 +37,17 @@ export class PlanarView {
       xaxis: { title: { text: `x ${u}` } }, yaxis: { title: { text: `y ${u}` }, scaleanchor: 'x' },
       legend: { x: 0.02, y: 0.98 },
     }, { displayModeBar: false });
-    const set = (name, text) => { this.root.querySelector(`[data-number="${name}"]`).textContent = text; };
+    const set = (name, text) => this.setNumber(name, text);
     set('end_x', exact(r.end_pose.x));
     set('end_y', exact(r.end_pose.y));
     set('end_angle', exact(r.end_pose.angle_rad));
     set('census', `stick ${r.census.stick}, pivot ${r.census.pivot}, slip ${r.census.slip}`);
     set('method', r.method);
     set('unused', r.unused_keys.length ? r.unused_keys.join(', ') : 'none');
-    this.root.classList.remove('stale');
+    this.solved();
     return performance.now() - t0;
   }
 
-  fail(message) {
-    this.root.classList.add('stale');
-    this.root.querySelector('.view-error').textContent = message;
-  }
-
-  clearError() { this.root.querySelector('.view-error').textContent = ''; }
 
   exportCsv() {
     if (this.result) downloadText('planar.csv', csvOf(this.result.trajectory));

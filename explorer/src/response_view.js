@@ -1,12 +1,13 @@
 // The table motion and the part's response over a few periods (simulate), stick shaded, and the
 // steady state's census (steady: motion case, stick/slip pattern, v̄, f, x'_0s).
+import { View } from './view.js';
 import { timeChart } from './plots.js';
 import { csvOf, downloadText, downloadUplotPng } from './export.js';
 import { exact } from './units.js';
 
-export class ResponseView {
+export class ResponseView extends View {
   constructor(root) {
-    this.root = root;
+    super(root);
     this.trajectory = null;
     const stick = () => (this.trajectory ? this.trajectory.stick : null);
     this.positions = timeChart(root.querySelector('.chart-positions'), 'positions (stick shaded)', 't',
@@ -28,7 +29,7 @@ export class ResponseView {
     this.trajectory = tr;
     this.positions.setData([tr.t, tr.x, tr.y]);
     this.velocities.setData([tr.t, tr.x_dot, tr.y_dot, tr.y_ddot]);
-    const set = (name, text) => { this.root.querySelector(`[data-number="${name}"]`).textContent = text; };
+    const set = (name, text) => this.setNumber(name, text);
     set('v_bar', exact(steady.v_bar));
     set('f', exact(steady.f));
     set('case', steady.case === 0 ? '0 (no physical profile)' : `${steady.case} (${steady.case_name ?? ''})`);
@@ -37,18 +38,9 @@ export class ResponseView {
     set('end_position', exact(run.final.x));
     set('mean_velocity', exact(run.mean_velocity_last_period));
     set('stick_fraction', exact(run.stick_fraction));
-    for (const el of this.root.querySelectorAll('[data-unit]')) el.textContent = unitLabel(el.dataset.unit);
-    this.root.classList.remove('stale');
+    this.setUnits(unitLabel);
+    this.solved();
   }
-
-  // Keeps the last good plot, dimmed, with the core's message over it (never a blank plot).
-  fail(message) {
-    this.root.classList.add('stale');
-    for (const el of this.root.querySelectorAll('[data-number]')) el.textContent = '—';
-    this.root.querySelector('.view-error').textContent = message;
-  }
-
-  clearError() { this.root.querySelector('.view-error').textContent = ''; }
 
   exportCsv() {
     if (!this.trajectory) return;

@@ -1,14 +1,15 @@
 // Stopping at the friction step (Sect. 7): the run into the transition region, its end position
 // and x_stick,min (eq. 41), and the stick-position map of eq. (59) with the run's stick
 // positions accumulating at its fixed point (eq. 60) drawn as a cobweb.
+import { View } from './view.js';
 import Plotly from 'plotly.js-dist-min';
 import { timeChart } from './plots.js';
 import { csvOf, downloadText, downloadUplotPng, downloadPlotlyPng } from './export.js';
 import { exact } from './units.js';
 
-export class StopView {
+export class StopView extends View {
   constructor(root) {
-    this.root = root;
+    super(root);
     this.report = null;
     this.chart = timeChart(root.querySelector('.chart-stop'), 'stopping run (stick shaded)', 't',
       [{ label: 'x', stroke: '#c0392b' }, { label: 'x_μ', stroke: '#7f8c8d', dash: [6, 4] },
@@ -27,16 +28,16 @@ export class StopView {
     const tr = report.trajectory, n = tr.t.length;
     const flat = (v) => new Array(n).fill(v);
     this.chart.setData([tr.t, tr.x, flat(report.x_mu), flat(report.x_stick_min)]);
-    const set = (name, text) => { this.root.querySelector(`[data-number="${name}"]`).textContent = text; };
+    const set = (name, text) => this.setNumber(name, text);
     set('stop', report.stop + (report.accumulation_proven ? ' (proven by eq. 59)' : ''));
     set('end_position', exact(report.end_position));
     set('x_stick_min', exact(report.x_stick_min));
     set('process_time', report.stop === 'accumulation' ? 'inf (accumulation)' : exact(report.process_time));
     set('entry_time', exact(report.entry_time));
     set('sticks', String(report.stick_positions.length));
-    for (const el of this.root.querySelectorAll('[data-unit]')) el.textContent = unitLabel(el.dataset.unit);
+    this.setUnits(unitLabel);
     await this.drawMap(report, unitLabel('length'));
-    this.root.classList.remove('stale');
+    this.solved();
   }
 
   async drawMap(report, len) {
@@ -64,13 +65,6 @@ export class StopView {
     }, { displayModeBar: false });
   }
 
-  fail(message) {
-    this.root.classList.add('stale');
-    for (const el of this.root.querySelectorAll('[data-number]')) el.textContent = '—';
-    this.root.querySelector('.view-error').textContent = message;
-  }
-
-  clearError() { this.root.querySelector('.view-error').textContent = ''; }
 
   exportCsv() {
     if (!this.report) return;
