@@ -2,7 +2,7 @@
 // optional ones), a select per closed choice, the value's readout in the other unit system, and
 // a line under each control for the core's message when that key is at fault.
 import { CONTROLS } from './controls.js';
-import { shown, switchUnits } from './state.js';
+import { shown, switchUnits, listOf } from './state.js';
 import { scales, toSI, fromSI, converts, SI_UNIT, short } from './units.js';
 
 const GROUP_TITLES = { run: 'run', scales: 'SI scales', profile: 'table motion', law: 'friction law', table: 'table friction' };
@@ -39,7 +39,13 @@ export class ControlPanel {
     div.className = 'control';
     div.dataset.key = c.key;
     const optional = c.optional ? '<input type="checkbox" class="enable" title="on: set this key; off: none (the CLI default)">' : '';
-    if (c.kind === 'select') {
+    if (c.kind === 'list') {
+      div.innerHTML = `<label>${c.label}</label><input type="text" class="value list" spellcheck="false"><span class="unit"></span><span class="other"></span><div class="control-error"></div>`;
+      const box = div.querySelector('.value');
+      box.addEventListener('input', () => {
+        if (listOf(box.value).every(Number.isFinite)) this.set(c, box.value.trim(), { keepBox: true });
+      });
+    } else if (c.kind === 'select') {
       div.innerHTML = `<label>${c.label}</label><select class="value">${c.options.map((o) => `<option>${o}</option>`).join('')}</select><div class="control-error"></div>`;
       div.querySelector('select').addEventListener('change', (e) => this.set(c, e.target.value));
     } else {
@@ -93,6 +99,13 @@ export class ControlPanel {
       div.hidden = !shown(c, s);
       const box = div.querySelector('.value');
       if (c.kind === 'select') { box.value = s[c.key]; continue; }
+      if (c.kind === 'list') {
+        if (!how.keepBox || document.activeElement !== box) box.value = s[c.key];
+        div.querySelector('.unit').textContent = si ? SI_UNIT[c.dim] : '[-]';
+        const values = listOf(s[c.key]);
+        div.querySelector('.other').textContent = '≙ ' + values.map((v) => short(si ? fromSI(c.dim, v, sc) : toSI(c.dim, v, sc))).join(', ') + (si ? ' [-]' : ` ${SI_UNIT[c.dim]}`);
+        continue;
+      }
       if (!how.keepBox || document.activeElement !== box) box.value = String(s[c.key]);
       const en = div.querySelector('.enable');
       const on = !c.optional || s.enabled[c.key];
@@ -126,6 +139,8 @@ export class ControlPanel {
     const all = new Set(keys);
     if (blame) all.add(blame);
     let placed = false;
+    // a config key names its controls (both families' `accelerations`: the one shown)
+    for (const c of CONTROLS) if (c.configKey && all.has(c.configKey)) all.add(c.key);
     for (const k of all) {
       const div = this.rows[k];
       if (!div || div.hidden) continue;

@@ -8,7 +8,8 @@ export const DIMENSION = {
   acceleration: 'acceleration', jerk: 'jerk',
 };
 
-// kind: 'number' (slider + box), 'select'. group: the panel. when(state): shown or not.
+// kind: 'number' (slider + box), 'select', 'list' (comma-separated numbers, kept as text).
+// group: the panel. when(state): shown or not.
 // range: [min, max] of the slider in [-]; log: slider on a logarithmic scale. siOnly: shown in
 // both systems (the readouts use it) but part of the config in SI runs only.
 const threePhase = (s) => s.profile === 'three-phase';
@@ -20,12 +21,19 @@ export const CONTROLS = [
   { key: 'g', label: 'gravity g', kind: 'number', group: 'scales', dim: 'gravity', range: [1, 20], def: 9.81, siOnly: true, unit: 'm/s²' },
   { key: 'length_scale', label: 'length scale L', kind: 'number', group: 'scales', dim: 'scale', range: [1e-4, 1e-1], log: true, def: 1e-3, siOnly: true, unit: 'm' },
 
-  { key: 'profile', label: 'family', kind: 'select', group: 'profile', options: ['three-phase', 'fourier'], def: 'three-phase' },
-  { key: 'period', label: 'period Δt', kind: 'number', group: 'profile', dim: 'time', range: [0.2, 5], def: 1 },
+  { key: 'profile', label: 'family', kind: 'select', group: 'profile', options: ['three-phase', 'fourier', 'quadratic-sequence', 'piecewise-linear'], def: 'three-phase' },
+  { key: 'period', label: 'period Δt', kind: 'number', group: 'profile', dim: 'time', range: [0.2, 5], def: 1, when: (s) => s.profile !== 'quadratic-sequence' },
   { key: 'stroke', label: 'stroke Δy', kind: 'number', group: 'profile', dim: 'length', range: [0.005, 0.5], log: true, def: 0.084, when: threePhase },
   { key: 'a2', label: "y2''", kind: 'number', group: 'profile', dim: 'acceleration', range: [0.5, 6], def: 2.3, when: threePhase },
   { key: 'a3', label: "y3''", kind: 'number', group: 'profile', dim: 'acceleration', range: [0.1, 6], def: 1.3, when: threePhase },
   { key: 'jerk', label: 'jerk j', kind: 'number', group: 'profile', dim: 'jerk', range: [5, 2000], log: true, def: 200, optional: true, when: threePhase },
+  // Lists (comma-separated): the quadratic sequence's segments (its period is their sum) and the
+  // piecewise-linear acceleration's breakpoints; both families' accelerations are the config's
+  // `accelerations` (configKey), each with its own default.
+  { key: 'durations', label: 'durations', kind: 'list', group: 'profile', dim: 'time', def: '0.3,0.2,0.5', when: (s) => s.profile === 'quadratic-sequence' },
+  { key: 'accelerations', label: "y'' per segment", kind: 'list', group: 'profile', dim: 'acceleration', def: '2,-6,1.2', when: (s) => s.profile === 'quadratic-sequence' },
+  { key: 'times', label: 'breakpoints t', kind: 'list', group: 'profile', dim: 'time', def: '0,0.2,0.5', when: (s) => s.profile === 'piecewise-linear' },
+  { key: 'pl_accelerations', configKey: 'accelerations', label: "y'' at breakpoints", kind: 'list', group: 'profile', dim: 'acceleration', def: '3,-5.8,1', when: (s) => s.profile === 'piecewise-linear' },
   { key: 'amplitude', label: 'amplitude A₁', kind: 'number', group: 'profile', dim: 'length', range: [0.005, 0.5], log: true, def: 0.05, when: (s) => s.profile === 'fourier' },
 
   { key: 'mu', label: 'μ (kinetic)', kind: 'number', group: 'law', dim: 'none', range: [0.05, 1], def: 0.3 },

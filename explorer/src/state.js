@@ -21,7 +21,7 @@ export function stateFromQuery(query) {
   for (const [k, v] of q) {
     const c = BY_KEY[k];
     if (c) {
-      s[k] = c.kind === 'select' ? v : Number(v);
+      s[k] = c.kind === 'number' ? Number(v) : v;
       if (c.optional) s.enabled[k] = true;
     } else if (SETTINGS.includes(k)) {
       s[k] = k === 'map_quantity' ? v : Number(v);
@@ -58,9 +58,14 @@ export function configOfState(s) {
       config.fourier_cos = [s.amplitude];
       continue;
     }
-    config[c.key] = s[c.key];
+    config[c.configKey ?? c.key] = c.kind === 'list' ? listOf(s[c.key]) : s[c.key];
   }
   return config;
+}
+
+// A list control's text as numbers ("" is the empty list).
+export function listOf(text) {
+  return String(text).trim() === '' ? [] : String(text).split(',').map((v) => Number(v));
 }
 
 // The same physical setting in the other unit system: every dimensional value converted with
@@ -70,7 +75,10 @@ export function switchUnits(s, units) {
   const sc = scales(s);
   const out = { ...s, enabled: { ...s.enabled }, units };  // (the feeder's request is in SI and [-] alike)
   const convert = units === 'si' ? toSI : fromSI;
-  for (const c of CONTROLS) if (c.kind === 'number' && c.dim) out[c.key] = convert(c.dim, s[c.key], sc);
+  for (const c of CONTROLS) {
+    if (c.kind === 'number' && c.dim) out[c.key] = convert(c.dim, s[c.key], sc);
+    if (c.kind === 'list') out[c.key] = listOf(s[c.key]).map((v) => convert(c.dim, v, sc)).join(',');
+  }
   for (const k of ['a2_lo', 'a2_hi', 'a3_lo', 'a3_hi']) out[k] = convert('acceleration', s[k], sc);
   return out;
 }

@@ -260,3 +260,17 @@ test('the planar view runs its config as `selfalign planar simulate` does', asyn
   assert.match(await page.textContent('#planar .view-error'), /run\.step/);
   await page.screenshot({ path: join(artifacts, 'feeder-planar.png'), fullPage: true });
 });
+
+test('the quadratic-sequence and piecewise-linear families (list inputs) equal the CLI', async () => {
+  await load('profile=quadratic-sequence');
+  await compareWithCli({ profile: 'quadratic-sequence', durations: [0.3, 0.2, 0.5], accelerations: [2, -6, 1.2] },
+                       'quadratic sequence (the page defaults)');
+  await load('profile=piecewise-linear&times=0,0.2,0.5&pl_accelerations=3,-5.8,1');
+  const piecewise = { profile: 'piecewise-linear', times: [0, 0.2, 0.5], accelerations: [3, -5.8, 1] };
+  await compareWithCli(piecewise, 'piecewise-linear');
+  // accelerations that do not integrate to 0: the CLI's message under that list
+  await page.fill('[data-key="pl_accelerations"] .value', '3,-4,1');
+  assert.strictEqual(await page.textContent('[data-key="pl_accelerations"] .control-error'),
+                     cliError(['simulate'], { ...piecewise, accelerations: [3, -4, 1] }));
+  assert.match(page.url(), /pl_accelerations=3%2C-4%2C1/);
+});
