@@ -41,6 +41,7 @@
 #include "selfalign/io/simulate_model.hpp"
 #include "selfalign/analysis/stick_position.hpp"
 #include "selfalign/io/planar_report.hpp"
+#include "selfalign/io/profile_analyses.hpp"
 #include "selfalign/io/regime_chart_report.hpp"
 #include "selfalign/io/steady_report.hpp"
 #include "selfalign/io/stop_report.hpp"
@@ -99,11 +100,7 @@ std::string steady_json(const std::string& config_text) {
   try {
     const SimulateConfig config = config_of(config_text);
     const ProfileModel model = build_profile_model(config, NonPhysicalProfile::allow);
-    std::optional<SteadyState> steady;
-    SteadyStateOptions options;
-    options.integrator = model.integrator;
-    if (model.profile) steady = steady_state(*model.profile, model.law, options);
-    return steady_report_json(model, steady).dump();
+    return steady_report_json(model, steady_state_of(model)).dump();
   } catch (const std::exception& e) {
     return error_json(e);
   }
@@ -122,10 +119,7 @@ std::string sweep_json(const std::string& config_text, double a2_lo, double a2_h
     std::vector<double> a2m, a3m;
     for (double v : a2) a2m.push_back(model.to_model_units(Dimension::acceleration, v));
     for (double v : a3) a3m.push_back(model.to_model_units(Dimension::acceleration, v));
-    SweepOptions o;
-    o.law = model.law;
-    o.steady.integrator = model.integrator;
-    if (model.jerk) o.jerk = *model.jerk;
+    SweepOptions o = sweep_options_of(model);
     o.threads = 1;
     const std::vector<AccelerationCell> cells =
         sweep_accelerations(model.three_phase->period, model.three_phase->stroke, a2m, a3m, o);

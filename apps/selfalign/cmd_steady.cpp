@@ -13,6 +13,7 @@
 #include "selfalign/analysis/motion_case.hpp"
 #include "selfalign/analysis/steady_state.hpp"
 #include "selfalign/io/simulate_model.hpp"
+#include "selfalign/io/profile_analyses.hpp"
 #include "selfalign/io/steady_report.hpp"
 
 namespace selfalign::cli {
@@ -61,11 +62,7 @@ void run_steady(const ConfigFlags& flags, bool as_json) {
   const SimulateConfig config = read_config(flags);
   if (config.out) require_output_path("out", *config.out);
   const ProfileModel model = build_profile_model(config, NonPhysicalProfile::allow);
-  std::optional<SteadyState> steady;
-  SteadyStateOptions options;
-  options.integrator = model.integrator;  // Stribeck or viscous laws
-  if (model.profile) steady = steady_state(*model.profile, model.law, options);
-  const json report = steady_report_json(model, steady);
+  const json report = steady_report_json(model, steady_state_of(model));
   deliver_report(report, steady_table(report, model.units), as_json, config.out);
 }
 

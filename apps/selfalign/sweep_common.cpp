@@ -9,6 +9,7 @@
 
 #include "selfalign/error.hpp"
 #include "selfalign/io/atomic_file.hpp"
+#include "selfalign/io/profile_analyses.hpp"
 #include "selfalign/overloaded.hpp"
 #include "report.hpp"
 
@@ -96,10 +97,7 @@ ProfileModel sweep_model(const SimulateConfig& config) {
 }
 
 SweepOptions sweep_options(const SweepFlags& flags, ProgressBar& bar, const ProfileModel& model) {
-  SweepOptions o;
-  o.law = model.law;
-  o.steady.integrator = model.integrator;  // Stribeck or viscous laws
-  if (model.jerk) o.jerk = *model.jerk;
+  SweepOptions o = sweep_options_of(model);
   o.threads = flags.threads;
   o.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
   return o;
