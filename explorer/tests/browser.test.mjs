@@ -13,13 +13,14 @@
 //                                    SELFALIGN_CLI: the native CLI, default build/release's)
 import test from 'node:test';
 import assert from 'node:assert';
-import { mkdirSync, mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { serve } from '../serve.mjs';
 import cliModule from '../../wasm/tests/cli.cjs';
 
-const { root, settings, runCli, nativeSimulate, nativeSteady, cliError, close } = cliModule;
+const { root, settings, runCli, nativeSimulate, nativeSteady, regimeFlags, nativePlanar, cliError, close } =
+  cliModule;
 const artifacts = process.env.SELFALIGN_ARTIFACTS ?? join(root, 'build', 'explorer-artifacts');
 mkdirSync(artifacts, { recursive: true });
 
@@ -218,7 +219,7 @@ test('switching to SI keeps the physical setting and shows the CLI numbers in SI
 test('the feeder regime chart shows `selfalign regimes` counts (its request in the URL)', async () => {
   const request = { mu_static: 0.6, mu_kinetic: 0.45, incline: 0.05, angles: 9, machine_numbers: 7, periods: 8 };
   await load(Object.entries(request).map(([k, v]) => `feeder_${k}=${v}`).join('&'));
-  const flags = Object.entries(request).flatMap(([k, v]) => [`--${k.replace(/_/g, '-')}`, String(v)]);
+  const flags = regimeFlags(request);
   const r = runCli(['regimes', ...flags, '--json', '--quiet'], null);
   assert.strictEqual(r.status, 0, r.stderr);
   const { regimes } = JSON.parse(r.stdout);
@@ -239,16 +240,7 @@ test('the planar view runs its config as `selfalign planar simulate` does', asyn
   await load();
   await page.evaluate(() => window.explorer.planarDone());
   const text = await page.inputValue('#planar .planar-config');
-  const dir = mkdtempSync(join(root, 'build', 'planar-'));
-  let native;
-  try {
-    writeFileSync(join(dir, 'p.toml'), text);
-    const r = runCli(['planar', 'simulate', '--config', join(dir, 'p.toml'), '--json', '--quiet'], null);
-    assert.strictEqual(r.status, 0, r.stderr);
-    native = JSON.parse(r.stdout);
-  } finally {
-    rmSync(dir, { recursive: true, force: true });
-  }
+  const native = nativePlanar(text);
   close(await shownNumber('planar', 'end_x'), native.end_pose.x, 'planar end x');
   close(await shownNumber('planar', 'end_y'), native.end_pose.y, 'planar end y');
   assert.strictEqual(await shown('planar', 'census'),

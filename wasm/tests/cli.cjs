@@ -73,6 +73,20 @@ const nativeSteady = (config) => cliJson(['steady', '--json'], config);
 const nativeStop = (config, maxPeriods) =>
   cliJson(['stop', '--json', '--max-periods', String(maxPeriods)], config);
 
+// A regime chart's request as `selfalign regimes` flags (keys with '_' are the flags with '-').
+const regimeFlags = (request) =>
+  Object.entries(request).flatMap(([k, v]) => [`--${k.replace(/_/g, '-')}`, String(v)]);
+
+// `planar simulate --json` on a planar config given as TOML text (written to a temporary file).
+function nativePlanar(text) {
+  const r = runCli(['planar', 'simulate', '--json', '--quiet'], null, (dir) => {
+    fs.writeFileSync(path.join(dir, 'p.toml'), text);
+    return ['--config', path.join(dir, 'p.toml')];
+  });
+  assert.strictEqual(r.status, 0, r.stderr);
+  return JSON.parse(r.stdout);
+}
+
 // The CLI's one-line message for bad input (exit 2), without its "selfalign: error: " prefix.
 function cliError(args, config) {
   const r = runCli(args, config);
@@ -91,4 +105,4 @@ function close(a, b, what) {
 }
 
 module.exports = { root, cli, rng, settings, runCli, nativeSimulate, nativeSteady, nativeStop,
-                   cliError, close };
+                   regimeFlags, nativePlanar, cliError, close };

@@ -9,8 +9,8 @@ const assert = require('node:assert');
 const fs = require('node:fs');
 const path = require('node:path');
 
-const { root, settings, runCli, nativeSimulate, nativeSteady, nativeStop, cliError, close } =
-  require('./cli.cjs');
+const { root, settings, runCli, nativeSimulate, nativeSteady, nativeStop, regimeFlags, nativePlanar,
+        cliError, close } = require('./cli.cjs');
 const wasmDir = path.join(root, 'build/wasm');
 
 let core;
@@ -138,8 +138,7 @@ test('the feeder regime chart agrees with `selfalign regimes` cell by cell', () 
                     angle_min: 0.1, angle_max: 1.1, k_min: 0.2, k_max: 5, periods: 8 };
   const w = JSON.parse(core.regimes(JSON.stringify(request)));
   assert.ok(!w.error, w.error);
-  const flags = Object.entries(request).flatMap(([k, v]) => [`--${k.replace(/_/g, '-')}`, String(v)]);
-  const r = runCli(['regimes', ...flags, '--json', '--quiet'], null,
+  const r = runCli(['regimes', ...regimeFlags(request), '--json', '--quiet'], null,
                    (dir) => ['--csv', path.join(dir, 'cells.csv')],
                    (dir) => fs.readFileSync(path.join(dir, 'cells.csv'), 'utf8'));
   assert.strictEqual(r.status, 0, r.stderr);
@@ -171,14 +170,7 @@ test('a planar run agrees with `selfalign planar simulate` (examples/planar.toml
   assert.ok(text.includes('periods = 20\n') || /^periods = 20\b/m.test(text));
   const w = JSON.parse(core.planar(text, 'toml'));
   assert.ok(!w.error, w.error);
-  const dir = fs.mkdtempSync(path.join(root, 'build', 'planar-'));
-  let n;
-  try {
-    fs.writeFileSync(path.join(dir, 'p.toml'), text);
-    n = JSON.parse(runCli(['planar', 'simulate', '--config', path.join(dir, 'p.toml'), '--json', '--quiet'], null).stdout);
-  } finally {
-    fs.rmSync(dir, { recursive: true, force: true });
-  }
+  const n = nativePlanar(text);
   for (const key of ['x', 'y', 'angle_rad']) close(w.end_pose[key], n.end_pose[key], `end pose ${key}`);
   for (const key of ['ux', 'uy', 'omega']) close(w.end_twist[key], n.end_twist[key], `end twist ${key}`);
   assert.deepStrictEqual(w.census, n.census);
